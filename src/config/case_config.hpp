@@ -1,0 +1,109 @@
+#pragma once
+// A case (scene) as typed structs, in rouleau's internal units: μm, s, pN.
+// Then pressure and stress are in Pa (1 pN/μm² = 1 Pa), viscosity in Pa·s,
+// density in pN·s²/μm⁴ (1000 kg/m³ = 1e-9). Keys in the TOML file carry their unit in
+// their name (density_kg_m3, dt_s, ...); load_case() converts once, at load.
+// Host-only: includes no Kokkos header.
+#include <array>
+#include <string>
+#include <vector>
+
+namespace rouleau {
+
+// Kinds of boundary on the sides of the box domain.
+enum class BoundaryType {
+  periodic,  // paired with the opposite side (both sides must say periodic)
+  wall,      // prescribed velocity: no-slip when zero, a moving wall otherwise
+  inflow,    // prescribed inflow profile with a mean normal speed into the domain
+  traction,  // prescribed normal traction -p n (pressure inlet/outlet; p = 0 is a free outflow)
+};
+enum class InflowProfile { uniform, parabolic };
+
+struct BoundaryConfig {
+  BoundaryType type = BoundaryType::wall;
+  std::array<double, 3> velocity{0.0, 0.0, 0.0};  // wall velocity [μm/s]      key velocity_um_s
+  double mean_speed = 0.0;                         // inflow mean speed [μm/s]   key mean_speed_um_s
+  InflowProfile profile = InflowProfile::parabolic;  //                         key profile
+  double pressure = 0.0;                           // traction pressure [Pa]     key pressure_Pa
+};
+
+// The six sides, in this order, with these TOML names.
+enum Side : int { x_min = 0, x_max = 1, y_min = 2, y_max = 3, z_min = 4, z_max = 5 };
+inline constexpr std::array<const char*, 6> side_names{"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
+
+struct DomainConfig {
+  std::array<double, 3> lower{0.0, 0.0, 0.0};  // [μm]   key lower_um
+  std::array<double, 3> upper{1.0, 1.0, 1.0};  // [μm]   key upper_um
+  std::array<int, 3> elements{8, 8, 8};        // 8-node hexahedra per direction
+  // Ratio of the largest to the smallest element along each direction, the smallest
+  // at both ends (refinement toward walls); 1 = uniform.   key wall_grading
+  std::array<double, 3> wall_grading{1.0, 1.0, 1.0};
+  std::array<BoundaryConfig, 6> boundary{};  // [boundary.x_min] ... [boundary.z_max]
+};
+
+struct FluidConfig {
+  double density = 1.025e-9;   // [pN·s²/μm⁴]  key density_kg_m3 (plasma: 1025 kg/m³)
+  double viscosity = 1.2e-3;   // [Pa·s]       key viscosity_Pa_s (plasma: 1.2 mPa·s)
+  std::array<double, 3> body_force{0.0, 0.0, 0.0};  // [pN/μm³ = Pa/μm]  key body_force_Pa_um
+};
+
+enum class TimeMode { steady, transient };
+enum class TimeScheme { backward_euler, bdf2 };
+
+struct TimeConfig {
+  TimeMode mode = TimeMode::transient;
+  TimeScheme scheme = TimeScheme::bdf2;
+  double dt = 0.01;   // [s]  key dt_s
+  double end = 0.1;   // [s]  key end_s
+};
+
+enum class StokesChoice { automatic, on, off };
+enum class PreconditionerType { none, block_jacobi };
+
+struct SolverConfig {
+  StokesChoice stokes = StokesChoice::automatic;  // key stokes = "auto" | "on" | "off"
+  double stokes_reynolds_threshold = 1e-2;        // Stokes limit used below this Reynolds number
+  double newton_rtol = 1e-8;                      // on the scaled residual
+  double newton_atol = 1e-10;
+  int newton_max_iterations = 15;
+  int gmres_restart = 60;
+  double gmres_rtol = 1e-8;                       // relative to the right-hand side
+  int gmres_max_iterations = 3000;
+  PreconditionerType preconditioner = PreconditionerType::block_jacobi;
+};
+
+// Scales of the nondimensional solver variables; 0 = derive from the case.
+struct ScalesConfig {
+  double length = 0.0;    // [μm]    key length_um
+  double velocity = 0.0;  // [μm/s]  key velocity_um_s
+};
+
+struct OutputConfig {
+  bool write_fields = true;       // key fields
+  int fields_every_steps = 1;     // key fields_every_steps
+  int diagnostics_every_steps = 1;
+};
+
+struct CaseConfig {
+  std::string source_file;  // the TOML file it was loaded from
+  std::string name;
+  std::string description;
+  FluidConfig fluid;
+  DomainConfig domain;
+  TimeConfig time;
+  SolverConfig solver;
+  ScalesConfig scales;
+  OutputConfig output;
+};
+
+// Values derived from a case (written to the resolved configuration).
+struct DerivedQuantities {
+  double length_scale = 0.0;    // L [μm]
+  double velocity_scale = 0.0;  // U [μm/s]
+  double pressure_scale = 0.0;  // μU/L [Pa]
+  double reynolds = 0.0;        // ρUL/μ
+  bool stokes = false;          // the Stokes limit is used
+  std::string stokes_reason;    // why (or why not), for --explain
+};
+
+}  // namespace rouleau

@@ -1,0 +1,10 @@
+// The one entry point of every test binary: starts Kokkos (all backends the build has),
+// runs GoogleTest, and finalizes Kokkos after the last test.
+#include <Kokkos_Core.hpp>
+#include <gtest/gtest.h>
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  Kokkos::ScopeGuard kokkos(argc, argv);
+  return RUN_ALL_TESTS();
+}

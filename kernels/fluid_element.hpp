@@ -1,0 +1,131 @@
+#pragma once
+// The stabilized equal-order Navier–Stokes element (paper eqs. 13–14) in scaled variables.
+//
+// Scaled with a length L, a velocity U and the pressure scale μU/L, the momentum and
+// continuity equations read
+//     Re (∂u/∂t + c u·∇u) + ∇p − ∇·(∇u + ∇uᵀ) = f,      ∇·u = 0,      Re = ρUL/μ,
+// with c = 1 (Navier–Stokes) or 0 (the Stokes limit). The weak residual at node a,
+// component i, summed over elements, is
+//   R_ai = ∫ N_a Re (u_t + c u·∇u)_i + ∂_j N_a (∂_j u_i + ∂_i u_j) − ∂_i N_a p − N_a f_i
+//          + Re τ_M (c u·∇N_a) r_i                       (SUPG)
+//          + ν_L ∂_i N_a ∇·u                              (LSIC)
+//   R_a4 = ∫ N_a ∇·u + τ_M ∇N_a · r                       (continuity + PSPG)
+// where r = Re (u_t + c u·∇u) + ∇p − f is the strong momentum residual (the viscous
+// second derivatives are dropped, as usual for linear and trilinear elements), and
+//   τ_M = τ/Re = [ (2 Re/Δt)² + (2 Re |u|/h)² + (4/h²)² ]^(−1/2)       (Tezduyar 1992)
+//   ν_L = Re (h/2)|u| min(1, Re_h/3),  Re_h = Re |u| h / 2.
+// τ_M and ν_L are evaluated from a frozen velocity and are not differentiated.
+// The time derivative is u_t = m u + H with m = α0/Δt and H the history part of BDF.
+#include <Kokkos_Core.hpp>
+#include <cmath>
+
+#include "kernels/dual.hpp"
+
+namespace rouleau {
+
+struct FluidCoefficients {
+  double reynolds = 0.0;          // Re = ρUL/μ
+  double mass_coefficient = 0.0;  // α0/Δt (scaled); 0 for a steady solve
+  double inverse_dt = 0.0;        // 1/Δt (scaled) in τ; 0 for a steady solve
+  int convection = 1;             // 1: Navier–Stokes, 0: Stokes limit
+  int lsic = 1;                   // grad-div (LSIC) stabilization on/off
+};
+
+// τ_M = [ (2 Re/Δt)² + (2 Re |u|/h)² + (4/h²)² ]^(−1/2)
+KOKKOS_INLINE_FUNCTION double stabilization_tau(const FluidCoefficients& c, double speed, double h) {
+  const double transient = 2.0 * c.reynolds * c.inverse_dt;
+  const double advective = c.convection * 2.0 * c.reynolds * speed / h;
+  const double viscous = 4.0 / (h * h);
+  return 1.0 / sqrt(transient * transient + advective * advective + viscous * viscous);
+}
+
+// ν_L = Re (h/2)|u| min(1, Re_h/3),  Re_h = Re |u| h/2
+KOKKOS_INLINE_FUNCTION double lsic_coefficient(const FluidCoefficients& c, double speed, double h) {
+  if (!c.convection || !c.lsic) return 0.0;
+  const double cell_reynolds = 0.5 * c.reynolds * speed * h;
+  const double limiter = cell_reynolds / 3.0 < 1.0 ? cell_reynolds / 3.0 : 1.0;
+  return c.reynolds * 0.5 * h * speed * limiter;
+}
+
+// Per element and quadrature point, `geometry(e, q, 3k+d)` holds ∂ξ_k/∂x_d and
+// `geometry(e, q, 9)` holds det(∂x/∂ξ)·w_q.
+inline constexpr int geometry_entries = 10;
+
+// Adds the element residual R_a (see the header comment) to `residual`.
+//   state(a, 0..3)   nodal u, v, w, p (Scalar: double, or Dual for derivatives)
+//   frozen(a, 0..2)  nodal velocity from which τ_M and ν_L are computed
+//   history(a, 0..2) nodal BDF history H;  force(a, 0..2) nodal body force f
+template <class Element, class Scalar, class GeometryView>
+KOKKOS_INLINE_FUNCTION void fluid_element_residual(
+    const FluidCoefficients& coef, const GeometryView& geometry, const int e, const double h,
+    const Scalar (&state)[Element::nodes][4], const double (&frozen)[Element::nodes][3],
+    const double (&history)[Element::nodes][3], const double (&force)[Element::nodes][3],
+    Scalar (&residual)[Element::nodes][4]) {
+  constexpr int n = Element::nodes;
+  const double re = coef.reynolds;
+  for (int q = 0; q < Element::quadrature_points; ++q) {
+    double xi[3];
+    Element::quadrature_point(q, xi);
+    double shape[n], grad[n][3];
+    for (int a = 0; a < n; ++a) {
+      shape[a] = Element::shape(a, xi);
+      double ref[3];
+      for (int k = 0; k < 3; ++k) ref[k] = Element::shape_gradient(a, k, xi);
+      for (int d = 0; d < 3; ++d)
+        grad[a][d] = ref[0] * geometry(e, q, d) + ref[1] * geometry(e, q, 3 + d) + ref[2] * geometry(e, q, 6 + d);
+    }
+    const double dv = geometry(e, q, 9);
+
+    // Values at the quadrature point.
+    Scalar u[3], grad_u[3][3], p, grad_p[3];
+    double frozen_u[3] = {0, 0, 0}, history_u[3] = {0, 0, 0}, f[3] = {0, 0, 0};
+    for (int i = 0; i < 3; ++i) {
+      u[i] = 0.0;
+      grad_p[i] = 0.0;
+      for (int j = 0; j < 3; ++j) grad_u[i][j] = 0.0;
+    }
+    p = 0.0;
+    for (int a = 0; a < n; ++a) {
+      for (int i = 0; i < 3; ++i) {
+        u[i] += shape[a] * state[a][i];
+        frozen_u[i] += shape[a] * frozen[a][i];
+        history_u[i] += shape[a] * history[a][i];
+        f[i] += shape[a] * force[a][i];
+        for (int j = 0; j < 3; ++j) grad_u[i][j] += grad[a][j] * state[a][i];
+        grad_p[i] += grad[a][i] * state[a][3];
+      }
+      p += shape[a] * state[a][3];
+    }
+    const double speed = sqrt(frozen_u[0] * frozen_u[0] + frozen_u[1] * frozen_u[1] + frozen_u[2] * frozen_u[2]);
+    const double tau = stabilization_tau(coef, speed, h);
+    const double nu_lsic = lsic_coefficient(coef, speed, h);
+
+    // Inertia Re (u_t + c u·∇u) and the strong residual r = inertia + ∇p − f.
+    Scalar inertia[3], strong[3];
+    for (int i = 0; i < 3; ++i) {
+      Scalar acceleration = coef.mass_coefficient * u[i] + history_u[i];
+      if (coef.convection)
+        acceleration += u[0] * grad_u[i][0] + u[1] * grad_u[i][1] + u[2] * grad_u[i][2];
+      inertia[i] = re * acceleration;
+      strong[i] = inertia[i] + grad_p[i] - f[i];
+    }
+    const Scalar divergence = grad_u[0][0] + grad_u[1][1] + grad_u[2][2];
+
+    for (int a = 0; a < n; ++a) {
+      Scalar supg_weight = 0.0;  // Re τ_M c u·∇N_a
+      if (coef.convection) supg_weight = (re * tau) * (u[0] * grad[a][0] + u[1] * grad[a][1] + u[2] * grad[a][2]);
+      Scalar pspg = 0.0;  // τ_M ∇N_a · r
+      for (int i = 0; i < 3; ++i) {
+        Scalar viscous = 0.0;  // ∂_j N_a (∂_j u_i + ∂_i u_j)
+        for (int j = 0; j < 3; ++j) viscous += grad[a][j] * (grad_u[i][j] + grad_u[j][i]);
+        Scalar r_ai = shape[a] * inertia[i] + viscous - grad[a][i] * p - shape[a] * f[i] +
+                      supg_weight * strong[i] + (nu_lsic * grad[a][i]) * divergence;
+        residual[a][i] += dv * r_ai;
+        pspg += (tau * grad[a][i]) * strong[i];
+      }
+      residual[a][3] += dv * (shape[a] * divergence + pspg);
+    }
+  }
+}
+
+}  // namespace rouleau

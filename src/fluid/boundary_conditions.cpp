@@ -1,0 +1,82 @@
+#include "fluid/boundary_conditions.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace rouleau {
+
+FluidBoundaryConditions build_boundary_conditions(const FluidMesh& mesh,
+                                                  const std::array<BoundaryConfig, 6>& sides,
+                                                  const FluidScales& scales) {
+  FluidBoundaryConditions bc;
+  auto coordinates = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
+  const int num_unknowns = mesh.num_unknowns();
+
+  // Velocity constraints per unknown; sides applied by increasing priority (inflow, then wall).
+  std::map<int, double> constrained;
+  auto apply_side = [&](int side) {
+    const BoundaryConfig& s = sides[side];
+    const BoundaryFaces& b = mesh.boundary(side_names[side]);
+    const int normal = side / 2;
+    for (int node : b.nodes) {
+      double velocity[3] = {s.velocity[0], s.velocity[1], s.velocity[2]};
+      if (s.type == BoundaryType::inflow) {
+        // Inflow runs against the outward normal; parabolic: Π 4 s (1 − s) / (2/3) per bounded direction.
+        double shape = 1.0;
+        if (s.profile == InflowProfile::parabolic)
+          for (int t = 0; t < 3; ++t) {
+            if (t == normal || mesh.periodic[t]) continue;
+            const double x = (coordinates(node, t) - mesh.lower[t]) / (mesh.upper[t] - mesh.lower[t]);
+            shape *= 4.0 * x * (1.0 - x) * 1.5;
+          }
+        for (int d = 0; d < 3; ++d) velocity[d] = -b.outward_normal[d] * s.mean_speed * shape;
+      }
+      const int dof_node = mesh.dof_node_of_node[node];
+      for (int c = 0; c < 3; ++c) constrained[fluid_unknowns_per_node * dof_node + c] = velocity[c] / scales.velocity;
+    }
+  };
+  for (BoundaryType pass : {BoundaryType::inflow, BoundaryType::wall})
+    for (int side = 0; side < 6; ++side)
+      if (sides[side].type == pass) apply_side(side);
+
+  // Traction load: for each planar quadrilateral face, ∫ N_a dA = A/4 at its corners.
+  bc.traction_load = Kokkos::View<double*>("rouleau::FluidBoundaryConditions::traction_load", num_unknowns);
+  auto load = Kokkos::create_mirror_view(bc.traction_load);
+  bool has_traction = false;
+  for (int side = 0; side < 6; ++side) {
+    if (sides[side].type != BoundaryType::traction) continue;
+    has_traction = true;
+    const BoundaryFaces& b = mesh.boundary(side_names[side]);
+    const double pressure = sides[side].pressure / scales.pressure;
+    for (const auto& f : b.faces) {
+      // Area of a planar quadrilateral: |d1 × d2| / 2 with its diagonals d1, d2 (scaled).
+      double d1[3], d2[3];
+      for (int d = 0; d < 3; ++d) {
+        d1[d] = (coordinates(f[2], d) - coordinates(f[0], d)) / scales.length;
+        d2[d] = (coordinates(f[3], d) - coordinates(f[1], d)) / scales.length;
+      }
+      const double cx = d1[1] * d2[2] - d1[2] * d2[1], cy = d1[2] * d2[0] - d1[0] * d2[2],
+                   cz = d1[0] * d2[1] - d1[1] * d2[0];
+      const double area = 0.5 * std::sqrt(cx * cx + cy * cy + cz * cz);
+      for (int corner = 0; corner < 4; ++corner) {
+        const int dof_node = mesh.dof_node_of_node[f[corner]];
+        for (int d = 0; d < 3; ++d)
+          load(fluid_unknowns_per_node * dof_node + d) += -pressure * b.outward_normal[d] * 0.25 * area;
+      }
+    }
+  }
+  Kokkos::deep_copy(bc.traction_load, load);
+
+  if (!has_traction) {
+    bc.pressure_pinned = true;
+    constrained[3] = 0.0;  // pressure of dof node 0
+  }
+  for (const auto& [dof, value] : constrained) {
+    bc.dirichlet_dofs.push_back(dof);
+    bc.dirichlet_values.push_back(value);
+  }
+  return bc;
+}
+
+}  // namespace rouleau

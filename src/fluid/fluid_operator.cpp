@@ -1,0 +1,150 @@
+#include "fluid/fluid_operator.hpp"
+
+#include <Kokkos_ScatterView.hpp>
+#include <sstream>
+#include <stdexcept>
+
+#include "kernels/fluid_assembly.hpp"
+#include "kernels/hex8.hpp"
+#include "run/profiling_region.hpp"
+
+namespace rouleau {
+
+namespace {
+using ExecSpace = Kokkos::DefaultExecutionSpace;
+using ScatterVector = Kokkos::Experimental::ScatterView<double*>;
+
+void require_hexahedra(const FluidMesh& mesh) {
+  if (mesh.element_type != FluidElementType::hexahedron8)
+    throw std::invalid_argument("rouleau::FluidOperator: only 8-node hexahedra are implemented so far");
+}
+// Adds the scattered contributions into `target` (contribute wants a non-const View).
+void contribute_to(Vector target, ScatterVector& scatter) { Kokkos::Experimental::contribute(target, scatter); }
+}  // namespace
+
+FluidOperator::FluidOperator(const FluidMesh& mesh, double length_scale)
+    : mesh_(mesh), length_scale_(length_scale), num_unknowns_(mesh.num_unknowns()) {
+  require_hexahedra(mesh_);
+  ProfilingRegion region("rouleau::FluidOperator::setup");
+  geometry_ = Kokkos::View<double***>("rouleau::FluidOperator::geometry", mesh_.num_elements,
+                                      Hex8::quadrature_points, geometry_entries);
+  element_size_ = Kokkos::View<double*>("rouleau::FluidOperator::element_size", mesh_.num_elements);
+  FluidGeometryFunctor<Hex8> geometry{mesh_.coordinates, mesh_.element_nodes, 1.0 / length_scale_, geometry_,
+                                      element_size_};
+  int inverted = 0;
+  Kokkos::parallel_reduce("rouleau::FluidOperator::geometry", Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements),
+                          geometry, inverted);
+  if (inverted > 0) {
+    std::ostringstream msg;
+    msg << "rouleau::FluidOperator: the mesh has " << inverted
+        << " quadrature points with det J <= 0 (inverted or degenerate elements)";
+    throw std::invalid_argument(msg.str());
+  }
+}
+
+FluidElementData FluidOperator::element_data() const {
+  return FluidElementData{mesh_.element_dof_nodes, geometry_, element_size_, coefficients_};
+}
+
+void FluidOperator::set_dirichlet(const std::vector<int>& dofs, const std::vector<double>& values) {
+  if (dofs.size() != values.size()) throw std::invalid_argument("rouleau::FluidOperator::set_dirichlet: sizes differ");
+  dirichlet_dofs_ = Kokkos::View<int*>("rouleau::FluidOperator::dirichlet_dofs", dofs.size());
+  dirichlet_values_ = Kokkos::View<double*>("rouleau::FluidOperator::dirichlet_values", values.size());
+  auto d = Kokkos::create_mirror_view(dirichlet_dofs_);
+  auto v = Kokkos::create_mirror_view(dirichlet_values_);
+  for (size_t i = 0; i < dofs.size(); ++i) {
+    d(i) = dofs[i];
+    v(i) = values[i];
+  }
+  Kokkos::deep_copy(dirichlet_dofs_, d);
+  Kokkos::deep_copy(dirichlet_values_, v);
+}
+
+void FluidOperator::impose_dirichlet(const Vector& state) const {
+  auto dofs = dirichlet_dofs_;
+  auto values = dirichlet_values_;
+  Kokkos::parallel_for(
+      "rouleau::FluidOperator::impose_dirichlet", Kokkos::RangePolicy<ExecSpace>(0, dofs.extent(0)),
+      KOKKOS_LAMBDA(const int i) { state(dofs(i)) = values(i); });
+}
+
+// Dirichlet rows: R_d = U_d − g_d for a residual, (Jδ)_d = δ_d for an action.
+void FluidOperator::finish_rows(const ConstVector& state, const ConstVector& direction, bool residual_rows,
+                                const Vector& result) const {
+  auto dofs = dirichlet_dofs_;
+  auto values = dirichlet_values_;
+  Kokkos::parallel_for(
+      "rouleau::FluidOperator::dirichlet_rows", Kokkos::RangePolicy<ExecSpace>(0, dofs.extent(0)),
+      KOKKOS_LAMBDA(const int i) {
+        const int d = dofs(i);
+        result(d) = residual_rows ? state(d) - values(i) : direction(d);
+      });
+}
+
+void FluidOperator::residual(const ConstVector& state, const ConstVector& frozen, const Vector& result) const {
+  ProfilingRegion region("rouleau::FluidOperator::residual");
+  Kokkos::deep_copy(result, 0.0);
+  ScatterVector scatter(result);
+  FluidResidualFunctor<Hex8, ScatterVector> f{element_data(), state, frozen, history_, body_force_, scatter};
+  Kokkos::parallel_for("rouleau::FluidOperator::residual", Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
+  contribute_to(result, scatter);
+  if (nodal_load_.extent(0) > 0) {
+    auto load = nodal_load_;
+    Kokkos::parallel_for(
+        "rouleau::FluidOperator::nodal_load", Kokkos::RangePolicy<ExecSpace>(0, num_unknowns_),
+        KOKKOS_LAMBDA(const int i) { result(i) -= load(i); });
+  }
+  finish_rows(state, state, true, result);
+}
+
+void FluidOperator::jacobian_action(const ConstVector& state, const ConstVector& direction,
+                                    const Vector& result) const {
+  ProfilingRegion region("rouleau::FluidOperator::jacobian_action");
+  Kokkos::deep_copy(result, 0.0);
+  ScatterVector scatter(result);
+  FluidJacobianActionFunctor<Hex8, ScatterVector> f{element_data(), state, direction, history_, body_force_, scatter};
+  Kokkos::parallel_for("rouleau::FluidOperator::jacobian_action",
+                       Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
+  contribute_to(result, scatter);
+  finish_rows(state, direction, false, result);
+}
+
+void FluidOperator::linear_action(const ConstVector& direction, const Vector& result) const {
+  ProfilingRegion region("rouleau::FluidOperator::linear_action");
+  if (coefficients_.convection)
+    throw std::logic_error("rouleau::FluidOperator::linear_action: the residual is not affine with convection on");
+  Kokkos::deep_copy(result, 0.0);
+  ScatterVector scatter(result);
+  const ConstVector none;
+  FluidResidualFunctor<Hex8, ScatterVector> f{element_data(), direction, direction, none, none, scatter};
+  Kokkos::parallel_for("rouleau::FluidOperator::linear_action", Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements),
+                       f);
+  contribute_to(result, scatter);
+  finish_rows(direction, direction, false, result);
+}
+
+void FluidOperator::diagonal_blocks(const ConstVector& state, const Vector& blocks) const {
+  ProfilingRegion region("rouleau::FluidOperator::diagonal_blocks");
+  Kokkos::deep_copy(blocks, 0.0);
+  ScatterVector scatter(blocks);
+  FluidElementJacobianFunctor<Hex8, true, ScatterVector> f{element_data(), state, history_, body_force_, scatter, {}};
+  Kokkos::parallel_for("rouleau::FluidOperator::diagonal_blocks",
+                       Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
+  contribute_to(blocks, scatter);
+  // A constrained row is the identity row.
+  auto dofs = dirichlet_dofs_;
+  Kokkos::parallel_for(
+      "rouleau::FluidOperator::dirichlet_blocks", Kokkos::RangePolicy<ExecSpace>(0, dofs.extent(0)),
+      KOKKOS_LAMBDA(const int k) {
+        const int node = dofs(k) / 4, i = dofs(k) % 4;
+        for (int j = 0; j < 4; ++j) blocks(16 * node + 4 * i + j) = i == j ? 1.0 : 0.0;
+      });
+}
+
+void FluidOperator::element_matrices(const ConstVector& state, const Kokkos::View<double***>& matrices) const {
+  FluidElementJacobianFunctor<Hex8, false, ScatterVector> f{element_data(), state, history_, body_force_, {}, matrices};
+  Kokkos::parallel_for("rouleau::FluidOperator::element_matrices",
+                       Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
+}
+
+}  // namespace rouleau

@@ -1,0 +1,207 @@
+#include "fluid/fluid_solver.hpp"
+
+#include <KokkosBlas1_axpby.hpp>
+#include <KokkosBlas1_nrm2.hpp>
+#include <KokkosBlas1_update.hpp>
+#include <cmath>
+#include <sstream>
+
+#include "run/profiling_region.hpp"
+
+namespace rouleau {
+
+namespace {
+using ExecSpace = Kokkos::DefaultExecutionSpace;
+
+// J(U)·x through the element kernels (Navier–Stokes), or A·x (Stokes: affine residual).
+class FluidJacobian final : public LinearOperator {
+ public:
+  FluidJacobian(const FluidOperator& op, const ConstVector& state, bool linear)
+      : op_(op), state_(state), linear_(linear) {}
+  void apply(const ConstVector& x, const Vector& y) const override {
+    if (linear_)
+      op_.linear_action(x, y);
+    else
+      op_.jacobian_action(state_, x, y);
+  }
+
+ private:
+  const FluidOperator& op_;
+  ConstVector state_;
+  bool linear_;
+};
+
+GmresSettings gmres_settings(const SolverConfig& s) {
+  GmresSettings g;
+  g.restart = s.gmres_restart;
+  g.relative_tolerance = s.gmres_rtol;
+  g.max_iterations = s.gmres_max_iterations;
+  return g;
+}
+}  // namespace
+
+FluidSolver::FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid,
+                         const std::array<BoundaryConfig, 6>& boundary, const SolverConfig& settings,
+                         const FluidScales& scales, bool stokes)
+    : operator_(mesh, scales.length),
+      scales_(scales),
+      settings_(settings),
+      stokes_(stokes),
+      boundary_(build_boundary_conditions(mesh, boundary, scales)),
+      block_jacobi_(mesh.num_dof_nodes),
+      gmres_(mesh.num_unknowns(), gmres_settings(settings)) {
+  const int n = mesh.num_unknowns();
+  state_ = Vector("rouleau::FluidSolver::state", n);
+  previous_state_ = Vector("rouleau::FluidSolver::previous_state", n);
+  older_state_ = Vector("rouleau::FluidSolver::older_state", n);
+  history_ = Vector("rouleau::FluidSolver::history", n);
+  body_force_ = Vector("rouleau::FluidSolver::body_force", n);
+  residual_ = Vector("rouleau::FluidSolver::residual", n);
+  correction_ = Vector("rouleau::FluidSolver::correction", n);
+  blocks_ = Vector("rouleau::FluidSolver::blocks", 16 * mesh.num_dof_nodes);
+  operator_.set_dirichlet(boundary_.dirichlet_dofs, boundary_.dirichlet_values);
+  operator_.set_nodal_load(boundary_.traction_load);
+  operator_.impose_dirichlet(state_);
+  set_uniform_body_force(fluid.body_force);
+}
+
+void FluidSolver::set_body_force(const std::vector<double>& force_density) {
+  const int nodes = operator_.mesh().num_dof_nodes;
+  auto host = Kokkos::create_mirror_view(body_force_);
+  Kokkos::deep_copy(host, 0.0);
+  const double scale = 1.0 / scales_.body_force();
+  for (int i = 0; i < nodes; ++i)
+    for (int d = 0; d < 3; ++d) host(4 * i + d) = force_density[3 * i + d] * scale;
+  Kokkos::deep_copy(body_force_, host);
+}
+
+void FluidSolver::set_uniform_body_force(const std::array<double, 3>& force_density) {
+  std::vector<double> field(3 * operator_.mesh().num_dof_nodes);
+  for (size_t i = 0; i < field.size(); ++i) field[i] = force_density[i % 3];
+  set_body_force(field);
+}
+
+void FluidSolver::block_norms(const ConstVector& r, double& momentum, double& continuity) const {
+  double m = 0.0, c = 0.0;
+  Kokkos::parallel_reduce(
+      "rouleau::FluidSolver::block_norms", Kokkos::RangePolicy<ExecSpace>(0, r.extent(0)),
+      KOKKOS_LAMBDA(const int i, double& sm, double& sc) {
+        const double v = r(i) * r(i);
+        if (i % 4 == 3)
+          sc += v;
+        else
+          sm += v;
+      },
+      m, c);
+  momentum = std::sqrt(m);
+  continuity = std::sqrt(c);
+}
+
+FluidSolveReport FluidSolver::solve(const ConstVector& history) {
+  ProfilingRegion region("rouleau::FluidSolver::solve");
+  FluidSolveReport report;
+  const bool linear = stokes_;
+  operator_.set_sources(history, body_force_);
+  operator_.impose_dirichlet(state_);
+  operator_.residual(state_, state_, residual_);
+  double norm = KokkosBlas::nrm2(residual_);
+  report.initial_residual = norm;
+  const double target = std::fmax(settings_.newton_atol, settings_.newton_rtol * norm);
+  if (!std::isfinite(norm)) report.failure = "the residual is not finite";
+  while (report.failure.empty() && norm > target && report.newton_iterations < settings_.newton_max_iterations) {
+    // Preconditioner from the Jacobian at the current state (constant in the Stokes limit).
+    if (!linear || !preconditioner_current_) {
+      if (settings_.preconditioner == PreconditionerType::block_jacobi) {
+        operator_.diagonal_blocks(state_, blocks_);
+        block_jacobi_.factor(blocks_);
+      }
+      preconditioner_current_ = true;
+    }
+    const Preconditioner& M = settings_.preconditioner == PreconditionerType::block_jacobi
+                                  ? static_cast<const Preconditioner&>(block_jacobi_)
+                                  : identity_;
+    // J δ = −R
+    KokkosBlas::axpby(-1.0, residual_, 0.0, residual_);
+    Kokkos::deep_copy(correction_, 0.0);
+    FluidJacobian J(operator_, state_, linear);
+    const GmresResult g = gmres_.solve(J, M, residual_, correction_);
+    report.gmres_iterations += g.iterations;
+    ++report.newton_iterations;
+    KokkosBlas::axpby(1.0, correction_, 1.0, state_);
+    operator_.residual(state_, state_, residual_);
+    norm = KokkosBlas::nrm2(residual_);
+    if (!std::isfinite(norm)) {
+      report.failure = "the residual is not finite after Newton step " + std::to_string(report.newton_iterations);
+      break;
+    }
+    if (!g.converged && norm > target) {
+      std::ostringstream msg;
+      msg << "GMRES did not converge in " << g.iterations << " iterations (linear residual " << g.final_residual
+          << " from " << g.initial_residual << ")";
+      report.failure = msg.str();
+      break;
+    }
+    if (linear) break;  // affine residual: one Krylov solve is the solution
+  }
+  block_norms(residual_, report.momentum_residual, report.continuity_residual);
+  report.converged = report.failure.empty() && (norm <= target || linear);
+  if (report.failure.empty() && !report.converged) {
+    std::ostringstream msg;
+    msg << "Newton did not converge in " << report.newton_iterations << " iterations (residual " << norm
+        << ", target " << target << ")";
+    report.failure = msg.str();
+  }
+  return report;
+}
+
+FluidSolveReport FluidSolver::solve_steady() {
+  FluidCoefficients c;
+  c.reynolds = scales_.reynolds;
+  c.convection = stokes_ ? 0 : 1;
+  c.mass_coefficient = 0.0;
+  c.inverse_dt = 0.0;
+  if (c.mass_coefficient != last_mass_coefficient_) preconditioner_current_ = false;
+  last_mass_coefficient_ = c.mass_coefficient;
+  operator_.set_coefficients(c);
+  return solve(ConstVector());
+}
+
+FluidSolveReport FluidSolver::advance(double dt, TimeScheme scheme) {
+  // BDF: u_t ≈ (α0 u^{n+1} + α1 u^n + α2 u^{n−1}) / Δt, in scaled time Δt̂ = Δt U/L.
+  const double dt_scaled = dt * scales_.velocity / scales_.length;
+  const bool bdf2 = scheme == TimeScheme::bdf2 && steps_ > 0;
+  const double a0 = bdf2 ? 1.5 : 1.0, a1 = bdf2 ? -2.0 : -1.0, a2 = bdf2 ? 0.5 : 0.0;
+  FluidCoefficients c;
+  c.reynolds = scales_.reynolds;
+  c.convection = stokes_ ? 0 : 1;
+  c.mass_coefficient = a0 / dt_scaled;
+  c.inverse_dt = 1.0 / dt_scaled;
+  if (c.mass_coefficient != last_mass_coefficient_) preconditioner_current_ = false;
+  last_mass_coefficient_ = c.mass_coefficient;
+  operator_.set_coefficients(c);
+
+  // H = (α1 u^n + α2 u^{n−1}) / Δt̂
+  Kokkos::deep_copy(older_state_, bdf2 ? previous_state_ : state_);
+  Kokkos::deep_copy(previous_state_, state_);
+  KokkosBlas::update(a1 / dt_scaled, previous_state_, a2 / dt_scaled, older_state_, 0.0, history_);
+  FluidSolveReport report = solve(history_);
+  if (report.converged) {
+    time_ += dt;
+    ++steps_;
+  }
+  return report;
+}
+
+void FluidSolver::velocity_and_pressure(std::vector<double>& velocity, std::vector<double>& pressure) const {
+  auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), state_);
+  const FluidMesh& mesh = operator_.mesh();
+  velocity.resize(3 * mesh.num_nodes);
+  pressure.resize(mesh.num_nodes);
+  for (int n = 0; n < mesh.num_nodes; ++n) {
+    const int d = mesh.dof_node_of_node[n];
+    for (int c = 0; c < 3; ++c) velocity[3 * n + c] = host(4 * d + c) * scales_.velocity;
+    pressure[n] = host(4 * d + 3) * scales_.pressure;
+  }
+}
+
+}  // namespace rouleau

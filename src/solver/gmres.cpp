@@ -1,0 +1,113 @@
+#include "solver/gmres.hpp"
+
+#include <KokkosBlas1_axpby.hpp>
+#include <KokkosBlas1_nrm2.hpp>
+#include <KokkosBlas1_scal.hpp>
+#include <KokkosBlas2_gemv.hpp>
+#include <cmath>
+#include <vector>
+
+#include "run/profiling_region.hpp"
+
+namespace rouleau {
+
+Gmres::Gmres(int n, const GmresSettings& settings)
+    : settings_(settings),
+      basis_("rouleau::Gmres::basis", n, settings.restart + 1),
+      work_("rouleau::Gmres::work", n),
+      preconditioned_("rouleau::Gmres::preconditioned", n),
+      correction_("rouleau::Gmres::correction", n),
+      projection_("rouleau::Gmres::projection", settings.restart + 1) {}
+
+GmresResult Gmres::solve(const LinearOperator& A, const Preconditioner& M, const Kokkos::View<const double*>& b,
+                         const Kokkos::View<double*>& x) {
+  ProfilingRegion region("rouleau::Gmres::solve");
+  const int m = settings_.restart;
+  GmresResult result;
+  const double b_norm = KokkosBlas::nrm2(b);
+  auto residual_of = [&](const Kokkos::View<double*>& r) {  // r = b − A x
+    A.apply(x, r);
+    KokkosBlas::axpby(1.0, b, -1.0, r);
+    return KokkosBlas::nrm2(r);
+  };
+  double beta = residual_of(work_);
+  result.initial_residual = beta;
+  const double target = std::fmax(settings_.relative_tolerance * b_norm, settings_.absolute_tolerance);
+  if (beta <= target || b_norm == 0.0 && beta == 0.0) {
+    result.converged = true;
+    result.final_residual = beta;
+    return result;
+  }
+
+  std::vector<double> H((m + 1) * m), cs(m), sn(m), g(m + 1);
+  auto h = [&](int i, int j) -> double& { return H[i + (m + 1) * j]; };
+  auto projection_host = Kokkos::create_mirror_view(projection_);
+
+  while (result.iterations < settings_.max_iterations) {
+    // v_0 = r / β
+    auto v0 = Kokkos::subview(basis_, Kokkos::ALL(), 0);
+    KokkosBlas::axpby(1.0 / beta, work_, 0.0, v0);
+    std::fill(g.begin(), g.end(), 0.0);
+    g[0] = beta;
+    int k = 0;
+    for (; k < m && result.iterations < settings_.max_iterations; ++k) {
+      ++result.iterations;
+      // w = A M⁻¹ v_k
+      M.apply(Kokkos::subview(basis_, Kokkos::ALL(), k), preconditioned_);
+      auto w = Kokkos::subview(basis_, Kokkos::ALL(), k + 1);
+      A.apply(preconditioned_, w);
+      // CGS2: h = Vᵀw; w −= V h, twice.
+      auto V = Kokkos::subview(basis_, Kokkos::ALL(), Kokkos::make_pair(0, k + 1));
+      auto coeffs = Kokkos::subview(projection_, Kokkos::make_pair(0, k + 1));
+      for (int j = 0; j <= k; ++j) h(j, k) = 0.0;
+      for (int pass = 0; pass < 2; ++pass) {
+        KokkosBlas::gemv("T", 1.0, V, w, 0.0, coeffs);
+        KokkosBlas::gemv("N", -1.0, V, coeffs, 1.0, w);
+        Kokkos::deep_copy(projection_host, projection_);
+        for (int j = 0; j <= k; ++j) h(j, k) += projection_host(j);
+      }
+      const double w_norm = KokkosBlas::nrm2(w);
+      h(k + 1, k) = w_norm;
+      if (w_norm > 0.0) KokkosBlas::scal(w, 1.0 / w_norm, w);
+      // Apply the earlier rotations to the new column, then make one for h(k+1,k).
+      for (int j = 0; j < k; ++j) {
+        const double t = cs[j] * h(j, k) + sn[j] * h(j + 1, k);
+        h(j + 1, k) = -sn[j] * h(j, k) + cs[j] * h(j + 1, k);
+        h(j, k) = t;
+      }
+      const double r = std::hypot(h(k, k), h(k + 1, k));
+      cs[k] = r > 0.0 ? h(k, k) / r : 1.0;
+      sn[k] = r > 0.0 ? h(k + 1, k) / r : 0.0;
+      h(k, k) = r;
+      h(k + 1, k) = 0.0;
+      g[k + 1] = -sn[k] * g[k];
+      g[k] = cs[k] * g[k];
+      if (std::fabs(g[k + 1]) <= target || w_norm == 0.0) {
+        ++k;
+        break;
+      }
+    }
+    // y = H⁻¹ g (upper triangular k×k), x += M⁻¹ V y.
+    std::vector<double> y(k, 0.0);
+    for (int i = k - 1; i >= 0; --i) {
+      double s = g[i];
+      for (int j = i + 1; j < k; ++j) s -= h(i, j) * y[j];
+      y[i] = s / h(i, i);
+    }
+    for (int i = 0; i < k; ++i) projection_host(i) = y[i];
+    Kokkos::deep_copy(projection_, projection_host);
+    auto V = Kokkos::subview(basis_, Kokkos::ALL(), Kokkos::make_pair(0, k));
+    KokkosBlas::gemv("N", 1.0, V, Kokkos::subview(projection_, Kokkos::make_pair(0, k)), 0.0, correction_);
+    M.apply(correction_, preconditioned_);
+    KokkosBlas::axpby(1.0, preconditioned_, 1.0, x);
+    beta = residual_of(work_);
+    if (beta <= target) {
+      result.converged = true;
+      break;
+    }
+  }
+  result.final_residual = beta;
+  return result;
+}
+
+}  // namespace rouleau

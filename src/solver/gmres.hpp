@@ -1,0 +1,45 @@
+#pragma once
+// Restarted GMRES(m) with right preconditioning, for the matrix-free fluid operator.
+//
+// Solves A x = b. With right preconditioning A M⁻¹ y = b, x = M⁻¹ y, the residual that
+// GMRES minimizes is the true residual b − A x, so the tolerance means what it says.
+// The Krylov basis is a LayoutLeft (n × m+1) View; orthogonalization is classical
+// Gram–Schmidt applied twice (CGS2) through KokkosBlas gemv, so each iteration costs two
+// reductions of m dot products instead of m separate ones. The small Hessenberg least
+// squares problem is solved on the host with Givens rotations.
+#include <Kokkos_Core.hpp>
+
+#include "solver/linear_operator.hpp"
+
+namespace rouleau {
+
+struct GmresSettings {
+  int restart = 60;
+  double relative_tolerance = 1e-8;  // on ‖b − A x‖ / ‖b‖
+  double absolute_tolerance = 0.0;
+  int max_iterations = 3000;
+};
+
+struct GmresResult {
+  bool converged = false;
+  int iterations = 0;
+  double initial_residual = 0.0;  // ‖b − A x0‖
+  double final_residual = 0.0;    // ‖b − A x‖ (recomputed at the end)
+};
+
+class Gmres {
+ public:
+  Gmres(int n, const GmresSettings& settings);
+  // x holds the initial guess on entry and the solution on exit.
+  GmresResult solve(const LinearOperator& A, const Preconditioner& M, const Kokkos::View<const double*>& b,
+                    const Kokkos::View<double*>& x);
+  const GmresSettings& settings() const { return settings_; }
+
+ private:
+  GmresSettings settings_;
+  Kokkos::View<double**, Kokkos::LayoutLeft> basis_;  // V: n × (m+1)
+  Kokkos::View<double*> work_, preconditioned_, correction_;
+  Kokkos::View<double*> projection_;  // h: m+1 coefficients of one Gram–Schmidt pass
+};
+
+}  // namespace rouleau

@@ -1,0 +1,153 @@
+// The matrix-free fluid operator against an assembled matrix and against finite
+// differences of its residual.
+#include <gtest/gtest.h>
+
+#include <Eigen/Sparse>
+#include <Kokkos_Random.hpp>
+
+#include "fluid/boundary_conditions.hpp"
+#include "fluid/fluid_operator.hpp"
+#include "mesh/fluid_mesh.hpp"
+#include "test_helpers.hpp"
+
+namespace rouleau {
+namespace {
+
+// A tiny graded, partly periodic box with walls and a moving lid, in a Navier–Stokes
+// transient setting with O(1) Reynolds number so every term of the element is active.
+struct TinyProblem {
+  FluidMesh mesh = make_box_mesh({0.0, 0.0, 0.0}, {2.0, 1.0, 1.5}, {3, 3, 2}, {1.0, 2.0, 1.0}, {true, false, false});
+  FluidOperator op{mesh, 1.0};
+  Vector state{"state", mesh.num_unknowns()};
+  Vector direction{"direction", mesh.num_unknowns()};
+  Vector history{"history", mesh.num_unknowns()};
+  Vector force{"force", mesh.num_unknowns()};
+
+  explicit TinyProblem(int convection) {
+    FluidCoefficients c;
+    c.reynolds = 3.0;
+    c.mass_coefficient = 1.5 / 0.1;
+    c.inverse_dt = 1.0 / 0.1;
+    c.convection = convection;
+    op.set_coefficients(c);
+    std::array<BoundaryConfig, 6> sides{};
+    sides[Side::x_min].type = sides[Side::x_max].type = BoundaryType::periodic;
+    sides[Side::y_max].velocity = {1.0, 0.0, 0.5};
+    sides[Side::z_max].type = BoundaryType::traction;
+    sides[Side::z_max].pressure = 0.3;
+    const auto bc = build_boundary_conditions(mesh, sides, FluidScales{});
+    op.set_dirichlet(bc.dirichlet_dofs, bc.dirichlet_values);
+    op.set_nodal_load(bc.traction_load);
+    Kokkos::Random_XorShift64_Pool<> pool(12345);
+    Kokkos::fill_random(state, pool, -1.0, 1.0);
+    Kokkos::fill_random(direction, pool, -1.0, 1.0);
+    Kokkos::fill_random(history, pool, -1.0, 1.0);
+    Kokkos::fill_random(force, pool, -1.0, 1.0);
+    op.set_sources(history, force);
+  }
+
+  // The global Jacobian assembled from element matrices, with the operator's Dirichlet rows.
+  Eigen::SparseMatrix<double> assemble() const {
+    const int npe = mesh.nodes_per_element;
+    Kokkos::View<double***> matrices("matrices", mesh.num_elements, 4 * npe, 4 * npe);
+    op.element_matrices(state, matrices);
+    auto k = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), matrices);
+    auto conn = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.element_dof_nodes);
+    auto dofs = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), op.dirichlet_dofs());
+    std::vector<bool> constrained(mesh.num_unknowns(), false);
+    for (size_t i = 0; i < dofs.extent(0); ++i) constrained[dofs(i)] = true;
+    std::vector<Eigen::Triplet<double>> entries;
+    for (int e = 0; e < mesh.num_elements; ++e)
+      for (int a = 0; a < npe; ++a)
+        for (int i = 0; i < 4; ++i) {
+          const int row = 4 * conn(e, a) + i;
+          if (constrained[row]) continue;
+          for (int b = 0; b < npe; ++b)
+            for (int j = 0; j < 4; ++j) entries.emplace_back(row, 4 * conn(e, b) + j, k(e, 4 * a + i, 4 * b + j));
+        }
+    for (int row = 0; row < mesh.num_unknowns(); ++row)
+      if (constrained[row]) entries.emplace_back(row, row, 1.0);
+    Eigen::SparseMatrix<double> A(mesh.num_unknowns(), mesh.num_unknowns());
+    A.setFromTriplets(entries.begin(), entries.end());
+    return A;
+  }
+};
+
+Eigen::VectorXd to_eigen(const Vector& v) {
+  auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), v);
+  Eigen::VectorXd e(h.extent(0));
+  for (size_t i = 0; i < h.extent(0); ++i) e(i) = h(i);
+  return e;
+}
+
+TEST(FluidOperator, JacobianActionMatchesAssembledMatrix) {
+  for (int convection : {0, 1}) {
+    TinyProblem p(convection);
+    Vector action("action", p.mesh.num_unknowns());
+    p.op.jacobian_action(p.state, p.direction, action);
+    const Eigen::VectorXd expected = p.assemble() * to_eigen(p.direction);
+    const double rel = (to_eigen(action) - expected).norm() / expected.norm();
+    std::printf("convection=%d: matrix-free vs assembled, relative difference %.2e\n", convection, rel);
+    EXPECT_LT(rel, 1e-12);
+  }
+}
+
+TEST(FluidOperator, JacobianActionMatchesFiniteDifferenceOfResidual) {
+  // (R(U + εδ; τ(U)) − R(U − εδ; τ(U))) / 2ε = J(U)δ + O(ε²), τ frozen at U.
+  TinyProblem p(1);
+  const int n = p.mesh.num_unknowns();
+  Vector action("action", n), plus("plus", n), minus("minus", n), shifted("shifted", n), fd("fd", n);
+  p.op.jacobian_action(p.state, p.direction, action);
+  double errors[2];
+  const double eps[2] = {1e-3, 5e-4};
+  for (int k = 0; k < 2; ++k) {
+    const double e = eps[k];
+    auto s = p.state;
+    auto d = p.direction;
+    Kokkos::parallel_for(n, KOKKOS_LAMBDA(int i) { shifted(i) = s(i) + e * d(i); });
+    p.op.residual(shifted, p.state, plus);
+    Kokkos::parallel_for(n, KOKKOS_LAMBDA(int i) { shifted(i) = s(i) - e * d(i); });
+    p.op.residual(shifted, p.state, minus);
+    Kokkos::parallel_for(n, KOKKOS_LAMBDA(int i) { fd(i) = (plus(i) - minus(i)) / (2 * e); });
+    errors[k] = testing::relativeDifference(fd, action);
+  }
+  const double order = std::log(errors[0] / errors[1]) / std::log(2.0);
+  std::printf("finite difference vs Jacobian action: %.2e (eps 1e-3), %.2e (eps 5e-4), order %.2f\n", errors[0],
+              errors[1], order);
+  EXPECT_LT(errors[1], 1e-6);
+  EXPECT_GT(order, 1.8);  // central differences: second order in ε
+}
+
+TEST(FluidOperator, LinearActionEqualsJacobianActionInStokesLimit) {
+  TinyProblem p(0);
+  const int n = p.mesh.num_unknowns();
+  Vector jacobian("jacobian", n), linear("linear", n);
+  p.op.jacobian_action(p.state, p.direction, jacobian);
+  p.op.linear_action(p.direction, linear);
+  testing::expectAllClose(linear, jacobian, 1e-13, 1e-13);
+}
+
+TEST(FluidOperator, DiagonalBlocksMatchAssembledMatrix) {
+  TinyProblem p(1);
+  Vector blocks("blocks", 16 * p.mesh.num_dof_nodes);
+  p.op.diagonal_blocks(p.state, blocks);
+  const Eigen::SparseMatrix<double> A = p.assemble();
+  Vector expected("expected", blocks.extent(0));
+  auto h = Kokkos::create_mirror_view(expected);
+  for (int node = 0; node < p.mesh.num_dof_nodes; ++node)
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) h(16 * node + 4 * i + j) = A.coeff(4 * node + i, 4 * node + j);
+  Kokkos::deep_copy(expected, h);
+  testing::expectAllClose(blocks, expected, 1e-12, 1e-12);
+}
+
+TEST(FluidOperator, InvertedElementIsRejected) {
+  FluidMesh mesh = make_box_mesh({0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {1, 1, 1}, {false, false, false});
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
+  x(13, 0) = 1.8;  // the centre node pushed through the far side
+  Kokkos::deep_copy(mesh.coordinates, x);
+  EXPECT_THROW(FluidOperator(mesh, 1.0), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace rouleau

@@ -1,0 +1,371 @@
+#include "io/xdmf_writer.hpp"
+
+#include <hdf5.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <set>
+#include <stdexcept>
+#include <utility>
+
+#include "io/atomic_file.hpp"
+
+namespace rouleau {
+
+int nodes_per_cell(CellType cell_type) {
+  switch (cell_type) {
+    case CellType::hexahedron8: return 8;
+    case CellType::tetrahedron4: return 4;
+  }
+  throw std::invalid_argument("rouleau::nodes_per_cell: unknown cell type");
+}
+
+namespace {
+
+constexpr const char* where = "rouleau::XdmfTimeSeries: ";
+
+// ---- HDF5: owned handles, errors, one dataset writer, one string-attribute writer
+
+// An HDF5 identifier closed by `close` when it goes out of scope.
+class Hdf5Handle {
+ public:
+  Hdf5Handle(hid_t id, herr_t (*close_function)(hid_t)) : id_(id), close_(close_function) {}
+  ~Hdf5Handle() {
+    if (id_ >= 0) close_(id_);
+  }
+  Hdf5Handle(const Hdf5Handle&) = delete;
+  Hdf5Handle& operator=(const Hdf5Handle&) = delete;
+  hid_t get() const { return id_; }
+  bool valid() const { return id_ >= 0; }
+  // Closes now and reports HDF5's result (negative on failure), e.g. for a file whose
+  // last buffers are written out by H5Fclose.
+  herr_t close() {
+    const herr_t result = id_ >= 0 ? close_(id_) : 0;
+    id_ = -1;
+    return result;
+  }
+
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+// The innermost message of HDF5's error stack (where the failure was detected), then clears it.
+std::string hdf5_error_detail() {
+  std::string detail;
+  H5Ewalk2(
+      H5E_DEFAULT, H5E_WALK_DOWNWARD,
+      [](unsigned, const H5E_error2_t* error, void* client) -> herr_t {
+        *static_cast<std::string*>(client) =
+            std::string(error->func_name ? error->func_name : "?") + ": " + (error->desc ? error->desc : "");
+        return 0;
+      },
+      &detail);
+  H5Eclear2(H5E_DEFAULT);
+  return detail.empty() ? "no detail from HDF5" : detail;
+}
+
+[[noreturn]] void throw_hdf5_error(const std::string& file, const std::string& object, const std::string& action) {
+  throw std::runtime_error(std::string(where) + file + ": " + object + ": " + action + " failed: " +
+                           hdf5_error_detail());
+}
+
+// An HDF5 file being written, with the name that errors mention.
+struct Hdf5Output {
+  hid_t id;
+  std::string path;
+};
+
+// Writes `data` (row-major, `dimensions`, in `memory_type`) as the dataset `dataset_path`,
+// stored as `file_type`; missing groups on the way are created.
+void write_dataset(const Hdf5Output& file, const std::string& dataset_path, hid_t memory_type, hid_t file_type,
+                   const void* data, const std::vector<hsize_t>& dimensions) {
+  Hdf5Handle space(H5Screate_simple(static_cast<int>(dimensions.size()), dimensions.data(), nullptr), H5Sclose);
+  if (!space.valid()) throw_hdf5_error(file.path, dataset_path, "H5Screate_simple");
+  Hdf5Handle link_properties(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
+  if (!link_properties.valid() || H5Pset_create_intermediate_group(link_properties.get(), 1) < 0)
+    throw_hdf5_error(file.path, dataset_path, "H5Pset_create_intermediate_group");
+  Hdf5Handle dataset(H5Dcreate2(file.id, dataset_path.c_str(), file_type, space.get(), link_properties.get(),
+                                H5P_DEFAULT, H5P_DEFAULT),
+                     H5Dclose);
+  if (!dataset.valid()) throw_hdf5_error(file.path, dataset_path, "H5Dcreate2");
+  if (H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
+    throw_hdf5_error(file.path, dataset_path, "H5Dwrite");
+}
+
+// Writes `value` as a null-terminated UTF-8 string attribute `name` of the file's root group.
+void write_root_string_attribute(const Hdf5Output& file, const std::string& name, const std::string& value) {
+  const std::string object = "/ attribute " + name;
+  Hdf5Handle string_type(H5Tcopy(H5T_C_S1), H5Tclose);
+  if (!string_type.valid() || H5Tset_size(string_type.get(), value.size() + 1) < 0 ||
+      H5Tset_strpad(string_type.get(), H5T_STR_NULLTERM) < 0 || H5Tset_cset(string_type.get(), H5T_CSET_UTF8) < 0)
+    throw_hdf5_error(file.path, object, "string type");
+  Hdf5Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  if (!space.valid()) throw_hdf5_error(file.path, object, "H5Screate");
+  Hdf5Handle attribute(H5Acreate2(file.id, name.c_str(), string_type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                       H5Aclose);
+  if (!attribute.valid()) throw_hdf5_error(file.path, object, "H5Acreate2");
+  if (H5Awrite(attribute.get(), string_type.get(), value.c_str()) < 0) throw_hdf5_error(file.path, object, "H5Awrite");
+}
+
+// Creates PATH.tmp, stamps the provenance on its root group, lets `fill` write the
+// datasets, closes it and renames it to `path`. On failure the .tmp is removed and the
+// error rethrown, so `path` is either the complete new file or untouched.
+void write_hdf5_file_atomically(const std::string& path, const Provenance& provenance,
+                                const std::function<void(const Hdf5Output&)>& fill) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become exceptions, not stderr noise
+  const std::string temporary = temporary_path_for(path);
+  try {
+    Hdf5Handle file(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+    if (!file.valid()) throw_hdf5_error(temporary, "/", "H5Fcreate");
+    const Hdf5Output output{file.get(), temporary};
+    for (const auto& [key, value] : provenance.attributes) write_root_string_attribute(output, key, value);
+    fill(output);
+    if (file.close() < 0) throw_hdf5_error(temporary, "/", "H5Fclose");
+    commit_temporary_file(temporary, path);
+  } catch (...) {
+    std::error_code ignored;
+    if (!std::filesystem::is_directory(temporary, ignored)) std::filesystem::remove(temporary, ignored);
+    throw;
+  }
+}
+
+// Writes an n x columns float64 array (a plain n-vector when columns == 1).
+void write_double_array(const Hdf5Output& file, const std::string& dataset_path, const double* data, std::size_t n,
+                        int columns) {
+  std::vector<hsize_t> dimensions{static_cast<hsize_t>(n)};
+  if (columns != 1) dimensions.push_back(static_cast<hsize_t>(columns));
+  write_dataset(file, dataset_path, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, data, dimensions);
+}
+
+// ---- names and XML
+
+void check_name(const std::string& what, const std::string& name) {
+  const bool allowed = !name.empty() && name.find_first_not_of(
+                                            "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-.") ==
+                                            std::string::npos;
+  if (!allowed || name == "." || name == "..")
+    throw std::invalid_argument(std::string(where) + what + " \"" + name +
+                                "\": use only letters, digits, '_', '-' and '.'");
+}
+
+std::string xml_escaped(const std::string& text) {
+  std::string escaped;
+  escaped.reserve(text.size());
+  for (char c : text) {
+    switch (c) {
+      case '&': escaped += "&amp;"; break;
+      case '<': escaped += "&lt;"; break;
+      case '>': escaped += "&gt;"; break;
+      case '"': escaped += "&quot;"; break;
+      case '\'': escaped += "&apos;"; break;
+      case '\n': escaped += "&#10;"; break;
+      case '\r': escaped += "&#13;"; break;
+      case '\t': escaped += "&#9;"; break;
+      default: escaped += c;
+    }
+  }
+  return escaped;
+}
+
+std::string exact_decimal(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
+const char* xdmf_topology_type(CellType cell_type) {
+  return cell_type == CellType::hexahedron8 ? "Hexahedron" : "Tetrahedron";
+}
+
+// <DataItem> of an HDF5 dataset: "float" (Float, 8 bytes) or "int" (Int, 8 bytes).
+std::string data_item(const std::string& indent, std::size_t rows, int columns, bool is_integer,
+                      const std::string& file_name, const std::string& dataset_path) {
+  std::string dimensions = std::to_string(rows);
+  if (columns != 1) dimensions += " " + std::to_string(columns);
+  return indent + "<DataItem Dimensions=\"" + dimensions + "\" NumberType=\"" + (is_integer ? "Int" : "Float") +
+         "\" Precision=\"8\" Format=\"HDF\">" + file_name + ":" + dataset_path + "</DataItem>\n";
+}
+
+}  // namespace
+
+// ---- XdmfTimeSeries
+
+XdmfTimeSeries::XdmfTimeSeries(std::string directory, std::string basename, std::vector<MeshDescription> meshes,
+                               Provenance provenance)
+    : directory_(std::move(directory)), basename_(std::move(basename)), provenance_(std::move(provenance)) {
+  check_name("basename", basename_);
+  if (meshes.empty()) throw std::invalid_argument(std::string(where) + basename_ + ": no meshes");
+  std::set<std::string> mesh_names;
+  for (const MeshDescription& mesh : meshes) {
+    check_name("mesh name", mesh.name);
+    if (!mesh_names.insert(mesh.name).second)
+      throw std::invalid_argument(std::string(where) + "duplicate mesh name \"" + mesh.name + "\"");
+    const std::size_t per_cell = static_cast<std::size_t>(nodes_per_cell(mesh.cell_type));
+    const std::string mesh_where = std::string(where) + "mesh \"" + mesh.name + "\": ";
+    if (mesh.coordinates.empty() || mesh.coordinates.size() % 3 != 0)
+      throw std::invalid_argument(mesh_where + std::to_string(mesh.coordinates.size()) +
+                                  " coordinates: need a positive multiple of 3");
+    if (mesh.connectivity.empty() || mesh.connectivity.size() % per_cell != 0)
+      throw std::invalid_argument(mesh_where + std::to_string(mesh.connectivity.size()) +
+                                  " connectivity entries: need a positive multiple of " + std::to_string(per_cell));
+    const std::size_t node_count = mesh.coordinates.size() / 3;
+    for (std::size_t i = 0; i < mesh.connectivity.size(); ++i) {
+      const long long node = mesh.connectivity[i];
+      if (node < 0 || static_cast<unsigned long long>(node) >= node_count)
+        throw std::invalid_argument(mesh_where + "cell " + std::to_string(i / per_cell) + " names node " +
+                                    std::to_string(node) + " of " + std::to_string(node_count));
+    }
+    meshes_.push_back({mesh.name, mesh.cell_type, node_count, mesh.connectivity.size() / per_cell});
+    provenance_.set("mesh_hash_" + mesh.name, hash_mesh(mesh.coordinates.data(), mesh.coordinates.size(),
+                                                        mesh.connectivity.data(), mesh.connectivity.size()));
+  }
+
+  std::filesystem::create_directories(directory_);
+  write_hdf5_file_atomically(mesh_path(), provenance_, [&](const Hdf5Output& file) {
+    for (std::size_t m = 0; m < meshes.size(); ++m) {
+      const std::string group = "/" + meshes[m].name;
+      write_double_array(file, group + "/coordinates", meshes[m].coordinates.data(), meshes_[m].node_count, 3);
+      const hsize_t per_cell = static_cast<hsize_t>(nodes_per_cell(meshes[m].cell_type));
+      write_dataset(file, group + "/connectivity", H5T_NATIVE_LLONG, H5T_STD_I64LE, meshes[m].connectivity.data(),
+                    {static_cast<hsize_t>(meshes_[m].cell_count), per_cell});
+    }
+  });
+  write_file_atomically(xdmf_path(), xdmf_text());
+}
+
+std::string XdmfTimeSeries::xdmf_path() const { return (std::filesystem::path(directory_) / (basename_ + ".xdmf")).string(); }
+
+std::string XdmfTimeSeries::mesh_path() const {
+  return (std::filesystem::path(directory_) / (basename_ + "_mesh.h5")).string();
+}
+
+std::string XdmfTimeSeries::file_name_of_step(int step) const {
+  char number[16];
+  std::snprintf(number, sizeof number, "%06d", step);
+  return basename_ + "_" + number + ".h5";
+}
+
+std::string XdmfTimeSeries::step_path(int step) const {
+  return (std::filesystem::path(directory_) / file_name_of_step(step)).string();
+}
+
+void XdmfTimeSeries::write_step(int step, double time, const std::vector<std::vector<FieldView>>& nodal_fields_per_mesh,
+                                const std::vector<std::vector<FieldView>>& cell_fields_per_mesh,
+                                const std::vector<const double*>& moved_coordinates_per_mesh) {
+  const std::string step_where = std::string(where) + "write_step " + std::to_string(step) + ": ";
+  if (step < 0 || (!steps_.empty() && step <= steps_.back().step))
+    throw std::invalid_argument(step_where + "steps must be non-negative and increasing (last written: " +
+                                (steps_.empty() ? std::string("none") : std::to_string(steps_.back().step)) + ")");
+  const auto check_per_mesh_count = [&](std::size_t count, const char* what) {
+    if (count != 0 && count != meshes_.size())
+      throw std::invalid_argument(step_where + what + " has " + std::to_string(count) + " entries for " +
+                                  std::to_string(meshes_.size()) + " meshes");
+  };
+  check_per_mesh_count(nodal_fields_per_mesh.size(), "nodal_fields_per_mesh");
+  check_per_mesh_count(cell_fields_per_mesh.size(), "cell_fields_per_mesh");
+  check_per_mesh_count(moved_coordinates_per_mesh.size(), "moved_coordinates_per_mesh");
+
+  // What goes into the step: (mesh, field, its entity count) in write order, checked first.
+  struct PendingField {
+    std::size_t mesh;
+    const FieldView* field;
+    std::size_t entity_count;
+  };
+  std::vector<PendingField> pending;
+  StepRecord record{step, time, {}};
+  for (std::size_t m = 0; m < meshes_.size(); ++m) {
+    const MeshLayout& mesh = meshes_[m];
+    MeshStepRecord mesh_record{!moved_coordinates_per_mesh.empty() && moved_coordinates_per_mesh[m] != nullptr, {}};
+    std::set<std::string> field_names;
+    const auto add_fields = [&](const std::vector<std::vector<FieldView>>& per_mesh, Center center) {
+      if (per_mesh.empty()) return;
+      for (const FieldView& field : per_mesh[m]) {
+        const std::string field_where = step_where + "mesh \"" + mesh.name + "\" field \"" + field.name + "\": ";
+        check_name("field name", field.name);
+        if (field.name == "coordinates" || !field_names.insert(field.name).second)
+          throw std::invalid_argument(field_where + "name reserved or already used in this mesh");
+        if (field.components != 1 && field.components != 3)
+          throw std::invalid_argument(field_where + std::to_string(field.components) + " components (need 1 or 3)");
+        if (field.data == nullptr) throw std::invalid_argument(field_where + "null data");
+        mesh_record.fields.push_back({field.name, center, field.components});
+        pending.push_back({m, &field, center == Center::node ? mesh.node_count : mesh.cell_count});
+      }
+    };
+    add_fields(nodal_fields_per_mesh, Center::node);
+    add_fields(cell_fields_per_mesh, Center::cell);
+    record.meshes.push_back(std::move(mesh_record));
+  }
+
+  write_hdf5_file_atomically(step_path(step), provenance_, [&](const Hdf5Output& file) {
+    const long long step_number = step;
+    write_dataset(file, "/step", H5T_NATIVE_LLONG, H5T_STD_I64LE, &step_number, {1});
+    write_double_array(file, "/time", &time, 1, 1);
+    for (std::size_t m = 0; m < meshes_.size(); ++m)
+      if (record.meshes[m].moved)
+        write_double_array(file, "/" + meshes_[m].name + "/coordinates", moved_coordinates_per_mesh[m],
+                           meshes_[m].node_count, 3);
+    for (const PendingField& item : pending)
+      write_double_array(file, "/" + meshes_[item.mesh].name + "/" + item.field->name, item.field->data,
+                         item.entity_count, item.field->components);
+  });
+  steps_.push_back(std::move(record));
+  write_file_atomically(xdmf_path(), xdmf_text());
+}
+
+void XdmfTimeSeries::append_uniform_grid(std::string& xml, std::size_t mesh_index, const StepRecord& step,
+                                         const std::string& indent) const {
+  const MeshLayout& mesh = meshes_[mesh_index];
+  const MeshStepRecord& mesh_step = step.meshes[mesh_index];
+  const std::string mesh_file = basename_ + "_mesh.h5";
+  const std::string step_file = file_name_of_step(step.step);
+  const std::string group = "/" + mesh.name;
+  const std::string inner = indent + "  ";
+  xml += indent + "<Grid Name=\"" + mesh.name + "\" GridType=\"Uniform\">\n";
+  if (meshes_.size() == 1) xml += inner + "<Time Value=\"" + exact_decimal(step.time) + "\"/>\n";
+  xml += inner + "<Topology TopologyType=\"" + xdmf_topology_type(mesh.cell_type) + "\" NumberOfElements=\"" +
+         std::to_string(mesh.cell_count) + "\">\n";
+  xml += data_item(inner + "  ", mesh.cell_count, nodes_per_cell(mesh.cell_type), true, mesh_file,
+                   group + "/connectivity");
+  xml += inner + "</Topology>\n";
+  xml += inner + "<Geometry GeometryType=\"XYZ\">\n";
+  xml += data_item(inner + "  ", mesh.node_count, 3, false, mesh_step.moved ? step_file : mesh_file,
+                   group + "/coordinates");
+  xml += inner + "</Geometry>\n";
+  for (const FieldRecord& field : mesh_step.fields) {
+    xml += inner + "<Attribute Name=\"" + field.name + "\" AttributeType=\"" +
+           (field.components == 1 ? "Scalar" : "Vector") + "\" Center=\"" +
+           (field.center == Center::node ? "Node" : "Cell") + "\">\n";
+    xml += data_item(inner + "  ", field.center == Center::node ? mesh.node_count : mesh.cell_count,
+                     field.components, false, step_file, group + "/" + field.name);
+    xml += inner + "</Attribute>\n";
+  }
+  xml += indent + "</Grid>\n";
+}
+
+std::string XdmfTimeSeries::xdmf_text() const {
+  std::string xml =
+      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+      "<Xdmf Version=\"3.0\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n"
+      "  <Domain>\n";
+  for (const auto& [key, value] : provenance_.attributes)
+    xml += "    <Information Name=\"" + xml_escaped(key) + "\" Value=\"" + xml_escaped(value) + "\"/>\n";
+  xml += "    <Grid Name=\"" + basename_ + "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (const StepRecord& step : steps_) {
+    if (meshes_.size() == 1) {
+      append_uniform_grid(xml, 0, step, "      ");
+      continue;
+    }
+    xml += "      <Grid Name=\"step_" + std::to_string(step.step) +
+           "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n";
+    xml += "        <Time Value=\"" + exact_decimal(step.time) + "\"/>\n";
+    for (std::size_t m = 0; m < meshes_.size(); ++m) append_uniform_grid(xml, m, step, "        ");
+    xml += "      </Grid>\n";
+  }
+  xml += "    </Grid>\n  </Domain>\n</Xdmf>\n";
+  return xml;
+}
+
+}  // namespace rouleau

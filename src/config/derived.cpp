@@ -1,0 +1,93 @@
+#include "config/derived.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace rouleau {
+namespace {
+
+bool is_periodic_direction(const DomainConfig& domain, int axis) {
+  return domain.boundary[2 * axis].type == BoundaryType::periodic;
+}
+
+double norm(const std::array<double, 3>& vector) {
+  return std::sqrt(vector[0] * vector[0] + vector[1] * vector[1] + vector[2] * vector[2]);
+}
+
+// printf-style formatting of one number into a sentence.
+std::string formatted(const char* format, double value) {
+  char text[64];
+  std::snprintf(text, sizeof(text), format, value);
+  return text;
+}
+
+double derived_length_scale(const CaseConfig& config) {
+  if (config.scales.length > 0) return config.scales.length;
+  const DomainConfig& domain = config.domain;
+  double smallest_extent = 0.0, smallest_bounded_extent = 0.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double extent = domain.upper[axis] - domain.lower[axis];
+    if (smallest_extent == 0.0 || extent < smallest_extent) smallest_extent = extent;
+    if (!is_periodic_direction(domain, axis) && (smallest_bounded_extent == 0.0 || extent < smallest_bounded_extent))
+      smallest_bounded_extent = extent;
+  }
+  return smallest_bounded_extent > 0.0 ? smallest_bounded_extent : smallest_extent;
+}
+
+double derived_velocity_scale(const CaseConfig& config, double length_scale) {
+  if (config.scales.velocity > 0) return config.scales.velocity;
+  const DomainConfig& domain = config.domain;
+  const double viscosity = config.fluid.viscosity;
+  double speed = 0.0;
+  for (const BoundaryConfig& side : domain.boundary) {
+    if (side.type == BoundaryType::wall) speed = std::max(speed, norm(side.velocity));
+    if (side.type == BoundaryType::inflow) speed = std::max(speed, side.mean_speed);
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    const BoundaryConfig &low = domain.boundary[2 * axis], &high = domain.boundary[2 * axis + 1];
+    if (low.type != BoundaryType::traction || high.type != BoundaryType::traction) continue;
+    const double distance = domain.upper[axis] - domain.lower[axis];
+    // Poiseuille: mean speed ~ |Δp| L² / (8 μ ℓ)
+    speed = std::max(speed, std::abs(high.pressure - low.pressure) * length_scale * length_scale / (8.0 * viscosity * distance));
+  }
+  // body-force-driven channel: mean speed ~ |f| L² / (8 μ)
+  speed = std::max(speed, norm(config.fluid.body_force) * length_scale * length_scale / (8.0 * viscosity));
+  return speed > 0.0 ? speed : 1.0;
+}
+
+}  // namespace
+
+DerivedQuantities derive_quantities(const CaseConfig& config) {
+  DerivedQuantities derived;
+  derived.length_scale = derived_length_scale(config);
+  derived.velocity_scale = derived_velocity_scale(config, derived.length_scale);
+  derived.pressure_scale = config.fluid.viscosity * derived.velocity_scale / derived.length_scale;
+  derived.reynolds = config.fluid.density * derived.velocity_scale * derived.length_scale / config.fluid.viscosity;
+
+  const std::string reynolds = "Re = " + formatted("%.2g", derived.reynolds);
+  const std::string threshold = formatted("%g", config.solver.stokes_reynolds_threshold);
+  switch (config.solver.stokes) {
+    case StokesChoice::on:
+      derived.stokes = true;
+      derived.stokes_reason = "solver.stokes = \"on\" (" + reynolds +
+                              "): convective term dropped (changes the answer by O(Re))";
+      break;
+    case StokesChoice::off:
+      derived.stokes = false;
+      derived.stokes_reason = "solver.stokes = \"off\" (" + reynolds + "): convective term kept (Navier–Stokes)";
+      break;
+    case StokesChoice::automatic:
+      derived.stokes = derived.reynolds < config.solver.stokes_reynolds_threshold;
+      derived.stokes_reason =
+          derived.stokes ? reynolds + " < threshold " + threshold +
+                               ": convective term dropped (changes the answer by O(Re)); set solver.stokes = \"off\" "
+                               "to keep it"
+                         : reynolds + " ≥ threshold " + threshold + ": convective term kept (Navier–Stokes)";
+      break;
+  }
+  return derived;
+}
+
+}  // namespace rouleau

@@ -1,0 +1,568 @@
+#include "config/load_case.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <string_view>
+#include <toml++/toml.h>
+#include <utility>
+
+#include "util/errors.hpp"
+
+namespace rouleau {
+namespace {
+
+constexpr std::array<const char*, 3> axis_names{"x", "y", "z"};
+
+// A number as it appears in an error message ("-1", "0.001", "1e-07").
+std::string format_number(double value) {
+  std::ostringstream text;
+  text << std::setprecision(6) << value;
+  return text.str();
+}
+std::string format_number(std::int64_t value) { return std::to_string(value); }
+
+// "a string", "an integer", ... for "expected X, got Y" messages.
+std::string type_phrase(toml::node_type type) {
+  switch (type) {
+    case toml::node_type::table: return "a table";
+    case toml::node_type::array: return "an array";
+    case toml::node_type::string: return "a string";
+    case toml::node_type::integer: return "an integer";
+    case toml::node_type::floating_point: return "a floating-point number";
+    case toml::node_type::boolean: return "a boolean";
+    case toml::node_type::date: return "a date";
+    case toml::node_type::time: return "a time";
+    case toml::node_type::date_time: return "a date-time";
+    case toml::node_type::none: break;
+  }
+  return "nothing";
+}
+
+// Levenshtein distance between two short names.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> previous(b.size() + 1), current(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) previous[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    current[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t substitution = previous[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+      current[j] = std::min({previous[j] + 1, current[j - 1] + 1, substitution});
+    }
+    std::swap(previous, current);
+  }
+  return previous[b.size()];
+}
+
+// "; did you mean "X"?" for the closest candidate within edit distance 2, else "".
+std::string suggestion(std::string_view given, const std::vector<std::string_view>& candidates) {
+  std::string_view best;
+  std::size_t best_distance = 3;
+  for (const auto candidate : candidates) {
+    const std::size_t distance = edit_distance(given, candidate);
+    if (distance < best_distance) best = candidate, best_distance = distance;
+  }
+  return best.empty() ? std::string() : "; did you mean \"" + std::string(best) + "\"?";
+}
+
+// An allowed interval of values; describe() gives "> 0", "≥ 1 and ≤ 4096", ...
+struct Range {
+  double lower = -std::numeric_limits<double>::infinity();
+  bool lower_inclusive = true;
+  double upper = std::numeric_limits<double>::infinity();
+  bool upper_inclusive = true;
+
+  static Range any() { return {}; }
+  static Range above(double bound) { return {bound, false}; }
+  static Range at_least(double bound) { return {bound, true}; }
+  static Range closed(double low, double high) { return {low, true, high, true}; }
+  static Range open(double low, double high) { return {low, false, high, false}; }
+
+  bool contains(double value) const {
+    const bool above_lower = lower_inclusive ? value >= lower : value > lower;
+    const bool below_upper = upper_inclusive ? value <= upper : value < upper;
+    return above_lower && below_upper;
+  }
+  std::string describe() const {
+    std::string text;
+    if (std::isfinite(lower)) text += (lower_inclusive ? "≥ " : "> ") + format_number(lower);
+    if (std::isfinite(upper)) {
+      if (!text.empty()) text += " and ";
+      text += (upper_inclusive ? "≤ " : "< ") + format_number(upper);
+    }
+    return text;
+  }
+};
+
+// Reports errors with the right "file": the case file, or "--set" for keys that came
+// from a command-line override (or lie under / above one).
+class ErrorSource {
+ public:
+  ErrorSource(std::string file, std::vector<std::string> overridden_keys)
+      : file_(std::move(file)), overridden_keys_(std::move(overridden_keys)) {}
+
+  [[noreturn]] void fail(const std::string& key, const std::string& reason) const {
+    throw InputError(file_for(key), key, reason);
+  }
+
+ private:
+  std::string file_for(const std::string& key) const {
+    const auto related = [&](const std::string& overridden) {
+      const auto is_prefix = [](const std::string& prefix, const std::string& text) {
+        return text.size() > prefix.size() && text.compare(0, prefix.size(), prefix) == 0 &&
+               text[prefix.size()] == '.';
+      };
+      return key == overridden || is_prefix(overridden, key) || is_prefix(key, overridden);
+    };
+    const bool from_override = std::any_of(overridden_keys_.begin(), overridden_keys_.end(), related);
+    return from_override ? override_source_name : file_;
+  }
+
+  std::string file_;
+  std::vector<std::string> overridden_keys_;
+};
+
+// One table of the case file. The constructor rejects keys that are not in `allowed_keys`
+// (suggesting the closest); the readers return typed values at the table's keys, checking
+// type, array length and range, and report errors with the dotted key.
+class TableReader {
+ public:
+  TableReader(const toml::table* table, std::string path, const ErrorSource& errors,
+              std::vector<std::string_view> allowed_keys)
+      : table_(table ? table : &empty_table()), path_(std::move(path)), errors_(errors),
+        allowed_keys_(std::move(allowed_keys)) {
+    for (const auto& [key, node] : *table_) {
+      const std::string_view name = key.str();
+      if (std::find(allowed_keys_.begin(), allowed_keys_.end(), name) != allowed_keys_.end()) continue;
+      fail(name, std::string(node.is_table() ? "unknown table" : "unknown key") + suggestion(name, allowed_keys_));
+    }
+  }
+
+  // The dotted key of `key` in this table.
+  std::string path_of(std::string_view key) const {
+    return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
+  }
+  [[noreturn]] void fail(std::string_view key, const std::string& reason) const {
+    errors_.fail(path_of(key), reason);
+  }
+  // The keys present in the file, in file order.
+  std::vector<std::string> present_keys() const {
+    std::vector<std::string> keys;
+    for (const auto& [key, node] : *table_) keys.emplace_back(key.str());
+    return keys;
+  }
+
+  // A sub-table with its own allowed keys; an absent table reads as empty.
+  TableReader table(std::string_view key, std::vector<std::string_view> allowed_keys) const {
+    const toml::node* found = node(key);
+    if (found && !found->is_table()) expected(key, "a table", *found);
+    return TableReader(found ? found->as_table() : nullptr, path_of(key), errors_, std::move(allowed_keys));
+  }
+
+  // A finite number (integers accepted) in `range`.
+  std::optional<double> number(std::string_view key, const Range& range = Range::any()) const {
+    const toml::node* found = node(key);
+    if (!found) return std::nullopt;
+    const double value = number_value(key, *found, "");
+    check_range(key, value, range, "");
+    return value;
+  }
+  // An integer in `range` that fits an int.
+  std::optional<int> integer(std::string_view key, const Range& range) const {
+    const toml::node* found = node(key);
+    if (!found) return std::nullopt;
+    const std::int64_t value = integer_value(key, *found, "");
+    check_range(key, value, range, "");
+    return static_cast<int>(value);
+  }
+  std::optional<bool> boolean(std::string_view key) const {
+    const toml::node* found = node(key);
+    if (!found) return std::nullopt;
+    if (!found->is_boolean()) expected(key, "a boolean (true or false)", *found);
+    return found->as_boolean()->get();
+  }
+  std::optional<std::string> string(std::string_view key) const {
+    const toml::node* found = node(key);
+    if (!found) return std::nullopt;
+    if (!found->is_string()) expected(key, "a string", *found);
+    return found->as_string()->get();
+  }
+  // An array of 3 finite numbers, each in `range`.
+  std::optional<std::array<double, 3>> number3(std::string_view key, const Range& range = Range::any()) const {
+    return triple<double>(key, "numbers", range, [&](const toml::node& element, const std::string& label) {
+      return number_value(key, element, label);
+    });
+  }
+  // An array of 3 integers, each in `range`.
+  std::optional<std::array<std::int64_t, 3>> integer3(std::string_view key, const Range& range) const {
+    return triple<std::int64_t>(key, "integers", range, [&](const toml::node& element, const std::string& label) {
+      return integer_value(key, element, label);
+    });
+  }
+  // One of the named `choices` (a string).
+  template <class Enum>
+  std::optional<Enum> choice(std::string_view key, const std::vector<std::pair<std::string_view, Enum>>& choices) const {
+    const std::optional<std::string> name = string(key);
+    if (!name) return std::nullopt;
+    std::vector<std::string_view> names;
+    for (const auto& [choice_name, value] : choices) {
+      if (choice_name == *name) return value;
+      names.push_back(choice_name);
+    }
+    std::string listed;
+    for (const auto choice_name : names) listed += (listed.empty() ? "\"" : ", \"") + std::string(choice_name) + "\"";
+    fail(key, "must be one of " + listed + "; got \"" + *name + "\"" + suggestion(*name, names));
+  }
+
+ private:
+  static const toml::table& empty_table() {
+    static const toml::table empty;
+    return empty;
+  }
+  const toml::node* node(std::string_view key) const {
+    if (std::find(allowed_keys_.begin(), allowed_keys_.end(), key) == allowed_keys_.end())
+      throw std::logic_error("rouleau::load_case: reading undeclared key " + path_of(key));
+    return table_->get(key);
+  }
+  [[noreturn]] void expected(std::string_view key, const std::string& what, const toml::node& found,
+                             const std::string& label = "") const {
+    fail(key, label + "expected " + what + ", got " + type_phrase(found.type()));
+  }
+  double number_value(std::string_view key, const toml::node& found, const std::string& label) const {
+    if (found.is_integer()) return static_cast<double>(found.as_integer()->get());
+    if (!found.is_floating_point()) expected(key, "a number", found, label);
+    const double value = found.as_floating_point()->get();
+    if (!std::isfinite(value)) fail(key, label + "must be a finite number, got " + format_number(value));
+    return value;
+  }
+  std::int64_t integer_value(std::string_view key, const toml::node& found, const std::string& label) const {
+    if (!found.is_integer()) expected(key, "an integer", found, label);
+    const std::int64_t value = found.as_integer()->get();
+    if (value > std::numeric_limits<int>::max() || value < std::numeric_limits<int>::min())
+      fail(key, label + "out of the range of a 32-bit integer, got " + format_number(value));
+    return value;
+  }
+  template <class Number>
+  void check_range(std::string_view key, Number value, const Range& range, const std::string& label) const {
+    if (!range.contains(static_cast<double>(value)))
+      fail(key, label + "must be " + range.describe() + ", got " + format_number(value));
+  }
+  template <class Number, class ReadElement>
+  std::optional<std::array<Number, 3>> triple(std::string_view key, const std::string& element_kind,
+                                              const Range& range, ReadElement read_element) const {
+    const toml::node* found = node(key);
+    if (!found) return std::nullopt;
+    const std::string what = "an array of 3 " + element_kind;
+    if (!found->is_array()) expected(key, what, *found);
+    const toml::array& elements = *found->as_array();
+    if (elements.size() != 3) fail(key, "expected " + what + ", got " + std::to_string(elements.size()) + " elements");
+    std::array<Number, 3> values{};
+    for (std::size_t i = 0; i < 3; ++i) {
+      const std::string label = "component " + std::string(axis_names[i]) + ": ";
+      values[i] = read_element(*elements.get(i), label);
+      check_range(key, values[i], range, label);
+    }
+    return values;
+  }
+
+  const toml::table* table_;
+  std::string path_;
+  const ErrorSource& errors_;
+  std::vector<std::string_view> allowed_keys_;
+};
+
+// The choices of an enum as (file spelling, value) pairs.
+template <class Enum>
+std::vector<std::pair<std::string_view, Enum>> choices_of(std::initializer_list<Enum> values) {
+  std::vector<std::pair<std::string_view, Enum>> choices;
+  for (const Enum value : values) choices.emplace_back(toml_name(value), value);
+  return choices;
+}
+
+// Sets `target` when the key was present.
+template <class Target, class Value>
+void assign(Target& target, const std::optional<Value>& value) {
+  if (value) target = static_cast<Target>(*value);
+}
+template <class Target, class Value>
+void assign(std::array<Target, 3>& target, const std::optional<std::array<Value, 3>>& value) {
+  if (value)
+    for (std::size_t i = 0; i < 3; ++i) target[i] = static_cast<Target>((*value)[i]);
+}
+template <class Value>
+Value require(const TableReader& table, std::string_view key, const std::optional<Value>& value) {
+  if (!value) table.fail(key, "missing required key");
+  return *value;
+}
+
+// Reads the file and parses it; I/O and syntax errors become InputError.
+toml::table parse_case_file(const std::string& path) {
+  std::error_code status;
+  if (!std::filesystem::exists(path, status)) throw InputError(path, "(file)", "no such file");
+  if (std::filesystem::is_directory(path, status)) throw InputError(path, "(file)", "is a directory, not a case file");
+  std::ifstream stream(path, std::ios::binary);
+  if (!stream) throw InputError(path, "(file)", std::string("cannot open: ") + std::strerror(errno));
+  std::ostringstream contents;
+  contents << stream.rdbuf();
+  if (stream.bad()) throw InputError(path, "(file)", "cannot read");
+  try {
+    return toml::parse(contents.str(), path);
+  } catch (const toml::parse_error& error) {
+    const auto& begin = error.source().begin;
+    throw InputError(path, "line " + std::to_string(begin.line) + ", column " + std::to_string(begin.column),
+                     "TOML syntax error: " + std::string(error.description()));
+  }
+}
+
+// Parses the value of an override: a TOML value, or the text itself as a string.
+toml::table parse_override_value(const std::string& value_text) {
+  try {
+    toml::table parsed = toml::parse("value = " + value_text);
+    if (parsed.size() == 1 && parsed.contains("value")) return parsed;
+  } catch (const toml::parse_error&) {
+    // not a TOML value: a bare word such as `steady`
+  }
+  toml::table as_string;
+  as_string.insert("value", value_text);
+  return as_string;
+}
+
+std::string trimmed(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  const auto last = text.find_last_not_of(" \t");
+  return std::string(text.substr(first, last - first + 1));
+}
+
+// Applies "dotted.key=value" overrides to the document; returns the dotted keys set.
+std::vector<std::string> apply_overrides(toml::table& document, const std::vector<std::string>& overrides) {
+  std::vector<std::string> overridden_keys;
+  for (const std::string& text : overrides) {
+    const auto equals = text.find('=');
+    const std::string key_text = trimmed(std::string_view(text).substr(0, equals));
+    if (equals == std::string::npos || key_text.empty())
+      throw InputError(override_source_name, text.empty() ? "(empty)" : text,
+                       "expected KEY=VALUE with a dotted key, such as time.dt_s=0.01");
+    std::vector<std::string> parts;
+    for (std::size_t start = 0;;) {
+      const auto dot = key_text.find('.', start);
+      parts.push_back(key_text.substr(start, dot - start));
+      if (dot == std::string::npos) break;
+      start = dot + 1;
+    }
+    const bool bare_key_parts = std::all_of(parts.begin(), parts.end(), [](const std::string& part) {
+      return !part.empty() && std::all_of(part.begin(), part.end(), [](unsigned char c) {
+        return std::isalnum(c) || c == '_' || c == '-';
+      });
+    });
+    if (!bare_key_parts)
+      throw InputError(override_source_name, key_text, "not a dotted key (letters, digits, '_' and '-' between dots)");
+
+    toml::table* table = &document;
+    std::string path;
+    for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+      path += (path.empty() ? "" : ".") + parts[i];
+      toml::node* child = table->get(parts[i]);
+      if (!child) child = &table->insert(parts[i], toml::table{}).first->second;
+      if (!child->is_table())
+        throw InputError(override_source_name, path, "is " + type_phrase(child->type()) + ", not a table; cannot set " + key_text);
+      table = child->as_table();
+    }
+    toml::table parsed = parse_override_value(trimmed(std::string_view(text).substr(equals + 1)));
+    parsed.get("value")->visit([&](auto& value) { table->insert_or_assign(parts.back(), std::move(value)); });
+    overridden_keys.push_back(key_text);
+  }
+  return overridden_keys;
+}
+
+void read_case_section(const TableReader& root, const std::string& path, CaseConfig& config) {
+  const TableReader section = root.table("case", {"name", "description"});
+  config.name = section.string("name").value_or(std::filesystem::path(path).stem().string());
+  if (config.name.empty()) section.fail("name", "must not be empty");
+  assign(config.description, section.string("description"));
+}
+
+void read_fluid(const TableReader& root, FluidConfig& fluid) {
+  const TableReader section = root.table("fluid", {"density_kg_m3", "viscosity_Pa_s", "body_force_Pa_um"});
+  if (const auto density = section.number("density_kg_m3", Range::above(0)))
+    fluid.density = *density * density_kg_m3_to_internal;
+  assign(fluid.viscosity, section.number("viscosity_Pa_s", Range::above(0)));
+  assign(fluid.body_force, section.number3("body_force_Pa_um"));
+}
+
+void read_domain(const TableReader& root, DomainConfig& domain) {
+  const TableReader section = root.table("domain", {"lower_um", "upper_um", "elements", "wall_grading"});
+  domain.lower = require(section, "lower_um", section.number3("lower_um"));
+  domain.upper = require(section, "upper_um", section.number3("upper_um"));
+  for (std::size_t axis = 0; axis < 3; ++axis)
+    if (!(domain.upper[axis] > domain.lower[axis]))
+      section.fail("upper_um", "component " + std::string(axis_names[axis]) + ": must be > lower_um's " +
+                                   format_number(domain.lower[axis]) + ", got " + format_number(domain.upper[axis]));
+  const auto elements = section.integer3("elements", Range::closed(1, 4096));
+  require(section, "elements", elements);
+  assign(domain.elements, elements);
+  assign(domain.wall_grading, section.number3("wall_grading", Range::closed(1, 100)));
+}
+
+// The keys a side of each boundary type takes (besides "type").
+std::vector<std::string_view> boundary_keys_of(BoundaryType type) {
+  switch (type) {
+    case BoundaryType::periodic: return {};
+    case BoundaryType::wall: return {"velocity_um_s"};
+    case BoundaryType::inflow: return {"mean_speed_um_s", "profile"};
+    case BoundaryType::traction: return {"pressure_Pa"};
+  }
+  return {};
+}
+
+void read_boundaries(const TableReader& root, DomainConfig& domain) {
+  const TableReader boundaries =
+      root.table("boundary", std::vector<std::string_view>(side_names.begin(), side_names.end()));
+  std::array<std::optional<TableReader>, 6> sides;
+  for (int side = 0; side < 6; ++side) {
+    const TableReader reader = boundaries.table(
+        side_names[side], {"type", "velocity_um_s", "mean_speed_um_s", "profile", "pressure_Pa"});
+    BoundaryConfig& boundary = domain.boundary[side];
+    assign(boundary.type, reader.choice("type", choices_of({BoundaryType::periodic, BoundaryType::wall,
+                                                                 BoundaryType::inflow, BoundaryType::traction})));
+    const std::vector<std::string_view> allowed = boundary_keys_of(boundary.type);
+    for (const std::string& key : reader.present_keys()) {
+      if (key == "type" || std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+      std::string takes;
+      for (const auto name : allowed) takes += (takes.empty() ? "" : ", ") + std::string(name);
+      reader.fail(key, "does not belong to boundary type \"" + std::string(toml_name(boundary.type)) + "\" (it takes " +
+                           (takes.empty() ? std::string("no key besides type") : takes) + ")");
+    }
+    const int axis = side / 2;
+    assign(boundary.velocity, reader.number3("velocity_um_s"));
+    if (boundary.velocity[axis] != 0.0)
+      reader.fail("velocity_um_s", "component " + std::string(axis_names[axis]) +
+                                       ": must be 0 (a wall does not move through itself; use type = \"inflow\"), got " +
+                                       format_number(boundary.velocity[axis]));
+    const auto mean_speed = reader.number("mean_speed_um_s", Range::above(0));
+    if (boundary.type == BoundaryType::inflow) require(reader, "mean_speed_um_s", mean_speed);
+    assign(boundary.mean_speed, mean_speed);
+    assign(boundary.profile,
+           reader.choice("profile", choices_of({InflowProfile::uniform, InflowProfile::parabolic})));
+    assign(boundary.pressure, reader.number("pressure_Pa"));
+    sides[side].emplace(reader);
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    const int low = 2 * axis, high = 2 * axis + 1;
+    const bool low_periodic = domain.boundary[low].type == BoundaryType::periodic;
+    const bool high_periodic = domain.boundary[high].type == BoundaryType::periodic;
+    if (low_periodic != high_periodic) {
+      const int lonely = low_periodic ? high : low, partner = low_periodic ? low : high;
+      sides[lonely]->fail("type", std::string("must be \"periodic\" because boundary.") + side_names[partner] +
+                                      " is periodic (periodic sides come in pairs)");
+    }
+    if (low_periodic && domain.elements[axis] < 2)
+      root.fail("domain.elements", std::string("component ") + axis_names[axis] +
+                                       ": must be ≥ 2 along a periodic direction, got " +
+                                       std::to_string(domain.elements[axis]));
+  }
+}
+
+void read_time(const TableReader& root, TimeConfig& time) {
+  const TableReader section = root.table("time", {"mode", "scheme", "dt_s", "end_s"});
+  assign(time.mode, section.choice("mode", choices_of({TimeMode::steady, TimeMode::transient})));
+  assign(time.scheme, section.choice("scheme", choices_of({TimeScheme::bdf2, TimeScheme::backward_euler})));
+  const auto dt = section.number("dt_s", Range::above(0));
+  const auto end = section.number("end_s", Range::above(0));
+  if (time.mode == TimeMode::transient) {
+    require(section, "dt_s", dt);
+    require(section, "end_s", end);
+  }
+  assign(time.dt, dt);
+  assign(time.end, end);
+  if (time.end < time.dt)
+    section.fail("end_s", "must be ≥ dt_s (" + format_number(time.dt) + "), got " + format_number(time.end));
+}
+
+void read_solver(const TableReader& root, SolverConfig& solver) {
+  const TableReader section = root.table(
+      "solver", {"stokes", "stokes_reynolds_threshold", "newton_rtol", "newton_atol", "newton_max_iterations",
+                 "gmres_restart", "gmres_rtol", "gmres_max_iterations", "preconditioner"});
+  assign(solver.stokes, section.choice("stokes", choices_of({StokesChoice::automatic, StokesChoice::on, StokesChoice::off})));
+  assign(solver.stokes_reynolds_threshold, section.number("stokes_reynolds_threshold", Range::above(0)));
+  assign(solver.newton_rtol, section.number("newton_rtol", Range::open(0, 1)));
+  assign(solver.newton_atol, section.number("newton_atol", Range::at_least(0)));
+  const Range iteration_count = Range::at_least(1);
+  assign(solver.newton_max_iterations, section.integer("newton_max_iterations", iteration_count));
+  assign(solver.gmres_restart, section.integer("gmres_restart", Range::closed(1, 1000)));
+  assign(solver.gmres_rtol, section.number("gmres_rtol", Range::open(0, 1)));
+  assign(solver.gmres_max_iterations, section.integer("gmres_max_iterations", iteration_count));
+  assign(solver.preconditioner,
+         section.choice("preconditioner", choices_of({PreconditionerType::block_jacobi, PreconditionerType::none})));
+}
+
+void read_scales(const TableReader& root, ScalesConfig& scales) {
+  const TableReader section = root.table("scales", {"length_um", "velocity_um_s"});
+  assign(scales.length, section.number("length_um", Range::at_least(0)));
+  assign(scales.velocity, section.number("velocity_um_s", Range::at_least(0)));
+}
+
+void read_output(const TableReader& root, OutputConfig& output) {
+  const TableReader section = root.table("output", {"fields", "fields_every_steps", "diagnostics_every_steps"});
+  const Range step_count = Range::at_least(1);
+  assign(output.write_fields, section.boolean("fields"));
+  assign(output.fields_every_steps, section.integer("fields_every_steps", step_count));
+  assign(output.diagnostics_every_steps, section.integer("diagnostics_every_steps", step_count));
+}
+
+}  // namespace
+
+const char* toml_name(BoundaryType type) {
+  switch (type) {
+    case BoundaryType::periodic: return "periodic";
+    case BoundaryType::wall: return "wall";
+    case BoundaryType::inflow: return "inflow";
+    case BoundaryType::traction: return "traction";
+  }
+  return "?";
+}
+const char* toml_name(InflowProfile profile) {
+  return profile == InflowProfile::uniform ? "uniform" : "parabolic";
+}
+const char* toml_name(TimeMode mode) { return mode == TimeMode::steady ? "steady" : "transient"; }
+const char* toml_name(TimeScheme scheme) { return scheme == TimeScheme::bdf2 ? "bdf2" : "backward_euler"; }
+const char* toml_name(StokesChoice choice) {
+  switch (choice) {
+    case StokesChoice::automatic: return "auto";
+    case StokesChoice::on: return "on";
+    case StokesChoice::off: return "off";
+  }
+  return "?";
+}
+const char* toml_name(PreconditionerType type) {
+  return type == PreconditionerType::block_jacobi ? "block_jacobi" : "none";
+}
+
+CaseConfig load_case(const std::string& path, const std::vector<std::string>& overrides) {
+  toml::table document = parse_case_file(path);
+  const ErrorSource errors(path, apply_overrides(document, overrides));
+  // [derived] is written by resolved_case_toml() for the reader; it is output-only.
+  const TableReader root(&document, "", errors,
+                         {"case", "fluid", "domain", "boundary", "time", "solver", "scales", "output", "derived"});
+  CaseConfig config;
+  config.source_file = path;
+  read_case_section(root, path, config);
+  read_fluid(root, config.fluid);
+  read_domain(root, config.domain);
+  read_boundaries(root, config.domain);
+  read_time(root, config.time);
+  read_solver(root, config.solver);
+  read_scales(root, config.scales);
+  read_output(root, config.output);
+  return config;
+}
+
+}  // namespace rouleau

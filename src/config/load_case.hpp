@@ -1,0 +1,36 @@
+#pragma once
+// Reading a case file (TOML) into a CaseConfig, converting to internal units once.
+// Host-only: includes no Kokkos header.
+#include <string>
+#include <vector>
+
+#include "config/case_config.hpp"
+
+namespace rouleau {
+
+// Density in the file is in kg/m³; internally pN·s²/μm⁴ (1000 kg/m³ = 1e-9).
+inline constexpr double density_kg_m3_to_internal = 1e-12;
+
+// The "file" named by errors in command-line overrides.
+inline constexpr const char* override_source_name = "--set";
+
+// Loads and validates the case file at `path`. `overrides` are "dotted.key=value" strings
+// (value parsed as a TOML value, or taken as a string when it is not one), applied to the
+// parsed file before validation, creating tables as needed. Every key is checked: unknown
+// keys and tables, wrong types, wrong array lengths, missing required keys and out-of-range
+// values throw InputError(file, dotted.key, reason); errors about an overridden key name
+// the file "--set". A missing/unreadable file is InputError(path, "(file)", reason); a TOML
+// syntax error is InputError(path, "line L, column C", reason). The [derived] table written
+// by resolved_case_toml() is accepted and ignored.
+CaseConfig load_case(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// The case-file spelling of each choice ("periodic", "bdf2", "auto", ...), as load_case()
+// accepts it and resolved_case_toml() writes it.
+const char* toml_name(BoundaryType type);
+const char* toml_name(InflowProfile profile);
+const char* toml_name(TimeMode mode);
+const char* toml_name(TimeScheme scheme);
+const char* toml_name(StokesChoice choice);
+const char* toml_name(PreconditionerType type);
+
+}  // namespace rouleau

@@ -1,0 +1,150 @@
+#include "config/resolved_case.hpp"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "config/load_case.hpp"
+
+namespace rouleau {
+namespace {
+
+// A double as the shortest TOML float that reads back to the same value ("0.0012", "1.0").
+std::string toml_float(double value) {
+  char text[32];
+  const auto result = std::to_chars(text, text + sizeof(text), value);
+  std::string written(text, result.ptr);
+  if (written.find_first_of(".e") == std::string::npos) written += ".0";
+  return written;
+}
+std::string toml_text(double value) { return toml_float(value); }
+std::string toml_text(int value) { return std::to_string(value); }
+std::string toml_text(bool value) { return value ? "true" : "false"; }
+std::string toml_text(const std::string& value) {
+  std::ostringstream quoted;
+  quoted << toml::value<std::string>(value);  // toml++ quotes and escapes
+  return quoted.str();
+}
+std::string toml_text(const char* value) { return toml_text(std::string(value)); }
+template <class Number>
+std::string toml_text(const std::array<Number, 3>& values) {
+  return "[" + toml_text(values[0]) + ", " + toml_text(values[1]) + ", " + toml_text(values[2]) + "]";
+}
+
+// Writes TOML tables and keys in the order the case file documents them.
+class TomlWriter {
+ public:
+  void table(const std::string& name, const std::string& comment = "") {
+    if (out_.tellp() > 0) out_ << "\n";
+    if (!comment.empty()) out_ << "# " << comment << "\n";
+    out_ << "[" << name << "]\n";
+  }
+  template <class Value>
+  void key(const std::string& name, const Value& value) {
+    out_ << name << " = " << toml_text(value) << "\n";
+  }
+  void comment(const std::string& text) { out_ << "# " << text << "\n"; }
+  std::string text() const { return out_.str(); }
+
+ private:
+  std::ostringstream out_;
+};
+
+// The density in kg/m³ whose conversion at load gives back exactly `internal`
+// (the plain quotient can be one unit in the last place off).
+double density_in_file_units(double internal) {
+  const double quotient = internal / density_kg_m3_to_internal;
+  double below = quotient, above = quotient;
+  for (int step = 0; step < 8; ++step) {
+    if (above * density_kg_m3_to_internal == internal) return above;
+    if (below * density_kg_m3_to_internal == internal) return below;
+    above = std::nextafter(above, HUGE_VAL);
+    below = std::nextafter(below, -HUGE_VAL);
+  }
+  return quotient;
+}
+
+}  // namespace
+
+std::string resolved_case_toml(const CaseConfig& config, const DerivedQuantities& derived) {
+  TomlWriter toml_file;
+  toml_file.comment("Resolved case: every key with the value the run uses (units in the key names).");
+  toml_file.comment("Loads again as a case file; the [derived] table at the end is output-only.");
+  if (!config.source_file.empty()) {
+    std::string source = config.source_file;  // a comment ends at a line break
+    std::replace(source.begin(), source.end(), '\n', ' ');
+    toml_file.comment("Resolved from " + source);
+  }
+
+  toml_file.table("case");
+  toml_file.key("name", config.name);
+  toml_file.key("description", config.description);
+
+  toml_file.table("fluid");
+  toml_file.key("density_kg_m3", density_in_file_units(config.fluid.density));
+  toml_file.key("viscosity_Pa_s", config.fluid.viscosity);
+  toml_file.key("body_force_Pa_um", config.fluid.body_force);
+
+  const DomainConfig& domain = config.domain;
+  toml_file.table("domain");
+  toml_file.key("lower_um", domain.lower);
+  toml_file.key("upper_um", domain.upper);
+  toml_file.key("elements", domain.elements);
+  toml_file.key("wall_grading", domain.wall_grading);
+
+  for (int side = 0; side < 6; ++side) {
+    const BoundaryConfig& boundary = domain.boundary[side];
+    toml_file.table(std::string("boundary.") + side_names[side]);
+    toml_file.key("type", toml_name(boundary.type));
+    switch (boundary.type) {
+      case BoundaryType::periodic: break;
+      case BoundaryType::wall: toml_file.key("velocity_um_s", boundary.velocity); break;
+      case BoundaryType::inflow:
+        toml_file.key("mean_speed_um_s", boundary.mean_speed);
+        toml_file.key("profile", toml_name(boundary.profile));
+        break;
+      case BoundaryType::traction: toml_file.key("pressure_Pa", boundary.pressure); break;
+    }
+  }
+
+  toml_file.table("time");
+  toml_file.key("mode", toml_name(config.time.mode));
+  toml_file.key("scheme", toml_name(config.time.scheme));
+  toml_file.key("dt_s", config.time.dt);
+  toml_file.key("end_s", config.time.end);
+
+  const SolverConfig& solver = config.solver;
+  toml_file.table("solver");
+  toml_file.key("stokes", toml_name(solver.stokes));
+  toml_file.key("stokes_reynolds_threshold", solver.stokes_reynolds_threshold);
+  toml_file.key("newton_rtol", solver.newton_rtol);
+  toml_file.key("newton_atol", solver.newton_atol);
+  toml_file.key("newton_max_iterations", solver.newton_max_iterations);
+  toml_file.key("gmres_restart", solver.gmres_restart);
+  toml_file.key("gmres_rtol", solver.gmres_rtol);
+  toml_file.key("gmres_max_iterations", solver.gmres_max_iterations);
+  toml_file.key("preconditioner", toml_name(solver.preconditioner));
+
+  toml_file.table("scales", "0 = derived from the case (see [derived])");
+  toml_file.key("length_um", config.scales.length);
+  toml_file.key("velocity_um_s", config.scales.velocity);
+
+  toml_file.table("output");
+  toml_file.key("fields", config.output.write_fields);
+  toml_file.key("fields_every_steps", config.output.fields_every_steps);
+  toml_file.key("diagnostics_every_steps", config.output.diagnostics_every_steps);
+
+  toml_file.table("derived", "Output only: derived from the keys above; ignored when this file is loaded.");
+  toml_file.key("length_scale_um", derived.length_scale);
+  toml_file.key("velocity_scale_um_s", derived.velocity_scale);
+  toml_file.key("pressure_scale_Pa", derived.pressure_scale);
+  toml_file.key("reynolds", derived.reynolds);
+  toml_file.key("stokes", derived.stokes);
+  toml_file.key("stokes_reason", derived.stokes_reason);
+  return toml_file.text();
+}
+
+}  // namespace rouleau

@@ -1,0 +1,321 @@
+// The case-file loader: converted values, every class of bad input, overrides, the derived
+// scales and the resolved-case round trip.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "config/derived.hpp"
+#include "config/load_case.hpp"
+#include "config/resolved_case.hpp"
+#include "util/errors.hpp"
+
+namespace {
+
+using rouleau::BoundaryType;
+using rouleau::CaseConfig;
+using rouleau::InputError;
+
+const std::string data_dir = ROULEAU_TEST_DATA_DIR;
+const std::string good_case = data_dir + "/good_case.toml";
+
+// Writes `text` to a fresh file in a per-test temporary folder; returns its path.
+std::string write_case_file(const std::string& file_name, const std::string& text) {
+  const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  const auto folder = std::filesystem::temp_directory_path() /
+                      ("rouleau_test_config_" + std::string(test->name()) + "_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder);
+  const std::string path = (folder / file_name).string();
+  std::ofstream(path) << text;
+  return path;
+}
+
+// The smallest valid case: the required keys only.
+const std::string minimal_case =
+    "[domain]\nlower_um = [0, 0, 0]\nupper_um = [10, 20, 30]\nelements = [2, 2, 2]\n"
+    "[time]\ndt_s = 0.01\nend_s = 0.1\n";
+
+// Loads and returns the InputError it throws (fails the test when nothing is thrown).
+InputError load_error(const std::string& path, const std::vector<std::string>& overrides = {}) {
+  try {
+    rouleau::load_case(path, overrides);
+  } catch (const InputError& error) {
+    return error;
+  }
+  ADD_FAILURE() << "load_case(" << path << ") accepted bad input";
+  return InputError("", "", "");
+}
+
+// The key a bad case file expects in its error ("# expect-key: KEY" on its second line).
+std::string expected_key_of(const std::string& path) {
+  std::ifstream file(path);
+  std::string line;
+  while (std::getline(file, line))
+    if (line.rfind("# expect-key: ", 0) == 0) return line.substr(14);
+  return {};
+}
+
+// Every field of two cases (source_file aside) is exactly equal.
+void expect_identical_cases(const CaseConfig& a, const CaseConfig& b) {
+  EXPECT_EQ(a.name, b.name);
+  EXPECT_EQ(a.description, b.description);
+  EXPECT_EQ(a.fluid.density, b.fluid.density);
+  EXPECT_EQ(a.fluid.viscosity, b.fluid.viscosity);
+  EXPECT_EQ(a.fluid.body_force, b.fluid.body_force);
+  EXPECT_EQ(a.domain.lower, b.domain.lower);
+  EXPECT_EQ(a.domain.upper, b.domain.upper);
+  EXPECT_EQ(a.domain.elements, b.domain.elements);
+  EXPECT_EQ(a.domain.wall_grading, b.domain.wall_grading);
+  for (int side = 0; side < 6; ++side) {
+    SCOPED_TRACE(rouleau::side_names[side]);
+    const auto &first = a.domain.boundary[side], &second = b.domain.boundary[side];
+    EXPECT_EQ(first.type, second.type);
+    EXPECT_EQ(first.velocity, second.velocity);
+    EXPECT_EQ(first.mean_speed, second.mean_speed);
+    EXPECT_EQ(first.profile, second.profile);
+    EXPECT_EQ(first.pressure, second.pressure);
+  }
+  EXPECT_EQ(a.time.mode, b.time.mode);
+  EXPECT_EQ(a.time.scheme, b.time.scheme);
+  EXPECT_EQ(a.time.dt, b.time.dt);
+  EXPECT_EQ(a.time.end, b.time.end);
+  EXPECT_EQ(a.solver.stokes, b.solver.stokes);
+  EXPECT_EQ(a.solver.stokes_reynolds_threshold, b.solver.stokes_reynolds_threshold);
+  EXPECT_EQ(a.solver.newton_rtol, b.solver.newton_rtol);
+  EXPECT_EQ(a.solver.newton_atol, b.solver.newton_atol);
+  EXPECT_EQ(a.solver.newton_max_iterations, b.solver.newton_max_iterations);
+  EXPECT_EQ(a.solver.gmres_restart, b.solver.gmres_restart);
+  EXPECT_EQ(a.solver.gmres_rtol, b.solver.gmres_rtol);
+  EXPECT_EQ(a.solver.gmres_max_iterations, b.solver.gmres_max_iterations);
+  EXPECT_EQ(a.solver.preconditioner, b.solver.preconditioner);
+  EXPECT_EQ(a.scales.length, b.scales.length);
+  EXPECT_EQ(a.scales.velocity, b.scales.velocity);
+  EXPECT_EQ(a.output.write_fields, b.output.write_fields);
+  EXPECT_EQ(a.output.fields_every_steps, b.output.fields_every_steps);
+  EXPECT_EQ(a.output.diagnostics_every_steps, b.output.diagnostics_every_steps);
+}
+
+TEST(ConfigLoad, GoodCaseHasTheConvertedValues) {
+  const CaseConfig config = rouleau::load_case(good_case);
+  EXPECT_EQ(config.source_file, good_case);
+  EXPECT_EQ(config.name, "shear_box");
+  EXPECT_DOUBLE_EQ(config.fluid.density, 1.025e-9);  // 1025 kg/m³ (an integer) in pN·s²/μm⁴
+  EXPECT_DOUBLE_EQ(config.fluid.viscosity, 1.2e-3);
+  EXPECT_EQ(config.domain.lower, (std::array<double, 3>{0, -10, 0}));
+  EXPECT_EQ(config.domain.upper, (std::array<double, 3>{40, 10, 20}));
+  EXPECT_EQ(config.domain.elements, (std::array<int, 3>{8, 16, 4}));
+  EXPECT_EQ(config.domain.wall_grading, (std::array<double, 3>{1, 2.5, 1}));
+  EXPECT_EQ(config.domain.boundary[rouleau::x_min].type, BoundaryType::periodic);
+  EXPECT_EQ(config.domain.boundary[rouleau::z_max].type, BoundaryType::periodic);
+  EXPECT_EQ(config.domain.boundary[rouleau::y_min].type, BoundaryType::wall);
+  EXPECT_EQ(config.domain.boundary[rouleau::y_min].velocity, (std::array<double, 3>{-5, 0, 0}));
+  EXPECT_EQ(config.domain.boundary[rouleau::y_max].velocity, (std::array<double, 3>{5, 0, 0}));
+  EXPECT_EQ(config.time.mode, rouleau::TimeMode::transient);
+  EXPECT_EQ(config.time.scheme, rouleau::TimeScheme::backward_euler);
+  EXPECT_DOUBLE_EQ(config.time.dt, 0.005);
+  EXPECT_DOUBLE_EQ(config.time.end, 0.5);
+  EXPECT_DOUBLE_EQ(config.solver.newton_rtol, 1e-7);
+  EXPECT_EQ(config.solver.gmres_restart, 40);
+  EXPECT_EQ(config.solver.preconditioner, rouleau::PreconditionerType::none);
+  EXPECT_FALSE(config.output.write_fields);
+  EXPECT_EQ(config.output.fields_every_steps, 10);
+  // keys the file leaves out keep the struct defaults
+  const rouleau::SolverConfig default_solver;
+  EXPECT_EQ(config.solver.newton_atol, default_solver.newton_atol);
+  EXPECT_EQ(config.solver.gmres_max_iterations, default_solver.gmres_max_iterations);
+  EXPECT_EQ(config.output.diagnostics_every_steps, 1);
+}
+
+TEST(ConfigLoad, MinimalCaseTakesDefaultsAndItsNameFromTheFile) {
+  const CaseConfig config = rouleau::load_case(write_case_file("tiny_box.toml", minimal_case));
+  EXPECT_EQ(config.name, "tiny_box");
+  for (const auto& side : config.domain.boundary) {
+    EXPECT_EQ(side.type, BoundaryType::wall);
+    EXPECT_EQ(side.velocity, (std::array<double, 3>{0, 0, 0}));
+  }
+  EXPECT_EQ(config.fluid.density, rouleau::FluidConfig{}.density);
+}
+
+TEST(ConfigLoad, SteadyCaseNeedsNoTimeStep) {
+  const std::string path = write_case_file(
+      "steady.toml", "[domain]\nlower_um = [0, 0, 0]\nupper_um = [1, 1, 1]\nelements = [2, 2, 2]\n"
+                     "[time]\nmode = \"steady\"\n");
+  EXPECT_EQ(rouleau::load_case(path).time.mode, rouleau::TimeMode::steady);
+}
+
+// Every file in tests/data/bad_cases is one class of bad input; each names the key its
+// error must carry ("# expect-key:").
+TEST(ConfigLoad, EveryBadCaseFileIsAnInputErrorNamingFileAndKey) {
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(data_dir + "/bad_cases")) {
+    const std::string path = entry.path().string();
+    SCOPED_TRACE(path);
+    const std::string expected_key = expected_key_of(path);
+    ASSERT_FALSE(expected_key.empty()) << "no '# expect-key:' line";
+    const InputError error = load_error(path);
+    EXPECT_EQ(error.file(), path);
+    EXPECT_EQ(error.key().rfind(expected_key, 0), 0u) << "key " << error.key();
+    EXPECT_NE(std::string(error.what()).find(path + ": " + expected_key), std::string::npos) << error.what();
+    EXPECT_EQ(std::string(error.what()).find('\n'), std::string::npos) << "not one line: " << error.what();
+    ++files;
+  }
+  EXPECT_GE(files, 25);
+}
+
+TEST(ConfigLoad, ReasonsSayWhatIsWrong) {
+  const auto reason_of = [](const std::string& bad_case) { return load_error(data_dir + "/bad_cases/" + bad_case).reason(); };
+  EXPECT_EQ(reason_of("negative_viscosity.toml"), "must be > 0, got -1");
+  EXPECT_EQ(reason_of("wrong_type.toml"), "expected a number, got a string");
+  EXPECT_EQ(reason_of("unknown_key.toml"), "unknown key; did you mean \"viscosity_Pa_s\"?");
+  EXPECT_EQ(reason_of("unknown_table.toml"), "unknown table; did you mean \"fluid\"?");
+  EXPECT_EQ(reason_of("missing_required_key.toml"), "missing required key");
+  EXPECT_EQ(reason_of("wrong_array_length.toml"), "expected an array of 3 numbers, got 2 elements");
+  EXPECT_NE(reason_of("syntax_error.toml").find("TOML syntax error"), std::string::npos);
+  EXPECT_NE(reason_of("key_of_other_boundary_type.toml").find("does not belong to boundary type \"inflow\""),
+            std::string::npos);
+  EXPECT_NE(reason_of("unpaired_periodic.toml").find("boundary.x_min is periodic"), std::string::npos);
+}
+
+TEST(ConfigLoad, SyntaxErrorNamesLineAndColumn) {
+  const InputError error = load_error(data_dir + "/bad_cases/syntax_error.toml");
+  EXPECT_TRUE(std::regex_match(error.key(), std::regex("line 4, column [0-9]+"))) << error.key();
+}
+
+TEST(ConfigLoad, MissingFileIsAnInputErrorOnTheFile) {
+  const std::string path = data_dir + "/no_such_case.toml";
+  const InputError error = load_error(path);
+  EXPECT_EQ(error.file(), path);
+  EXPECT_EQ(error.key(), "(file)");
+  EXPECT_EQ(load_error(data_dir).key(), "(file)");  // a directory is not a case file
+}
+
+TEST(ConfigLoad, DerivedTableIsIgnored) {
+  const std::string path =
+      write_case_file("with_derived.toml", minimal_case + "[derived]\nreynolds = 12.0\nanything = \"goes\"\n");
+  EXPECT_EQ(rouleau::load_case(path).name, "with_derived");
+}
+
+TEST(ConfigOverrides, ValuesOfEveryKindAreApplied) {
+  const CaseConfig config = rouleau::load_case(
+      good_case, {"time.dt_s=0.01", "boundary.y_max.velocity_um_s=[7,0,0]", "case.name=\"renamed\"",
+                  "time.mode=steady", "scales.length_um = 4", "output.fields=true", "solver.gmres_restart=12"});
+  EXPECT_DOUBLE_EQ(config.time.dt, 0.01);
+  EXPECT_EQ(config.domain.boundary[rouleau::y_max].velocity, (std::array<double, 3>{7, 0, 0}));
+  EXPECT_EQ(config.name, "renamed");
+  EXPECT_EQ(config.time.mode, rouleau::TimeMode::steady);  // a bare word is a string
+  EXPECT_DOUBLE_EQ(config.scales.length, 4.0);             // [scales] created by the override
+  EXPECT_TRUE(config.output.write_fields);
+  EXPECT_EQ(config.solver.gmres_restart, 12);
+}
+
+TEST(ConfigOverrides, LaterOverridesWinAndInlineTablesReplaceSides) {
+  const CaseConfig config = rouleau::load_case(
+      good_case, {"time.dt_s=0.01", "time.dt_s=0.02",
+                  "boundary.y_min={type=\"inflow\", mean_speed_um_s=3, profile=\"uniform\"}"});
+  EXPECT_DOUBLE_EQ(config.time.dt, 0.02);
+  const auto& side = config.domain.boundary[rouleau::y_min];
+  EXPECT_EQ(side.type, BoundaryType::inflow);
+  EXPECT_DOUBLE_EQ(side.mean_speed, 3.0);
+  EXPECT_EQ(side.profile, rouleau::InflowProfile::uniform);
+}
+
+TEST(ConfigOverrides, BadOverridesNameTheSetOptionAndTheKey) {
+  struct BadOverride {
+    std::string text, key;
+  };
+  const std::vector<BadOverride> bad_overrides{
+      {"fluid.viscosity_Pa_s=-1", "fluid.viscosity_Pa_s"},      // out of range
+      {"fluid.viscosty_Pa_s=1e-3", "fluid.viscosty_Pa_s"},      // unknown key
+      {"fluids.viscosity_Pa_s=1e-3", "fluids"},                 // unknown table
+      {"time.dt_s=fast", "time.dt_s"},                          // a string for a number
+      {"domain.lower_um=[0,0]", "domain.lower_um"},             // wrong array length
+      {"fluid.viscosity_Pa_s.value=1", "fluid.viscosity_Pa_s"}, // through a value
+      {"time.dt_s", "time.dt_s"},                               // no '='
+      {"time..dt_s=1", "time..dt_s"},                           // not a dotted key
+  };
+  for (const auto& bad : bad_overrides) {
+    SCOPED_TRACE(bad.text);
+    const InputError error = load_error(good_case, {bad.text});
+    EXPECT_EQ(error.file(), "--set");
+    EXPECT_EQ(error.key(), bad.key);
+  }
+}
+
+TEST(ConfigOverrides, ErrorsInTheFileStillNameTheFile) {
+  const InputError error = load_error(data_dir + "/bad_cases/negative_viscosity.toml", {"time.dt_s=0.02"});
+  EXPECT_EQ(error.file(), data_dir + "/bad_cases/negative_viscosity.toml");
+  EXPECT_EQ(error.key(), "fluid.viscosity_Pa_s");
+}
+
+TEST(ConfigDerived, ShearBoxScalesFromTheWallsAndTheBoundedDirection) {
+  const CaseConfig config = rouleau::load_case(good_case);
+  const auto derived = rouleau::derive_quantities(config);
+  EXPECT_DOUBLE_EQ(derived.length_scale, 20.0);  // y: x and z are periodic
+  EXPECT_DOUBLE_EQ(derived.velocity_scale, 5.0);
+  EXPECT_DOUBLE_EQ(derived.pressure_scale, 1.2e-3 * 5.0 / 20.0);
+  EXPECT_DOUBLE_EQ(derived.reynolds, 1.025e-9 * 5.0 * 20.0 / 1.2e-3);
+  EXPECT_TRUE(derived.stokes);
+  EXPECT_EQ(derived.stokes_reason,
+            "Re = 8.5e-05 < threshold 0.01: convective term dropped (changes the answer by O(Re)); "
+            "set solver.stokes = \"off\" to keep it");
+}
+
+TEST(ConfigDerived, StokesChoiceAndThreshold) {
+  EXPECT_FALSE(rouleau::derive_quantities(rouleau::load_case(good_case, {"solver.stokes=off"})).stokes);
+  EXPECT_TRUE(rouleau::derive_quantities(rouleau::load_case(good_case, {"solver.stokes=on"})).stokes);
+  const auto above_threshold =
+      rouleau::derive_quantities(rouleau::load_case(good_case, {"solver.stokes_reynolds_threshold=1e-6"}));
+  EXPECT_FALSE(above_threshold.stokes);
+  EXPECT_NE(above_threshold.stokes_reason.find("convective term kept"), std::string::npos);
+}
+
+TEST(ConfigDerived, VelocityFromPressureDropBodyForceOrDefault) {
+  const std::string path = write_case_file("channel.toml", minimal_case);
+  // traction 0.5 Pa → 0 Pa across x (ℓ = 10 μm); L = 10 μm (smallest extent)
+  const auto pressure_driven = rouleau::derive_quantities(rouleau::load_case(
+      path, {"boundary.x_min.type=traction", "boundary.x_min.pressure_Pa=0.5", "boundary.x_max.type=traction"}));
+  EXPECT_DOUBLE_EQ(pressure_driven.length_scale, 10.0);
+  EXPECT_DOUBLE_EQ(pressure_driven.velocity_scale, 0.5 * 10.0 * 10.0 / (8.0 * 1.2e-3 * 10.0));
+  const auto force_driven =
+      rouleau::derive_quantities(rouleau::load_case(path, {"fluid.body_force_Pa_um=[0, 0, 0.03]"}));
+  EXPECT_DOUBLE_EQ(force_driven.velocity_scale, 0.03 * 10.0 * 10.0 / (8.0 * 1.2e-3));
+  const auto at_rest = rouleau::derive_quantities(rouleau::load_case(path));
+  EXPECT_DOUBLE_EQ(at_rest.velocity_scale, 1.0);
+  const auto given = rouleau::derive_quantities(
+      rouleau::load_case(path, {"scales.length_um=2", "scales.velocity_um_s=3", "fluid.body_force_Pa_um=[1,0,0]"}));
+  EXPECT_DOUBLE_EQ(given.length_scale, 2.0);
+  EXPECT_DOUBLE_EQ(given.velocity_scale, 3.0);
+}
+
+TEST(ConfigResolved, RoundTripGivesAnIdenticalCase) {
+  const std::vector<std::vector<std::string>> variants{
+      {},
+      {"boundary.x_min={type=\"inflow\", mean_speed_um_s=10.1, profile=\"uniform\"}",
+       "boundary.x_max={type=\"traction\", pressure_Pa=0.37}", "boundary.z_min.type=wall",
+       "boundary.z_max.type=wall", "fluid.density_kg_m3=1099.7", "fluid.viscosity_Pa_s=3.3e-3",
+       "case.description=\"quote \\\" and\\nnewline\"", "time.mode=steady", "solver.stokes=off"},
+  };
+  for (const auto& overrides : variants) {
+    const CaseConfig original = rouleau::load_case(good_case, overrides);
+    const std::string text = rouleau::resolved_case_toml(original, rouleau::derive_quantities(original));
+    EXPECT_NE(text.find("\n[derived]\n"), std::string::npos);
+    const CaseConfig reloaded = rouleau::load_case(write_case_file("resolved.toml", text));
+    expect_identical_cases(original, reloaded);
+    // and the second generation writes the same text (source_file comment aside)
+    const std::string second = rouleau::resolved_case_toml(reloaded, rouleau::derive_quantities(reloaded));
+    EXPECT_EQ(text.substr(text.find("[case]")), second.substr(second.find("[case]")));
+  }
+}
+
+TEST(ConfigResolved, DensityIsWrittenInKilogramsPerCubicMetre) {
+  const CaseConfig config = rouleau::load_case(good_case);
+  const std::string text = rouleau::resolved_case_toml(config, rouleau::derive_quantities(config));
+  EXPECT_NE(text.find("density_kg_m3 = 1025.0\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("viscosity_Pa_s = 0.0012\n"), std::string::npos) << text;
+}
+
+}  // namespace

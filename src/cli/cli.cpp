@@ -1,0 +1,123 @@
+#include "cli/cli.hpp"
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cstdio>
+#include <ostream>
+#include <sstream>
+
+#include "config/derived.hpp"
+#include "config/load_case.hpp"
+#include "rouleau_version.hpp"
+#include "util/errors.hpp"
+
+namespace rouleau {
+namespace {
+
+constexpr int usage_error_exit_code = static_cast<int>(ExitCode::bad_input);
+
+void add_case_arguments(CLI::App& command, CommandLine& result) {
+  command.add_option("case", result.case_path, "Case file (TOML)")->required()->type_name("CASE.toml");
+  command.add_option("--set", result.overrides, "Override a case key, e.g. --set time.dt_s=0.01 (repeatable)")
+      ->type_name("KEY=VALUE")
+      ->allow_extra_args(false);
+}
+
+void add_threads_option(CLI::App& command, CommandLine& result) {
+  command.add_option("--threads", result.threads, "Host threads (default: OMP_NUM_THREADS)")
+      ->check(CLI::Range(1, 65536));
+}
+
+// A message on one line (an InputError names keys that may hold control characters).
+std::string single_line(std::string text) {
+  std::replace_if(text.begin(), text.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+  return text;
+}
+
+}  // namespace
+
+CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+  CommandLine result;
+  CLI::App app("rouleau: immersed finite-element simulation of red blood cells in plasma", "rouleau");
+  app.set_version_flag("--version", std::string("rouleau ") + ROULEAU_VERSION + " (" + ROULEAU_GIT_HASH + ")");
+  app.require_subcommand(1);
+
+  CLI::App* run = app.add_subcommand("run", "Run a case: validate it, then simulate and write outputs");
+  add_case_arguments(*run, result);
+  run->add_option("--out", result.output_dir, "Output folder")->type_name("DIR")->capture_default_str();
+  add_threads_option(*run, result);
+  run->add_flag("--explain", result.explain, "Print the stages with the reason for each skip, then stop");
+  bool no_progress = false;
+  run->add_flag("--no-progress", no_progress, "Do not show the progress line");
+
+  CLI::App* check = app.add_subcommand("check", "Validate a case and print its summary (no simulation)");
+  add_case_arguments(*check, result);
+
+  CLI::App* info = app.add_subcommand("info", "Print versions and the Kokkos configuration");
+  add_threads_option(*info, result);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    result.command = Command::finished;
+    const int cli_exit_code = app.exit(error, out, err);
+    result.exit_code = cli_exit_code == 0 ? 0 : usage_error_exit_code;
+    return result;
+  }
+  result.progress = !no_progress;
+  result.command = run->parsed() ? Command::run : check->parsed() ? Command::check : Command::info;
+  return result;
+}
+
+std::string case_summary(const CaseConfig& config, const DerivedQuantities& derived) {
+  const DomainConfig& domain = config.domain;
+  const auto& n = domain.elements;
+  const long long element_count = static_cast<long long>(n[0]) * n[1] * n[2];
+  char text[512];
+  std::snprintf(text, sizeof(text),
+                "case      %s\n"
+                "mesh      %d x %d x %d hexahedra (%lld elements), %g x %g x %g μm\n"
+                "scales    L = %g μm, U = %g μm/s, pressure %g Pa\n"
+                "Re        %.3g\n"
+                "Stokes    %s: %s\n",
+                config.name.c_str(), n[0], n[1], n[2], element_count, domain.upper[0] - domain.lower[0],
+                domain.upper[1] - domain.lower[1], domain.upper[2] - domain.lower[2], derived.length_scale,
+                derived.velocity_scale, derived.pressure_scale, derived.reynolds, derived.stokes ? "yes" : "no",
+                derived.stokes_reason.c_str());
+  return text;
+}
+
+int check_case(const CommandLine& command_line, std::ostream& out) {
+  const CaseConfig config = load_case(command_line.case_path, command_line.overrides);
+  out << case_summary(config, derive_quantities(config)) << "ok: " << command_line.case_path << " is a valid case\n";
+  return static_cast<int>(ExitCode::done);
+}
+
+std::string kokkos_threads_flag(int threads, int kokkos_version) {
+  return (kokkos_version < 40000 ? "--kokkos-threads=" : "--kokkos-num-threads=") + std::to_string(threads);
+}
+
+std::string format_info_lines(const std::vector<std::pair<std::string, std::string>>& lines) {
+  std::size_t width = 0;
+  for (const auto& line : lines) width = std::max(width, line.first.size());
+  std::string text;
+  for (const auto& [name, value] : lines) text += name + ":" + std::string(width + 2 - name.size(), ' ') + value + "\n";
+  return text;
+}
+
+int run_reporting_errors(const std::function<int()>& command, std::ostream& err) {
+  try {
+    return command();
+  } catch (const InputError& error) {
+    err << "rouleau: " << single_line(error.what()) << std::endl;
+    return static_cast<int>(ExitCode::bad_input);
+  } catch (const DivergenceError& error) {
+    err << "rouleau: " << error.what() << std::endl;
+    return static_cast<int>(ExitCode::diverged);
+  } catch (const std::exception& error) {
+    err << "rouleau: internal error: " << single_line(error.what()) << std::endl;
+    return static_cast<int>(ExitCode::internal_error);
+  }
+}
+
+}  // namespace rouleau

@@ -1,0 +1,60 @@
+#pragma once
+// The `rouleau` command line: parsing argv into a plain struct, the `check` and `info`
+// subcommands, and turning exceptions into one line on stderr and an exit code.
+// Host-only: includes no Kokkos header (src/app/main.cpp starts Kokkos).
+#include <functional>
+#include <iosfwd>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "config/case_config.hpp"
+
+namespace rouleau {
+
+enum class Command {
+  run,       // rouleau run CASE.toml ...
+  check,     // rouleau check CASE.toml ...: validate only, no Kokkos
+  info,      // rouleau info: versions and the Kokkos configuration
+  finished,  // --help, --version or a usage error was handled; exit with exit_code
+};
+
+// What the command line asked for.
+struct CommandLine {
+  Command command = Command::finished;
+  int exit_code = 0;                   // for Command::finished
+  std::string case_path;               // run, check
+  std::vector<std::string> overrides;  // --set key=value, in order
+  std::string output_dir = "out";      // run --out
+  int threads = 0;                     // run/info --threads; 0 = leave it to OMP_NUM_THREADS
+  bool explain = false;                // run --explain
+  bool progress = true;                // run --no-progress clears it
+};
+
+// Parses argv (argv[0] is the program name) without touching Kokkos. --help and --version
+// print to `out`; usage errors print CLI11's message to `err`. Both give
+// Command::finished with exit_code 0 (help, version) or 2 (usage error).
+CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& out, std::ostream& err);
+
+// `rouleau check`: loads and validates the case with its overrides, derives its scales
+// and prints a short summary (name, mesh, Re, Stokes) to `out`. Throws InputError.
+int check_case(const CommandLine& command_line, std::ostream& out);
+
+// The summary `check` prints: name, mesh size, scales, Re and the Stokes decision.
+std::string case_summary(const CaseConfig& config, const DerivedQuantities& derived);
+
+// The Kokkos command-line flag that sets the thread count: --kokkos-threads=N before
+// Kokkos 4 (kokkos_version < 40000, as KOKKOS_VERSION), --kokkos-num-threads=N after.
+std::string kokkos_threads_flag(int threads, int kokkos_version);
+
+// "name: value" lines with the values aligned, for `rouleau info`.
+std::string format_info_lines(const std::vector<std::pair<std::string, std::string>>& lines);
+
+// Runs `command` and maps what it throws to an exit code, writing one line to `err`:
+//   InputError       -> "rouleau: FILE: KEY: REASON", 2
+//   DivergenceError  -> "rouleau: MESSAGE", 3
+//   std::exception   -> "rouleau: internal error: MESSAGE", 1
+// Returns command()'s result when it throws nothing.
+int run_reporting_errors(const std::function<int()>& command, std::ostream& err);
+
+}  // namespace rouleau

@@ -1,0 +1,287 @@
+// The `rouleau` command line: argv parsing in process, the real executable's exit codes
+// and stderr, and the progress line's rate limiting with an injected clock.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cli/cli.hpp"
+#include "cli/progress.hpp"
+#include "rouleau_version.hpp"
+#include "util/errors.hpp"
+
+namespace {
+
+const std::string data_dir = ROULEAU_TEST_DATA_DIR;
+const std::string good_case = data_dir + "/good_case.toml";
+
+rouleau::CommandLine parse(std::vector<const char*> arguments, std::string* out_text = nullptr,
+                           std::string* err_text = nullptr) {
+  arguments.insert(arguments.begin(), "rouleau");
+  std::ostringstream out, err;
+  const auto result = rouleau::parse_command_line(static_cast<int>(arguments.size()), arguments.data(), out, err);
+  if (out_text) *out_text = out.str();
+  if (err_text) *err_text = err.str();
+  return result;
+}
+
+TEST(CliParse, RunWithEveryOption) {
+  const auto command_line = parse({"run", "case.toml", "--out", "results", "--set", "time.dt_s=0.1", "--set",
+                                   "case.name=x", "--threads", "3", "--explain", "--no-progress"});
+  EXPECT_EQ(command_line.command, rouleau::Command::run);
+  EXPECT_EQ(command_line.case_path, "case.toml");
+  EXPECT_EQ(command_line.output_dir, "results");
+  EXPECT_EQ(command_line.overrides, (std::vector<std::string>{"time.dt_s=0.1", "case.name=x"}));
+  EXPECT_EQ(command_line.threads, 3);
+  EXPECT_TRUE(command_line.explain);
+  EXPECT_FALSE(command_line.progress);
+}
+
+TEST(CliParse, RunDefaults) {
+  const auto command_line = parse({"run", "case.toml"});
+  EXPECT_EQ(command_line.command, rouleau::Command::run);
+  EXPECT_EQ(command_line.output_dir, "out");
+  EXPECT_EQ(command_line.threads, 0);
+  EXPECT_TRUE(command_line.overrides.empty());
+  EXPECT_FALSE(command_line.explain);
+  EXPECT_TRUE(command_line.progress);
+}
+
+TEST(CliParse, CheckAndInfo) {
+  const auto check = parse({"check", "case.toml", "--set", "a.b=1"});
+  EXPECT_EQ(check.command, rouleau::Command::check);
+  EXPECT_EQ(check.overrides, std::vector<std::string>{"a.b=1"});
+  const auto info = parse({"info", "--threads", "2"});
+  EXPECT_EQ(info.command, rouleau::Command::info);
+  EXPECT_EQ(info.threads, 2);
+}
+
+TEST(CliParse, UsageErrorsFinishWithExitCode2) {
+  const std::vector<std::vector<const char*>> usage_errors{
+      {},                                       // no subcommand
+      {"frobnicate"},                           // unknown subcommand
+      {"run"},                                  // no case file
+      {"check", "case.toml", "--bogus"},        // unknown option
+      {"run", "case.toml", "--threads", "0"},   // out of range
+      {"run", "case.toml", "--threads", "two"}, // not a number
+      {"check", "case.toml", "--explain"},      // an option of another subcommand
+  };
+  for (const auto& arguments : usage_errors) {
+    std::string err;
+    const auto command_line = parse(arguments, nullptr, &err);
+    EXPECT_EQ(command_line.command, rouleau::Command::finished);
+    EXPECT_EQ(command_line.exit_code, 2);
+    EXPECT_FALSE(err.empty());
+  }
+}
+
+TEST(CliParse, HelpAndVersionFinishWithExitCode0) {
+  for (const auto& arguments : std::vector<std::vector<const char*>>{
+           {"--help"}, {"run", "--help"}, {"check", "--help"}, {"info", "--help"}}) {
+    std::string out;
+    const auto command_line = parse(arguments, &out);
+    EXPECT_EQ(command_line.command, rouleau::Command::finished);
+    EXPECT_EQ(command_line.exit_code, 0);
+    EXPECT_NE(out.find("Usage"), std::string::npos) << out;
+  }
+  std::string out;
+  EXPECT_EQ(parse({"--version"}, &out).exit_code, 0);
+  EXPECT_NE(out.find(ROULEAU_VERSION), std::string::npos);
+}
+
+TEST(CliParse, KokkosThreadsFlagDependsOnTheKokkosVersion) {
+  EXPECT_EQ(rouleau::kokkos_threads_flag(4, 30401), "--kokkos-threads=4");
+  EXPECT_EQ(rouleau::kokkos_threads_flag(4, 40600), "--kokkos-num-threads=4");
+}
+
+TEST(CliErrors, ExceptionsBecomeOneLineAndAnExitCode) {
+  std::ostringstream err;
+  EXPECT_EQ(rouleau::run_reporting_errors([] { return 0; }, err), 0);
+  EXPECT_EQ(err.str(), "");
+  EXPECT_EQ(rouleau::run_reporting_errors([]() -> int { throw rouleau::InputError("c.toml", "a.b", "bad\nthing"); }, err), 2);
+  EXPECT_EQ(err.str(), "rouleau: c.toml: a.b: bad thing\n");
+  err.str("");
+  EXPECT_EQ(rouleau::run_reporting_errors([]() -> int { throw rouleau::DivergenceError("step 3: NaN"); }, err), 3);
+  EXPECT_EQ(err.str(), "rouleau: step 3: NaN\n");
+  err.str("");
+  EXPECT_EQ(rouleau::run_reporting_errors([]() -> int { throw std::logic_error("oops"); }, err), 1);
+  EXPECT_EQ(err.str(), "rouleau: internal error: oops\n");
+}
+
+TEST(CliInfo, LinesAreAligned) {
+  EXPECT_EQ(rouleau::format_info_lines({{"a", "1"}, {"long name", "2"}}), "a:          1\nlong name:  2\n");
+}
+
+// ---- the real executable
+
+struct Outcome {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+std::string file_contents(const std::string& path) {
+  std::ifstream file(path);
+  std::stringstream contents;
+  contents << file.rdbuf();
+  return contents.str();
+}
+
+// Runs `rouleau ARGUMENTS` with stdout and stderr captured separately.
+Outcome run_rouleau(const std::string& arguments) {
+  const auto folder = std::filesystem::temp_directory_path() / ("rouleau_test_cli_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder);
+  const std::string out_path = (folder / "stdout").string(), err_path = (folder / "stderr").string();
+  const std::string command =
+      std::string(ROULEAU_EXECUTABLE) + " " + arguments + " >'" + out_path + "' 2>'" + err_path + "'";
+  const int status = std::system(command.c_str());
+  Outcome outcome;
+  outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  outcome.out = file_contents(out_path);
+  outcome.err = file_contents(err_path);
+  return outcome;
+}
+
+std::size_t line_count(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
+
+std::string expected_key_of(const std::string& path) {
+  std::ifstream file(path);
+  std::string line;
+  while (std::getline(file, line))
+    if (line.rfind("# expect-key: ", 0) == 0) return line.substr(14);
+  return {};
+}
+
+TEST(CliExecutable, CheckGoodCasePrintsItsSummary) {
+  const Outcome outcome = run_rouleau("check '" + good_case + "'");
+  EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_NE(outcome.out.find("shear_box"), std::string::npos) << outcome.out;
+  EXPECT_NE(outcome.out.find("8 x 16 x 4"), std::string::npos) << outcome.out;
+  EXPECT_NE(outcome.out.find("Stokes    yes"), std::string::npos) << outcome.out;
+  EXPECT_EQ(outcome.err, "");
+}
+
+TEST(CliExecutable, CheckBadCasesExitWith2AndOneLineNamingTheKey) {
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(data_dir + "/bad_cases")) {
+    const std::string path = entry.path().string();
+    SCOPED_TRACE(path);
+    const Outcome outcome = run_rouleau("check '" + path + "'");
+    EXPECT_EQ(outcome.exit_code, 2);
+    EXPECT_EQ(line_count(outcome.err), 1u) << outcome.err;
+    EXPECT_EQ(outcome.err.rfind("rouleau: " + path + ": " + expected_key_of(path), 0), 0u) << outcome.err;
+    ++files;
+  }
+  EXPECT_GE(files, 25);
+}
+
+TEST(CliExecutable, BadOverrideNamesTheSetOption) {
+  const Outcome outcome = run_rouleau("check '" + good_case + "' --set fluid.viscosity_Pa_s=-1");
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_EQ(outcome.err, "rouleau: --set: fluid.viscosity_Pa_s: must be > 0, got -1\n");
+}
+
+TEST(CliExecutable, RunOnBadCaseStopsBeforeAnyWork) {
+  const auto output_dir = std::filesystem::temp_directory_path() / ("rouleau_test_cli_out_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(output_dir);
+  const std::string path = data_dir + "/bad_cases/negative_viscosity.toml";
+  const Outcome outcome = run_rouleau("run '" + path + "' --out '" + output_dir.string() + "' --threads 2");
+  EXPECT_EQ(outcome.exit_code, 2);
+  // one line: Kokkos was not even started (it would warn or print on start-up)
+  EXPECT_EQ(outcome.err, "rouleau: " + path + ": fluid.viscosity_Pa_s: must be > 0, got -1\n");
+  EXPECT_FALSE(std::filesystem::exists(output_dir));
+}
+
+TEST(CliExecutable, UsageErrorsExitWith2) {
+  for (const std::string& arguments : std::vector<std::string>{"", "frobnicate", "check",
+                                                              "check '" + good_case + "' --bogus",
+                                                              "run '" + good_case + "' --threads 0"}) {
+    SCOPED_TRACE(arguments);
+    const Outcome outcome = run_rouleau(arguments);
+    EXPECT_EQ(outcome.exit_code, 2);
+    EXPECT_FALSE(outcome.err.empty());
+  }
+}
+
+TEST(CliExecutable, InfoReportsVersionsAndTheOpenMPBackend) {
+  const Outcome outcome = run_rouleau("info --threads 3");
+  EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+  for (const char* expected : {"rouleau:", ROULEAU_VERSION, "toml++:", "CLI11:", "spdlog:", "Eigen:", "HDF5:",
+                               "kokkos:", "OpenMP", "host threads:             3"})
+    EXPECT_NE(outcome.out.find(expected), std::string::npos) << expected << " not in\n" << outcome.out;
+}
+
+TEST(CliExecutable, HelpOnEverySubcommandAndVersion) {
+  for (const std::string arguments : {"--help", "run --help", "check --help", "info --help", "--version"}) {
+    SCOPED_TRACE(arguments);
+    const Outcome outcome = run_rouleau(arguments);
+    EXPECT_EQ(outcome.exit_code, 0);
+    EXPECT_FALSE(outcome.out.empty());
+  }
+}
+
+// ---- the progress line
+
+struct FakeClock {
+  double now_s = 0.0;
+  rouleau::ProgressReporter::Settings settings(double terminal_interval_s, double log_interval_s) {
+    rouleau::ProgressReporter::Settings settings;
+    settings.terminal_interval_s = terminal_interval_s;
+    settings.log_interval_s = log_interval_s;
+    settings.clock = [this] { return now_s; };
+    return settings;
+  }
+};
+
+TEST(ProgressReporter, LineShowsStepTimeSpeedIterationsAndEta) {
+  FakeClock clock;
+  std::ostringstream out;
+  rouleau::ProgressReporter progress(100, 1.0, false, out, clock.settings(0.1, 5.0));
+  clock.now_s = 10.0;
+  EXPECT_EQ(progress.line(50, 0.5, 3, 45), "step 50/100  t = 0.5/1 s  5 steps/s  Newton 3  GMRES 45  ETA 10s");
+}
+
+TEST(ProgressReporter, LogPrintsAFullLineAtMostEveryInterval) {
+  FakeClock clock;
+  std::ostringstream out;
+  rouleau::ProgressReporter progress(100, 1.0, false, out, clock.settings(0.1, 5.0));
+  for (int step = 1; step <= 100; ++step) {
+    clock.now_s = 0.25 * step;  // 25 s in all
+    progress.update(step, 0.01 * step, 2, 10);
+  }
+  // shown at 0.25, 5.25, 10.25, 15.25 and 20.25 s; step 100 (at 25 s) waits for finish()
+  EXPECT_EQ(line_count(out.str()), 5u) << out.str();
+  EXPECT_EQ(out.str().find('\r'), std::string::npos);
+  progress.finish();  // the last state had not been shown
+  EXPECT_EQ(line_count(out.str()), 6u);
+  EXPECT_NE(out.str().find("step 100/100"), std::string::npos) << out.str();
+  progress.finish();
+  EXPECT_EQ(line_count(out.str()), 6u);
+}
+
+TEST(ProgressReporter, TerminalRedrawsOneLineAtMostTenTimesASecond) {
+  FakeClock clock;
+  std::ostringstream out;
+  rouleau::ProgressReporter progress(1000, 1.0, true, out, clock.settings(0.1, 5.0));
+  for (int step = 1; step <= 1000; ++step) {
+    clock.now_s = 0.001 * step;  // 1 s in all
+    progress.update(step, 0.001 * step, 1, 5);
+  }
+  const std::string text = out.str();
+  const auto redraws = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\r'));
+  EXPECT_GE(redraws, 9u);
+  EXPECT_LE(redraws, 11u);
+  EXPECT_EQ(text.find('\n'), std::string::npos);
+  EXPECT_EQ(text.rfind("\r\033[K", 0), 0u);
+  progress.finish();
+  EXPECT_EQ(out.str().back(), '\n');
+  EXPECT_NE(out.str().find("step 1000/1000"), std::string::npos);
+}
+
+}  // namespace

@@ -2,6 +2,7 @@
 // first, then starts Kokkos (only for `run` and `info`) and calls the library.
 #include <Kokkos_Core.hpp>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 

@@ -1,6 +1,7 @@
 #include "config/load_case.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -426,7 +427,6 @@ std::vector<std::string_view> boundary_keys_of(BoundaryType type) {
 void read_boundaries(const TableReader& root, DomainConfig& domain) {
   const TableReader boundaries =
       root.table("boundary", std::vector<std::string_view>(side_names.begin(), side_names.end()));
-  std::array<std::optional<TableReader>, 6> sides;
   for (int side = 0; side < 6; ++side) {
     const TableReader reader = boundaries.table(
         side_names[side], {"type", "velocity_um_s", "mean_speed_um_s", "profile", "pressure_Pa"});
@@ -453,7 +453,6 @@ void read_boundaries(const TableReader& root, DomainConfig& domain) {
     assign(boundary.profile,
            reader.choice("profile", choices_of({InflowProfile::uniform, InflowProfile::parabolic})));
     assign(boundary.pressure, reader.number("pressure_Pa"));
-    sides[side].emplace(reader);
   }
   for (int axis = 0; axis < 3; ++axis) {
     const int low = 2 * axis, high = 2 * axis + 1;
@@ -461,7 +460,7 @@ void read_boundaries(const TableReader& root, DomainConfig& domain) {
     const bool high_periodic = domain.boundary[high].type == BoundaryType::periodic;
     if (low_periodic != high_periodic) {
       const int lonely = low_periodic ? high : low, partner = low_periodic ? low : high;
-      sides[lonely]->fail("type", std::string("must be \"periodic\" because boundary.") + side_names[partner] +
+      boundaries.fail(std::string(side_names[lonely]) + ".type", std::string("must be \"periodic\" because boundary.") + side_names[partner] +
                                       " is periodic (periodic sides come in pairs)");
     }
     if (low_periodic && domain.elements[axis] < 2)

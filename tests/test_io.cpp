@@ -391,7 +391,7 @@ struct StepFields {
 
 // ---------------------------------------------------------------- provenance
 
-TEST(Provenance, HoldsBuildFactsAndCallerExtras) {
+TEST(IoProvenance, HoldsBuildFactsAndCallerExtras) {
   const Provenance provenance = build_provenance({{"threads", "4"}, {"case", "shear"}, {"host_name", "override"}});
   for (const char* key : {"rouleau_version", "git_hash", "kokkos_version", "kokkoskernels_version", "hdf5_version",
                           "created_utc", "host_name", "threads", "case"})
@@ -409,7 +409,7 @@ TEST(Provenance, HoldsBuildFactsAndCallerExtras) {
   for (const auto& entry : provenance.attributes) EXPECT_TRUE(keys.insert(entry.first).second) << entry.first;
 }
 
-TEST(Provenance, MeshHashIsStableAndSeesEveryBit) {
+TEST(IoProvenance, MeshHashIsStableAndSeesEveryBit) {
   const MeshDescription mesh = tet_mesh_cube();
   const auto hash_of = [](const MeshDescription& m) {
     return hash_mesh(m.coordinates.data(), m.coordinates.size(), m.connectivity.data(), m.connectivity.size());
@@ -443,6 +443,14 @@ TEST_F(IoTest, HexAndTetSeriesReadsBackExactlyAndXdmfReferencesResolve) {
   const Provenance provenance = build_provenance({{"case", "test <io> & \"quotes\""}, {"threads", "2"}});
   XdmfTimeSeries series(directory_.string(), "run", {fluid, cells}, provenance);
   EXPECT_EQ(series.xdmf_path(), path("run.xdmf"));
+  {  // before any step: the two bare meshes side by side
+    const XmlElement xdmf = parse_xdmf(series.xdmf_path());
+    const auto grids = xdmf.children_named("Domain").at(0)->children_named("Grid");
+    ASSERT_EQ(grids.size(), 1u);
+    EXPECT_EQ(grids[0]->attribute("CollectionType"), "Spatial");
+    EXPECT_EQ(grids[0]->children_named("Grid").size(), 2u);
+    EXPECT_EQ(check_hdf5_references(xdmf, directory_), std::set<std::string>{"run_mesh.h5"});
+  }
 
   const std::vector<double> times{0.0, 0.1, 1.0 / 3.0};
   std::vector<std::unique_ptr<StepFields>> written;
@@ -544,8 +552,17 @@ TEST_F(IoTest, HexAndTetSeriesReadsBackExactlyAndXdmfReferencesResolve) {
 TEST_F(IoTest, SingleMeshSeriesIsAUniformGridPerStep) {
   const MeshDescription fluid = hex_mesh_2x2x2();
   XdmfTimeSeries series(directory_.string(), "fluid_only", {fluid}, build_provenance());
-  // Before any step: a valid document with an empty collection.
-  EXPECT_TRUE(temporal_collection(parse_xdmf(series.xdmf_path())).children.empty());
+  // Before any step: the bare mesh, without time or fields (ParaView crashes on an empty
+  // temporal collection).
+  {
+    const XmlElement xdmf = parse_xdmf(series.xdmf_path());
+    const auto grids = xdmf.children_named("Domain").at(0)->children_named("Grid");
+    ASSERT_EQ(grids.size(), 1u);
+    EXPECT_EQ(grids[0]->attribute("GridType"), "Uniform");
+    EXPECT_TRUE(grids[0]->children_named("Time").empty());
+    EXPECT_TRUE(grids[0]->children_named("Attribute").empty());
+    EXPECT_EQ(check_hdf5_references(xdmf, directory_), std::set<std::string>{"fluid_only_mesh.h5"});
+  }
   const std::vector<double> pressure = sample_values(27, 0.0);
   for (int step : {0, 10})
     series.write_step(step, 0.5 * step, {{{"pressure", 1, pressure.data()}}}, {});

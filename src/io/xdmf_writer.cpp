@@ -314,32 +314,33 @@ void XdmfTimeSeries::write_step(int step, double time, const std::vector<std::ve
   write_file_atomically(xdmf_path(), xdmf_text());
 }
 
-void XdmfTimeSeries::append_uniform_grid(std::string& xml, std::size_t mesh_index, const StepRecord& step,
+void XdmfTimeSeries::append_uniform_grid(std::string& xml, std::size_t mesh_index, const StepRecord* step,
                                          const std::string& indent) const {
   const MeshLayout& mesh = meshes_[mesh_index];
-  const MeshStepRecord& mesh_step = step.meshes[mesh_index];
+  const bool moved = step != nullptr && step->meshes[mesh_index].moved;
   const std::string mesh_file = basename_ + "_mesh.h5";
-  const std::string step_file = file_name_of_step(step.step);
+  const std::string step_file = step != nullptr ? file_name_of_step(step->step) : std::string();
   const std::string group = "/" + mesh.name;
   const std::string inner = indent + "  ";
   xml += indent + "<Grid Name=\"" + mesh.name + "\" GridType=\"Uniform\">\n";
-  if (meshes_.size() == 1) xml += inner + "<Time Value=\"" + exact_decimal(step.time) + "\"/>\n";
+  if (step != nullptr && meshes_.size() == 1) xml += inner + "<Time Value=\"" + exact_decimal(step->time) + "\"/>\n";
   xml += inner + "<Topology TopologyType=\"" + xdmf_topology_type(mesh.cell_type) + "\" NumberOfElements=\"" +
          std::to_string(mesh.cell_count) + "\">\n";
   xml += data_item(inner + "  ", mesh.cell_count, nodes_per_cell(mesh.cell_type), true, mesh_file,
                    group + "/connectivity");
   xml += inner + "</Topology>\n";
   xml += inner + "<Geometry GeometryType=\"XYZ\">\n";
-  xml += data_item(inner + "  ", mesh.node_count, 3, false, mesh_step.moved ? step_file : mesh_file,
-                   group + "/coordinates");
+  xml += data_item(inner + "  ", mesh.node_count, 3, false, moved ? step_file : mesh_file, group + "/coordinates");
   xml += inner + "</Geometry>\n";
-  for (const FieldRecord& field : mesh_step.fields) {
-    xml += inner + "<Attribute Name=\"" + field.name + "\" AttributeType=\"" +
-           (field.components == 1 ? "Scalar" : "Vector") + "\" Center=\"" +
-           (field.center == Center::node ? "Node" : "Cell") + "\">\n";
-    xml += data_item(inner + "  ", field.center == Center::node ? mesh.node_count : mesh.cell_count,
-                     field.components, false, step_file, group + "/" + field.name);
-    xml += inner + "</Attribute>\n";
+  if (step != nullptr) {
+    for (const FieldRecord& field : step->meshes[mesh_index].fields) {
+      xml += inner + "<Attribute Name=\"" + field.name + "\" AttributeType=\"" +
+             (field.components == 1 ? "Scalar" : "Vector") + "\" Center=\"" +
+             (field.center == Center::node ? "Node" : "Cell") + "\">\n";
+      xml += data_item(inner + "  ", field.center == Center::node ? mesh.node_count : mesh.cell_count,
+                       field.components, false, step_file, group + "/" + field.name);
+      xml += inner + "</Attribute>\n";
+    }
   }
   xml += indent + "</Grid>\n";
 }
@@ -352,19 +353,26 @@ std::string XdmfTimeSeries::xdmf_text() const {
       "  <Domain>\n";
   for (const auto& [key, value] : provenance_.attributes)
     xml += "    <Information Name=\"" + xml_escaped(key) + "\" Value=\"" + xml_escaped(value) + "\"/>\n";
-  xml += "    <Grid Name=\"" + basename_ + "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  for (const StepRecord& step : steps_) {
+  // Several meshes at one instant form a spatial collection.
+  const auto append_instant = [&](const StepRecord* step, const std::string& indent) {
     if (meshes_.size() == 1) {
-      append_uniform_grid(xml, 0, step, "      ");
-      continue;
+      append_uniform_grid(xml, 0, step, indent);
+      return;
     }
-    xml += "      <Grid Name=\"step_" + std::to_string(step.step) +
+    xml += indent + "<Grid Name=\"" + (step ? "step_" + std::to_string(step->step) : basename_) +
            "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n";
-    xml += "        <Time Value=\"" + exact_decimal(step.time) + "\"/>\n";
-    for (std::size_t m = 0; m < meshes_.size(); ++m) append_uniform_grid(xml, m, step, "        ");
-    xml += "      </Grid>\n";
+    if (step != nullptr) xml += indent + "  <Time Value=\"" + exact_decimal(step->time) + "\"/>\n";
+    for (std::size_t m = 0; m < meshes_.size(); ++m) append_uniform_grid(xml, m, step, indent + "  ");
+    xml += indent + "</Grid>\n";
+  };
+  if (steps_.empty()) {
+    append_instant(nullptr, "    ");
+  } else {
+    xml += "    <Grid Name=\"" + basename_ + "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    for (const StepRecord& step : steps_) append_instant(&step, "      ");
+    xml += "    </Grid>\n";
   }
-  xml += "    </Grid>\n  </Domain>\n</Xdmf>\n";
+  xml += "  </Domain>\n</Xdmf>\n";
   return xml;
 }
 

@@ -53,7 +53,8 @@ struct FieldView {
 class XdmfTimeSeries {
  public:
   // Creates `directory` if missing, writes DIRECTORY/BASENAME_mesh.h5 with every mesh's
-  // static geometry and topology, and an .xdmf with no steps yet (replacing a stale one).
+  // static geometry and topology, and an .xdmf of the bare meshes (replacing a stale one;
+  // ParaView's readers crash on an empty temporal collection, so it starts with the first step).
   // Throws std::invalid_argument for a bad name, an empty mesh, an array size that is not a
   // multiple of 3 (nodes_per_cell), or a node index out of range; std::runtime_error naming
   // the file and dataset when HDF5 fails.
@@ -106,7 +107,9 @@ class XdmfTimeSeries {
 
   std::string file_name_of_step(int step) const;
   std::string xdmf_text() const;
-  void append_uniform_grid(std::string& xml, std::size_t mesh_index, const StepRecord& step,
+  // One mesh's <Grid>: at `step` (with its Time when there is one mesh, and its fields), or
+  // the static mesh alone when `step` is null.
+  void append_uniform_grid(std::string& xml, std::size_t mesh_index, const StepRecord* step,
                            const std::string& indent) const;
 
   std::string directory_;

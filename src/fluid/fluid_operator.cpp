@@ -81,7 +81,8 @@ void FluidOperator::finish_rows(const ConstVector& state, const ConstVector& dir
       });
 }
 
-void FluidOperator::residual(const ConstVector& state, const ConstVector& frozen, const Vector& result) const {
+void FluidOperator::residual(const ConstVector& state, const ConstVector& frozen, const Vector& result,
+                             bool constrained_rows) const {
   ProfilingRegion region("rouleau::FluidOperator::residual");
   Kokkos::deep_copy(result, 0.0);
   ScatterVector scatter(result);
@@ -94,7 +95,7 @@ void FluidOperator::residual(const ConstVector& state, const ConstVector& frozen
         "rouleau::FluidOperator::nodal_load", Kokkos::RangePolicy<ExecSpace>(0, num_unknowns_),
         KOKKOS_LAMBDA(const int i) { result(i) -= load(i); });
   }
-  finish_rows(state, state, true, result);
+  if (constrained_rows) finish_rows(state, state, true, result);
 }
 
 void FluidOperator::jacobian_action(const ConstVector& state, const ConstVector& direction,

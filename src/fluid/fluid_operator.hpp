@@ -47,7 +47,10 @@ class FluidOperator {
   }
 
   // R(U) with τ_M, ν_L computed from `frozen` (pass `state` for the usual residual).
-  void residual(const ConstVector& state, const ConstVector& frozen, const Vector& result) const;
+  // `constrained_rows = false` leaves the element sums in the Dirichlet rows (the nodal
+  // reaction forces there) instead of U_d − g_d.
+  void residual(const ConstVector& state, const ConstVector& frozen, const Vector& result,
+                bool constrained_rows = true) const;
   void jacobian_action(const ConstVector& state, const ConstVector& direction, const Vector& result) const;
   void linear_action(const ConstVector& direction, const Vector& result) const;
   // blocks(16·node + 4i + j) = ∂R_(node,i)/∂U_(node,j)

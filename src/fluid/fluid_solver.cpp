@@ -6,7 +6,10 @@
 #include <cmath>
 #include <sstream>
 
+#include "kernels/hex8.hpp"
 #include "run/profiling_region.hpp"
+
+#include <algorithm>
 
 namespace rouleau {
 
@@ -79,6 +82,66 @@ void FluidSolver::set_uniform_body_force(const std::array<double, 3>& force_dens
   std::vector<double> field(3 * operator_.mesh().num_dof_nodes);
   for (size_t i = 0; i < field.size(); ++i) field[i] = force_density[i % 3];
   set_body_force(field);
+}
+
+void FluidSolver::prescribe_boundary_velocity(
+    const std::function<std::array<double, 3>(const std::array<double, 3>&)>& velocity) {
+  const FluidMesh& mesh = operator_.mesh();
+  auto coordinates = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
+  std::vector<int> node_of_dof_node(mesh.num_dof_nodes, -1);
+  for (int n = 0; n < mesh.num_nodes; ++n)
+    if (node_of_dof_node[mesh.dof_node_of_node[n]] < 0) node_of_dof_node[mesh.dof_node_of_node[n]] = n;
+  for (size_t k = 0; k < boundary_.dirichlet_dofs.size(); ++k) {
+    const int dof = boundary_.dirichlet_dofs[k], component = dof % 4;
+    if (component == 3) continue;
+    const int node = node_of_dof_node[dof / 4];
+    const auto v = velocity({coordinates(node, 0), coordinates(node, 1), coordinates(node, 2)});
+    boundary_.dirichlet_values[k] = v[component] / scales_.velocity;
+  }
+  operator_.set_dirichlet(boundary_.dirichlet_dofs, boundary_.dirichlet_values);
+  operator_.impose_dirichlet(state_);
+}
+
+std::array<double, 3> FluidSolver::boundary_force(const std::string& side) const {
+  const FluidMesh& mesh = operator_.mesh();
+  operator_.residual(state_, state_, residual_, false);
+  auto r = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), residual_);
+  std::vector<int> dof_nodes;
+  for (int node : mesh.boundary(side).nodes) dof_nodes.push_back(mesh.dof_node_of_node[node]);
+  std::sort(dof_nodes.begin(), dof_nodes.end());
+  dof_nodes.erase(std::unique(dof_nodes.begin(), dof_nodes.end()), dof_nodes.end());
+  // R_a = ∫ ∇N_a : σ − ... = the force the wall exerts on the fluid at node a; the fluid
+  // pushes back with −R_a. Scaled force → pN: × P L².
+  std::array<double, 3> force{0.0, 0.0, 0.0};
+  for (int n : dof_nodes)
+    for (int d = 0; d < 3; ++d) force[d] -= r(4 * n + d) * scales_.force();
+  return force;
+}
+
+std::array<double, 3> FluidSolver::mean_velocity() const {
+  const auto geometry = operator_.geometry();
+  const auto dof_nodes = operator_.mesh().element_dof_nodes;
+  const auto state = state_;
+  double volume = 0.0, u[3] = {0.0, 0.0, 0.0};
+  Kokkos::parallel_reduce(
+      "rouleau::FluidSolver::mean_velocity", Kokkos::RangePolicy<ExecSpace>(0, operator_.mesh().num_elements),
+      KOKKOS_LAMBDA(const int e, double& v, double& ux, double& uy, double& uz) {
+        for (int q = 0; q < Hex8::quadrature_points; ++q) {
+          double xi[3];
+          Hex8::quadrature_point(q, xi);
+          const double dv = geometry(e, q, 9);
+          v += dv;
+          for (int a = 0; a < Hex8::nodes; ++a) {
+            const double w = Hex8::shape(a, xi) * dv;
+            const int n = dof_nodes(e, a);
+            ux += w * state(4 * n);
+            uy += w * state(4 * n + 1);
+            uz += w * state(4 * n + 2);
+          }
+        }
+      },
+      volume, u[0], u[1], u[2]);
+  return {u[0] / volume * scales_.velocity, u[1] / volume * scales_.velocity, u[2] / volume * scales_.velocity};
 }
 
 void FluidSolver::block_norms(const ConstVector& r, double& momentum, double& continuity) const {

@@ -6,6 +6,7 @@
 // In the Stokes limit the residual is affine: one Krylov solve per step.
 // Time stepping: backward Euler or BDF2 (BE on the first step), or a steady solve.
 #include <Kokkos_Core.hpp>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -43,6 +44,16 @@ class FluidSolver {
   // Constant body force density everywhere [pN/μm³].
   void set_uniform_body_force(const std::array<double, 3>& force_density);
 
+  // Replaces the prescribed velocity on every Dirichlet velocity unknown by
+  // velocity(x) [μm/s] at the node's position x [μm] (manufactured solutions, custom inflows).
+  void prescribe_boundary_velocity(const std::function<std::array<double, 3>(const std::array<double, 3>&)>& velocity);
+
+  // Force [pN] that the fluid exerts on the boundary `side` (a wall), from the consistent
+  // nodal reactions: the residual at the constrained nodes before the constraint rows.
+  std::array<double, 3> boundary_force(const std::string& side) const;
+  // Volume average of the velocity [μm/s].
+  std::array<double, 3> mean_velocity() const;
+
   double time() const { return time_; }
   const FluidOperator& fluid_operator() const { return operator_; }
   const FluidScales& scales() const { return scales_; }
@@ -61,7 +72,8 @@ class FluidSolver {
   SolverConfig settings_;
   bool stokes_;
   FluidBoundaryConditions boundary_;
-  Vector state_, previous_state_, older_state_, history_, body_force_, residual_, correction_, blocks_;
+  Vector state_, previous_state_, older_state_, history_, body_force_, correction_, blocks_;
+  Vector residual_;  // also scratch for boundary_force() (const)
   BlockJacobi block_jacobi_;
   IdentityPreconditioner identity_;
   Gmres gmres_;

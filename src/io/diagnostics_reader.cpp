@@ -1,0 +1,37 @@
+#include "io/diagnostics_reader.hpp"
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+namespace rouleau {
+
+namespace {
+std::vector<std::string> split_csv_line(const std::string& line) {
+  std::vector<std::string> cells;
+  std::stringstream s(line);
+  std::string cell;
+  while (std::getline(s, cell, ',')) cells.push_back(cell);
+  return cells;
+}
+}  // namespace
+
+std::map<std::string, double> read_last_diagnostics(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("rouleau::read_last_diagnostics: " + path + ": cannot open");
+  std::string header, line, last;
+  std::getline(in, header);
+  while (std::getline(in, line))
+    if (!line.empty()) last = line;
+  if (last.empty()) throw std::runtime_error("rouleau::read_last_diagnostics: " + path + ": no data row");
+  const auto names = split_csv_line(header), values = split_csv_line(last);
+  if (names.size() != values.size())
+    throw std::runtime_error("rouleau::read_last_diagnostics: " + path + ": row and header differ in length");
+  std::map<std::string, double> row;
+  for (size_t i = 0; i < names.size(); ++i) row[names[i]] = std::strtod(values[i].c_str(), nullptr);
+  return row;
+}
+
+}  // namespace rouleau

@@ -1,0 +1,48 @@
+#include "run/scene.hpp"
+
+#include <sstream>
+
+namespace rouleau {
+
+std::vector<Stage> plan_stages(const CaseConfig& config, const DerivedQuantities& derived) {
+  std::vector<Stage> stages;
+  std::ostringstream fluid;
+  fluid << (derived.stokes ? "Stokes limit: " : "Navier–Stokes: ") << derived.stokes_reason;
+  if (config.time.mode == TimeMode::steady)
+    fluid << "; steady solve";
+  else
+    fluid << "; " << (config.time.scheme == TimeScheme::bdf2 ? "BDF2" : "backward Euler") << " steps of "
+          << config.time.dt << " s to " << config.time.end << " s";
+  stages.push_back({"fluid", true, fluid.str()});
+  stages.push_back({"preconditioner", true,
+                    config.solver.preconditioner == PreconditionerType::block_jacobi
+                        ? std::string(derived.stokes ? "point-block Jacobi, built once (the Stokes operator is "
+                                                       "constant while dt is)"
+                                                     : "point-block Jacobi, rebuilt every Newton step")
+                        : std::string("none")});
+  const char* no_cells = "skipped: the scene has no cells";
+  stages.push_back({"neo-Hookean cell forces", false, no_cells});
+  stages.push_back({"Morse cell-cell forces", false, no_cells});
+  stages.push_back({"inertia/buoyancy", false, no_cells});
+  stages.push_back({"RKPM interpolate/spread", false, no_cells});
+  stages.push_back({"output", config.output.write_fields,
+                    config.output.write_fields ? "XDMF+HDF5 fields every " +
+                                                     std::to_string(config.output.fields_every_steps) +
+                                                     " steps, diagnostics.csv"
+                                               : "fields off (output.fields = false); diagnostics.csv only"});
+  return stages;
+}
+
+std::string describe_stages(const CaseConfig& config, const DerivedQuantities& derived,
+                            const std::vector<Stage>& stages) {
+  std::ostringstream out;
+  const auto& d = config.domain;
+  out << "case " << config.name << ": " << d.elements[0] << "x" << d.elements[1] << "x" << d.elements[2]
+      << " hexahedra; scales L = " << derived.length_scale << " um, U = " << derived.velocity_scale
+      << " um/s, P = " << derived.pressure_scale << " Pa; Re = " << derived.reynolds << "\n";
+  out << "stages:\n";
+  for (const Stage& s : stages) out << "  [" << (s.runs ? "run " : "skip") << "] " << s.name << ": " << s.reason << "\n";
+  return out.str();
+}
+
+}  // namespace rouleau

@@ -1,0 +1,194 @@
+// Physics validation of the fluid solver against exact solutions: Couette flow, plane
+// Poiseuille flow, and manufactured solutions of the Stokes and Navier–Stokes equations.
+// Each test prints the errors and convergence rates it measured.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "fluid/fluid_errors.hpp"
+#include "fluid/fluid_solver.hpp"
+
+namespace rouleau {
+namespace {
+
+// Unit scales (L = 1 μm, U = 1 μm/s, μ = 1 Pa·s, so P = 1 Pa): dimensional = scaled.
+FluidScales unit_scales(double reynolds) {
+  FluidScales s;
+  s.length = 1.0;
+  s.velocity = 1.0;
+  s.pressure = 1.0;
+  s.reynolds = reynolds;
+  return s;
+}
+
+FluidConfig unit_fluid(double reynolds) {
+  FluidConfig f;
+  f.viscosity = 1.0;
+  f.density = reynolds;
+  return f;
+}
+
+SolverConfig tight_solver() {
+  SolverConfig s;
+  s.newton_rtol = 1e-10;
+  s.newton_atol = 1e-12;
+  s.gmres_rtol = 1e-10;
+  s.gmres_restart = 100;
+  s.gmres_max_iterations = 20000;
+  return s;
+}
+
+// Observed order between meshes of n_coarse and n_fine elements per direction.
+double rate(double coarse_error, double fine_error, int n_coarse, int n_fine) {
+  return std::log(coarse_error / fine_error) / std::log(double(n_fine) / n_coarse);
+}
+
+// u = (y, 0, 0) between a wall at rest (y = 0) and one moving at U = 1 (y = 1).
+struct CouetteExact {
+  KOKKOS_INLINE_FUNCTION void operator()(const double x[3], double u[3], double& p) const {
+    u[0] = x[1];
+    u[1] = u[2] = 0.0;
+    p = 0.0;
+  }
+};
+
+TEST(FluidFlows, CouetteFlowIsLinearToSolverTolerance) {
+  // Navier–Stokes (Re = 10, convection on): the linear profile is exact for trilinear elements.
+  const FluidMesh mesh = make_box_mesh({0, 0, 0}, {2, 1, 1}, {4, 6, 2}, {1, 1.5, 1}, {true, false, true});
+  std::array<BoundaryConfig, 6> sides{};
+  sides[Side::x_min].type = sides[Side::x_max].type = BoundaryType::periodic;
+  sides[Side::z_min].type = sides[Side::z_max].type = BoundaryType::periodic;
+  sides[Side::y_max].velocity = {1.0, 0.0, 0.0};
+  FluidSolver solver(mesh, unit_fluid(10.0), sides, tight_solver(), unit_scales(10.0), false);
+  const FluidSolveReport report = solver.solve_steady();
+  ASSERT_TRUE(report.converged) << report.failure;
+  const FluidErrors e = fluid_l2_errors(solver.fluid_operator(), solver.state(), CouetteExact{});
+  std::printf("Couette (graded, Re = 10): L2 velocity error %.2e (relative %.2e), %d Newton, %d GMRES\n", e.velocity,
+              e.velocity / e.velocity_norm, report.newton_iterations, report.gmres_iterations);
+  EXPECT_LT(e.velocity / e.velocity_norm, 1e-8);
+  EXPECT_LT(e.pressure, 1e-8);
+}
+
+// Plane Poiseuille flow driven by a body force f_x = 8 μ U / H²: u = 4 U y (1 − y).
+struct PoiseuilleExact {
+  KOKKOS_INLINE_FUNCTION void operator()(const double x[3], double u[3], double& p) const {
+    u[0] = 4.0 * x[1] * (1.0 - x[1]);
+    u[1] = u[2] = 0.0;
+    p = 0.0;
+  }
+};
+
+TEST(FluidFlows, PoiseuilleFlowConvergesAtSecondOrder) {
+  std::array<BoundaryConfig, 6> sides{};
+  sides[Side::x_min].type = sides[Side::x_max].type = BoundaryType::periodic;
+  sides[Side::z_min].type = sides[Side::z_max].type = BoundaryType::periodic;
+  std::vector<double> errors;
+  const std::vector<int> sizes{4, 8, 16, 32};
+  for (int n : sizes) {
+    const FluidMesh mesh = make_box_mesh({0, 0, 0}, {1, 1, 0.5}, {2, n, 1}, {1, 1, 1}, {true, false, true});
+    FluidConfig fluid = unit_fluid(0.0);
+    fluid.body_force = {8.0, 0.0, 0.0};
+    FluidSolver solver(mesh, fluid, sides, tight_solver(), unit_scales(0.0), true);
+    const FluidSolveReport report = solver.solve_steady();
+    ASSERT_TRUE(report.converged) << report.failure;
+    const FluidErrors e = fluid_l2_errors(solver.fluid_operator(), solver.state(), PoiseuilleExact{});
+    errors.push_back(e.velocity / e.velocity_norm);
+    std::printf("Poiseuille ny = %2d: relative L2 velocity error %.3e%s", n, errors.back(),
+                errors.size() > 1 ? "" : "\n");
+    const size_t k = errors.size() - 1;
+    if (k > 0) std::printf(", rate %.2f\n", rate(errors[k - 1], errors[k], sizes[k - 1], sizes[k]));
+  }
+  EXPECT_NEAR(rate(errors[2], errors[3], sizes[2], sizes[3]), 2.0, 0.15);
+  EXPECT_LT(errors.back(), 1e-3);
+}
+
+// A divergence-free manufactured solution on the unit cube (k = π):
+//   u = (sin kx cos ky cos kz, cos kx sin ky cos kz, −2 cos kx cos ky sin kz),
+//   p = sin kx sin ky sin kz,
+// with the body force f = Re u·∇u − Δu + ∇p (Δu = −3k² u) that makes it exact.
+struct ManufacturedSolution {
+  double reynolds = 0.0;
+  static constexpr double k = 3.14159265358979323846;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const double x[3], double u[3], double& p) const {
+    const double sx = sin(k * x[0]), sy = sin(k * x[1]), sz = sin(k * x[2]);
+    const double cx = cos(k * x[0]), cy = cos(k * x[1]), cz = cos(k * x[2]);
+    u[0] = sx * cy * cz;
+    u[1] = cx * sy * cz;
+    u[2] = -2.0 * cx * cy * sz;
+    p = sx * sy * sz;
+  }
+  std::array<double, 3> force(const double x[3]) const {
+    const double sx = std::sin(k * x[0]), sy = std::sin(k * x[1]), sz = std::sin(k * x[2]);
+    const double cx = std::cos(k * x[0]), cy = std::cos(k * x[1]), cz = std::cos(k * x[2]);
+    double u[3], p;
+    (*this)(x, u, p);
+    // ∇u (row i: gradient of u_i)
+    const double g[3][3] = {{k * cx * cy * cz, -k * sx * sy * cz, -k * sx * cy * sz},
+                            {-k * sx * sy * cz, k * cx * cy * cz, -k * cx * sy * sz},
+                            {2 * k * sx * cy * sz, 2 * k * cx * sy * sz, -2 * k * cx * cy * cz}};
+    const double grad_p[3] = {k * cx * sy * sz, k * sx * cy * sz, k * sx * sy * cz};
+    std::array<double, 3> f;
+    for (int i = 0; i < 3; ++i)
+      f[i] = reynolds * (u[0] * g[i][0] + u[1] * g[i][1] + u[2] * g[i][2]) + 3.0 * k * k * u[i] + grad_p[i];
+    return f;
+  }
+};
+
+// Solves the manufactured problem on n³ elements; returns relative velocity and pressure errors.
+std::pair<double, double> manufactured_errors(int n, double reynolds, bool stokes, int& gmres_iterations) {
+  const FluidMesh mesh = make_box_mesh({0, 0, 0}, {1, 1, 1}, {n, n, n}, {1, 1, 1}, {false, false, false});
+  const ManufacturedSolution exact{reynolds};
+  FluidSolver solver(mesh, unit_fluid(reynolds), std::array<BoundaryConfig, 6>{}, tight_solver(),
+                     unit_scales(reynolds), stokes);
+  solver.prescribe_boundary_velocity([&](const std::array<double, 3>& x) {
+    double u[3], p;
+    exact(x.data(), u, p);
+    return std::array<double, 3>{u[0], u[1], u[2]};
+  });
+  auto coordinates = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
+  std::vector<double> force(3 * mesh.num_dof_nodes);
+  for (int node = 0; node < mesh.num_nodes; ++node) {
+    const double x[3] = {coordinates(node, 0), coordinates(node, 1), coordinates(node, 2)};
+    const auto f = exact.force(x);
+    for (int d = 0; d < 3; ++d) force[3 * mesh.dof_node_of_node[node] + d] = f[d];
+  }
+  solver.set_body_force(force);
+  const FluidSolveReport report = solver.solve_steady();
+  EXPECT_TRUE(report.converged) << report.failure;
+  gmres_iterations = report.gmres_iterations;
+  const FluidErrors e = fluid_l2_errors(solver.fluid_operator(), solver.state(), exact);
+  return {e.velocity / e.velocity_norm, e.pressure / e.pressure_norm};
+}
+
+void check_manufactured_convergence(const char* name, double reynolds, bool stokes) {
+  std::vector<std::pair<double, double>> errors;
+  const std::vector<int> sizes{8, 16, 24};
+  for (int n : sizes) {
+    int iterations = 0;
+    errors.push_back(manufactured_errors(n, reynolds, stokes, iterations));
+    std::printf("%s n = %2d: relative L2 error velocity %.3e, pressure %.3e (%d GMRES iterations)", name, n,
+                errors.back().first, errors.back().second, iterations);
+    const size_t k = errors.size() - 1;
+    if (k > 0)
+      std::printf(", rates %.2f, %.2f", rate(errors[k - 1].first, errors[k].first, sizes[k - 1], sizes[k]),
+                  rate(errors[k - 1].second, errors[k].second, sizes[k - 1], sizes[k]));
+    std::printf("\n");
+  }
+  const double velocity_rate = rate(errors[1].first, errors[2].first, sizes[1], sizes[2]);
+  const double pressure_rate = rate(errors[1].second, errors[2].second, sizes[1], sizes[2]);
+  EXPECT_GT(velocity_rate, 1.85) << name;
+  EXPECT_GT(pressure_rate, 1.5) << name;
+}
+
+TEST(FluidFlows, ManufacturedStokesSolutionConverges) {
+  check_manufactured_convergence("Stokes MMS", 0.0, true);
+}
+
+TEST(FluidFlows, ManufacturedNavierStokesSolutionConverges) {
+  check_manufactured_convergence("Navier-Stokes MMS (Re = 10)", 10.0, false);
+}
+
+}  // namespace
+}  // namespace rouleau

@@ -16,6 +16,7 @@
 #include "cli/progress.hpp"
 #include "rouleau_version.hpp"
 #include "util/errors.hpp"
+#include "run_rouleau.hpp"
 
 namespace {
 
@@ -120,33 +121,6 @@ TEST(CliInfo, LinesAreAligned) {
 }
 
 // ---- the real executable
-
-struct Outcome {
-  int exit_code = -1;
-  std::string out, err;
-};
-
-std::string file_contents(const std::string& path) {
-  std::ifstream file(path);
-  std::stringstream contents;
-  contents << file.rdbuf();
-  return contents.str();
-}
-
-// Runs `rouleau ARGUMENTS` with stdout and stderr captured separately.
-Outcome run_rouleau(const std::string& arguments) {
-  const auto folder = std::filesystem::temp_directory_path() / ("rouleau_test_cli_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(folder);
-  const std::string out_path = (folder / "stdout").string(), err_path = (folder / "stderr").string();
-  const std::string command =
-      std::string(ROULEAU_EXECUTABLE) + " " + arguments + " >'" + out_path + "' 2>'" + err_path + "'";
-  const int status = std::system(command.c_str());
-  Outcome outcome;
-  outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  outcome.out = file_contents(out_path);
-  outcome.err = file_contents(err_path);
-  return outcome;
-}
 
 std::size_t line_count(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
 

@@ -171,6 +171,7 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history) {
   report.initial_residual = norm;
   const double target = std::fmax(settings_.newton_atol, settings_.newton_rtol * norm);
   if (!std::isfinite(norm)) report.failure = "the residual is not finite";
+  double previous_norm = norm, previous_forcing = 0.1;
   while (report.failure.empty() && norm > target && report.newton_iterations < settings_.newton_max_iterations) {
     // Preconditioner from the Jacobian at the current state (constant in the Stokes limit).
     if (!linear || !preconditioner_current_) {
@@ -183,11 +184,24 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history) {
     const Preconditioner& M = settings_.preconditioner == PreconditionerType::block_jacobi
                                   ? static_cast<const Preconditioner&>(block_jacobi_)
                                   : identity_;
-    // J δ = −R
+    // J δ = −R, solved to the Eisenstat–Walker forcing term η_k (choice 2, γ = 0.9, α = 2):
+    // η_k = γ (‖R_k‖/‖R_{k−1}‖)², safeguarded by γ η_{k−1}² when that exceeds 0.1, capped at
+    // 0.1, and no tighter than needed to reach the Newton target. An affine (Stokes)
+    // residual gets the configured tolerance: its one solve is the answer.
+    double forcing = settings_.gmres_rtol;
+    if (!linear) {
+      forcing = report.newton_iterations == 0 ? 0.1 : 0.9 * (norm / previous_norm) * (norm / previous_norm);
+      const double safeguard = 0.9 * previous_forcing * previous_forcing;
+      if (report.newton_iterations > 0 && safeguard > 0.1) forcing = std::fmax(forcing, safeguard);
+      forcing = std::fmin(forcing, 0.1);
+      forcing = std::fmax(forcing, std::fmax(settings_.gmres_rtol, 0.5 * target / norm));
+      previous_forcing = forcing;
+    }
+    previous_norm = norm;
     KokkosBlas::axpby(-1.0, residual_, 0.0, residual_);
     Kokkos::deep_copy(correction_, 0.0);
     FluidJacobian J(operator_, state_, linear);
-    const GmresResult g = gmres_.solve(J, M, residual_, correction_);
+    const GmresResult g = gmres_.solve(J, M, residual_, correction_, forcing);
     report.gmres_iterations += g.iterations;
     ++report.newton_iterations;
     KokkosBlas::axpby(1.0, correction_, 1.0, state_);

@@ -117,7 +117,10 @@ struct FluidDiagnostics {
     for (int k = 0; k < 2; ++k) {
       const int side = Side::y_min + k;
       if (domain.boundary[side].type != BoundaryType::wall) continue;
-      shear[k] = solver.boundary_force(side_names[side])[0] / area;  // x-traction on the wall [Pa]
+      // τ_w = μ ∂u_x/∂y at the wall = −n_y F_x / A, with F the force the fluid exerts on the
+      // wall and n_y the fluid's outward normal: positive on both walls in simple shear.
+      const double outward_normal_y = k == 0 ? -1.0 : 1.0;
+      shear[k] = -outward_normal_y * solver.boundary_force(side_names[side])[0] / area;
     }
     // Simple shear between the y walls: γ̇ = (U_top − U_bottom)/H, τ_w = μ γ̇ for plasma alone.
     double relative_viscosity = NAN;

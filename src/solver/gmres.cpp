@@ -20,7 +20,7 @@ Gmres::Gmres(int n, const GmresSettings& settings)
       projection_("rouleau::Gmres::projection", settings.restart + 1) {}
 
 GmresResult Gmres::solve(const LinearOperator& A, const Preconditioner& M, const Kokkos::View<const double*>& b,
-                         const Kokkos::View<double*>& x) {
+                         const Kokkos::View<double*>& x, double relative_tolerance) {
   ProfilingRegion region("rouleau::Gmres::solve");
   const int m = settings_.restart;
   GmresResult result;
@@ -32,7 +32,8 @@ GmresResult Gmres::solve(const LinearOperator& A, const Preconditioner& M, const
   };
   double beta = residual_of(work_);
   result.initial_residual = beta;
-  const double target = std::fmax(settings_.relative_tolerance * b_norm, settings_.absolute_tolerance);
+  const double rtol = relative_tolerance > 0.0 ? relative_tolerance : settings_.relative_tolerance;
+  const double target = std::fmax(rtol * b_norm, settings_.absolute_tolerance);
   if (beta <= target || b_norm == 0.0 && beta == 0.0) {
     result.converged = true;
     result.final_residual = beta;

@@ -30,9 +30,10 @@ struct GmresResult {
 class Gmres {
  public:
   Gmres(int n, const GmresSettings& settings);
-  // x holds the initial guess on entry and the solution on exit.
+  // x holds the initial guess on entry and the solution on exit. `relative_tolerance`
+  // overrides the settings' one for this solve when positive (inexact Newton).
   GmresResult solve(const LinearOperator& A, const Preconditioner& M, const Kokkos::View<const double*>& b,
-                    const Kokkos::View<double*>& x);
+                    const Kokkos::View<double*>& x, double relative_tolerance = 0.0);
   const GmresSettings& settings() const { return settings_; }
 
  private:

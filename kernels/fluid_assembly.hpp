@@ -6,6 +6,7 @@
 // on CPU threads, atomic on GPUs).
 #include <Kokkos_Core.hpp>
 #include <Kokkos_ScatterView.hpp>
+#include <type_traits>
 
 #include "kernels/dual.hpp"
 #include "kernels/fluid_element.hpp"
@@ -32,7 +33,73 @@ KOKKOS_INLINE_FUNCTION void gather_nodal(const Kokkos::View<const double*>& fiel
     for (int c = 0; c < Count; ++c) out[a][c] = present ? field(base + c) : 0.0;
   }
 }
+// The 9 projected gradient entries of each of element e's nodes, as Scalar; the
+// derivative part (when Scalar is Dual<1>) from `direction_gradient` if it is not empty.
+template <class Element, class Scalar>
+KOKKOS_INLINE_FUNCTION void gather_gradient(const Kokkos::View<const double*>& gradient,
+                                            const Kokkos::View<const double*>& direction_gradient,
+                                            const FluidElementData& d, int e, Scalar (&out)[Element::nodes * 9]) {
+  for (int a = 0; a < Element::nodes; ++a) {
+    const int base = 9 * d.element_dof_nodes(e, a);
+    for (int k = 0; k < 9; ++k) {
+      out[9 * a + k] = Scalar(gradient(base + k));
+      if constexpr (!std::is_same<Scalar, double>::value)
+        if (direction_gradient.extent(0) > 0) out[9 * a + k].derivative[0] = direction_gradient(base + k);
+    }
+  }
+}
 }  // namespace detail
+
+// Lumped L2 projection of the velocity gradient onto the nodes, first half:
+//   out(9·a + 3i + j) += ∫ N_a ∂_j u_i dV,   lumped_mass(a) += ∫ N_a dV (when non-empty).
+// Dividing by the lumped mass gives G_a.
+template <class Element, class Scatter>
+struct FluidGradientProjectionFunctor {
+  FluidElementData data;
+  Kokkos::View<const double*> state;
+  Scatter gradient;
+  Scatter lumped_mass;
+  bool with_mass;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int e) const {
+    constexpr int n = Element::nodes;
+    double u[n][4];
+    detail::gather_nodal<Element, 4>(state, data, e, u);
+    double integral[n][9], mass[n];
+    for (int a = 0; a < n; ++a) {
+      mass[a] = 0.0;
+      for (int k = 0; k < 9; ++k) integral[a][k] = 0.0;
+    }
+    for (int q = 0; q < Element::quadrature_points; ++q) {
+      double xi[3];
+      Element::quadrature_point(q, xi);
+      double grad_u[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+      for (int a = 0; a < n; ++a)
+        for (int d = 0; d < 3; ++d) {
+          const double g = Element::shape_gradient(a, 0, xi) * data.geometry(e, q, d) +
+                           Element::shape_gradient(a, 1, xi) * data.geometry(e, q, 3 + d) +
+                           Element::shape_gradient(a, 2, xi) * data.geometry(e, q, 6 + d);
+          for (int i = 0; i < 3; ++i) grad_u[i][d] += u[a][i] * g;
+        }
+      const double dv = data.geometry(e, q, 9);
+      for (int a = 0; a < n; ++a) {
+        const double w = Element::shape(a, xi) * dv;
+        mass[a] += w;
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) integral[a][3 * i + j] += w * grad_u[i][j];
+      }
+    }
+    auto out = gradient.access();
+    for (int a = 0; a < n; ++a) {
+      const int node = data.element_dof_nodes(e, a);
+      for (int k = 0; k < 9; ++k) out(9 * node + k) += integral[a][k];
+    }
+    if (with_mass) {
+      auto m = lumped_mass.access();
+      for (int a = 0; a < n; ++a) m(data.element_dof_nodes(e, a)) += mass[a];
+    }
+  }
+};
 
 // Geometry at each quadrature point from scaled nodal coordinates:
 //   J_dk = Σ_a x_a,d ∂N_a/∂ξ_k,  store (J⁻¹)_kd = ∂ξ_k/∂x_d and det J · w_q;
@@ -84,7 +151,7 @@ struct FluidGeometryFunctor {
 template <class Element, class Scatter>
 struct FluidResidualFunctor {
   FluidElementData data;
-  Kokkos::View<const double*> state, frozen, history, force;
+  Kokkos::View<const double*> state, frozen, history, force, gradient;
   Scatter residual;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int e) const {
@@ -96,7 +163,10 @@ struct FluidResidualFunctor {
     detail::gather_nodal<Element, 3>(force, data, e, f);
     for (int a = 0; a < n; ++a)
       for (int c = 0; c < 4; ++c) r[a][c] = 0.0;
-    fluid_element_residual<Element, double>(data.coefficients, data.geometry, e, data.element_size(e), u, uf, h, f, r);
+    double g[n * 9];
+    if (data.coefficients.viscous_reconstruction) detail::gather_gradient<Element, double>(gradient, {}, data, e, g);
+    fluid_element_residual<Element, double>(data.coefficients, data.geometry, e, data.element_size(e), u, uf, h, f, g,
+                                            r);
     auto out = residual.access();
     for (int a = 0; a < n; ++a) {
       const int base = 4 * data.element_dof_nodes(e, a);
@@ -111,6 +181,7 @@ template <class Element, class Scatter>
 struct FluidJacobianActionFunctor {
   FluidElementData data;
   Kokkos::View<const double*> state, direction, history, force;
+  Kokkos::View<const double*> gradient, direction_gradient;  // G(U), G(δ) (viscous reconstruction)
   Scatter action;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int e) const {
@@ -129,8 +200,11 @@ struct FluidJacobianActionFunctor {
         r[a][c] = Dual<1>(0.0);
       }
     }
+    Dual<1> g[n * 9];
+    if (data.coefficients.viscous_reconstruction)
+      detail::gather_gradient<Element, Dual<1>>(gradient, direction_gradient, data, e, g);
     fluid_element_residual<Element, Dual<1>>(data.coefficients, data.geometry, e, data.element_size(e), x, uf, h, f,
-                                             r);
+                                             g, r);
     auto out = action.access();
     for (int a = 0; a < n; ++a) {
       const int base = 4 * data.element_dof_nodes(e, a);
@@ -141,11 +215,13 @@ struct FluidJacobianActionFunctor {
 
 // Element Jacobian columns ∂R_a/∂U_b (4×4 blocks), node b at a time in Dual<4>.
 // DiagonalOnly: scatter the blocks a = b into blocks(16·dof_node + 4i + j);
-// otherwise write the whole element matrix matrices(e, 4a+i, 4b+j).
+// otherwise write the whole element matrix matrices(e, 4a+i, 4b+j). The projected
+// gradient G couples beyond the element: here it is held at its value (for the
+// preconditioner), so these are exact only without viscous reconstruction.
 template <class Element, bool DiagonalOnly, class Scatter>
 struct FluidElementJacobianFunctor {
   FluidElementData data;
-  Kokkos::View<const double*> state, history, force;
+  Kokkos::View<const double*> state, history, force, gradient;
   Scatter blocks;                    // used when DiagonalOnly
   Kokkos::View<double***> matrices;  // used otherwise
 
@@ -157,6 +233,8 @@ struct FluidElementJacobianFunctor {
     detail::gather_nodal<Element, 3>(force, data, e, f);
     for (int a = 0; a < n; ++a)
       for (int c = 0; c < 3; ++c) uf[a][c] = u[a][c];
+    Dual<4> g[n * 9];
+    if (data.coefficients.viscous_reconstruction) detail::gather_gradient<Element, Dual<4>>(gradient, {}, data, e, g);
     for (int b = 0; b < n; ++b) {
       Dual<4> x[n][4], r[n][4];
       for (int a = 0; a < n; ++a)
@@ -165,7 +243,7 @@ struct FluidElementJacobianFunctor {
           if (a == b) x[a][c].derivative[c] = 1.0;
         }
       fluid_element_residual<Element, Dual<4>>(data.coefficients, data.geometry, e, data.element_size(e), x, uf, h, f,
-                                               r);
+                                               g, r);
       if constexpr (DiagonalOnly) {
         auto out = blocks.access();
         const int base = 16 * data.element_dof_nodes(e, b);

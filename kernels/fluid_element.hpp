@@ -10,8 +10,12 @@
 //          + Re τ_M (c u·∇N_a) r_i                       (SUPG)
 //          + ν_L ∂_i N_a ∇·u                              (LSIC)
 //   R_a4 = ∫ N_a ∇·u + τ_M ∇N_a · r                       (continuity + PSPG)
-// where r = Re (u_t + c u·∇u) + ∇p − f is the strong momentum residual (the viscous
-// second derivatives are dropped, as usual for linear and trilinear elements), and
+// where r = Re (u_t + c u·∇u) + ∇p − ∇·(G + Gᵀ) − f is the strong momentum residual.
+// Its viscous term needs second derivatives that linear and trilinear elements do not
+// have; G is the velocity gradient projected onto the nodes (lumped L2 projection), so
+// ∇·(G + Gᵀ) is a consistent O(h) approximation of Δu + ∇(∇·u) (Jansen, Collis, Whiting &
+// Shakib 1999). Without it (viscous_reconstruction = 0) SUPG is inconsistent at O(h) and
+// costs the pressure its accuracy. And
 //   τ_M = τ/Re = [ (2 Re/Δt)² + (2 Re |u|/h)² + (4/h²)² ]^(−1/2)       (Tezduyar 1992)
 //   ν_L = Re (h/2)|u| min(1, Re_h/3),  Re_h = Re |u| h / 2.
 // τ_M and ν_L are evaluated from a frozen velocity and are not differentiated.
@@ -29,6 +33,7 @@ struct FluidCoefficients {
   double inverse_dt = 0.0;        // 1/Δt (scaled) in τ; 0 for a steady solve
   int convection = 1;             // 1: Navier–Stokes, 0: Stokes limit
   int lsic = 1;                   // grad-div (LSIC) stabilization on/off
+  int viscous_reconstruction = 0;  // viscous term of r from the projected gradient G
 };
 
 // τ_M = [ (2 Re/Δt)² + (2 Re |u|/h)² + (4/h²)² ]^(−1/2)
@@ -55,12 +60,14 @@ inline constexpr int geometry_entries = 10;
 //   state(a, 0..3)   nodal u, v, w, p (Scalar: double, or Dual for derivatives)
 //   frozen(a, 0..2)  nodal velocity from which τ_M and ν_L are computed
 //   history(a, 0..2) nodal BDF history H;  force(a, 0..2) nodal body force f
+//   gradient         nodal projected velocity gradient G_a (9 per node, G_a[3i+j] = ∂_j u_i),
+//                    read when coef.viscous_reconstruction is on (else may be null)
 template <class Element, class Scalar, class GeometryView>
 KOKKOS_INLINE_FUNCTION void fluid_element_residual(
     const FluidCoefficients& coef, const GeometryView& geometry, const int e, const double h,
     const Scalar (&state)[Element::nodes][4], const double (&frozen)[Element::nodes][3],
     const double (&history)[Element::nodes][3], const double (&force)[Element::nodes][3],
-    Scalar (&residual)[Element::nodes][4]) {
+    const Scalar* gradient, Scalar (&residual)[Element::nodes][4]) {
   constexpr int n = Element::nodes;
   const double re = coef.reynolds;
   for (int q = 0; q < Element::quadrature_points; ++q) {
@@ -100,14 +107,23 @@ KOKKOS_INLINE_FUNCTION void fluid_element_residual(
     const double tau = stabilization_tau(coef, speed, h);
     const double nu_lsic = lsic_coefficient(coef, speed, h);
 
-    // Inertia Re (u_t + c u·∇u) and the strong residual r = inertia + ∇p − f.
+    // ∇·(G + Gᵀ)_i = Σ_a Σ_j ∂_j N_a (G_a,ij + G_a,ji)
+    Scalar viscous_divergence[3];
+    for (int i = 0; i < 3; ++i) viscous_divergence[i] = 0.0;
+    if (coef.viscous_reconstruction)
+      for (int a = 0; a < n; ++a)
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j)
+            viscous_divergence[i] += grad[a][j] * (gradient[9 * a + 3 * i + j] + gradient[9 * a + 3 * j + i]);
+
+    // Inertia Re (u_t + c u·∇u) and the strong residual r = inertia + ∇p − ∇·(G + Gᵀ) − f.
     Scalar inertia[3], strong[3];
     for (int i = 0; i < 3; ++i) {
       Scalar acceleration = coef.mass_coefficient * u[i] + history_u[i];
       if (coef.convection)
         acceleration += u[0] * grad_u[i][0] + u[1] * grad_u[i][1] + u[2] * grad_u[i][2];
       inertia[i] = re * acceleration;
-      strong[i] = inertia[i] + grad_p[i] - f[i];
+      strong[i] = inertia[i] + grad_p[i] - viscous_divergence[i] - f[i];
     }
     const Scalar divergence = grad_u[0][0] + grad_u[1][1] + grad_u[2][2];
 

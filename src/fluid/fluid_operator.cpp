@@ -40,6 +40,30 @@ FluidOperator::FluidOperator(const FluidMesh& mesh, double length_scale)
         << " quadrature points with det J <= 0 (inverted or degenerate elements)";
     throw std::invalid_argument(msg.str());
   }
+  lumped_mass_ = Kokkos::View<double*>("rouleau::FluidOperator::lumped_mass", mesh_.num_dof_nodes);
+  state_gradient_ = Kokkos::View<double*>("rouleau::FluidOperator::state_gradient", 9 * mesh_.num_dof_nodes);
+  direction_gradient_ =
+      Kokkos::View<double*>("rouleau::FluidOperator::direction_gradient", 9 * mesh_.num_dof_nodes);
+  Vector zero("rouleau::FluidOperator::zero", num_unknowns_);
+  ScatterVector gradient_scatter(state_gradient_), mass_scatter(lumped_mass_);
+  FluidGradientProjectionFunctor<Hex8, ScatterVector> mass{element_data(), zero, gradient_scatter, mass_scatter, true};
+  Kokkos::parallel_for("rouleau::FluidOperator::lumped_mass", Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements),
+                       mass);
+  contribute_to(lumped_mass_, mass_scatter);
+}
+
+void FluidOperator::project_gradient(const ConstVector& state, const Vector& gradient) const {
+  ProfilingRegion region("rouleau::FluidOperator::project_gradient");
+  Kokkos::deep_copy(gradient, 0.0);
+  ScatterVector scatter(gradient);
+  FluidGradientProjectionFunctor<Hex8, ScatterVector> f{element_data(), state, scatter, scatter, false};
+  Kokkos::parallel_for("rouleau::FluidOperator::project_gradient",
+                       Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
+  contribute_to(gradient, scatter);
+  auto mass = lumped_mass_;
+  Kokkos::parallel_for(
+      "rouleau::FluidOperator::project_gradient::divide", Kokkos::RangePolicy<ExecSpace>(0, gradient.extent(0)),
+      KOKKOS_LAMBDA(const int k) { gradient(k) /= mass(k / 9); });
 }
 
 FluidElementData FluidOperator::element_data() const {
@@ -84,9 +108,11 @@ void FluidOperator::finish_rows(const ConstVector& state, const ConstVector& dir
 void FluidOperator::residual(const ConstVector& state, const ConstVector& frozen, const Vector& result,
                              bool constrained_rows) const {
   ProfilingRegion region("rouleau::FluidOperator::residual");
+  if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_);
   Kokkos::deep_copy(result, 0.0);
   ScatterVector scatter(result);
-  FluidResidualFunctor<Hex8, ScatterVector> f{element_data(), state, frozen, history_, body_force_, scatter};
+  FluidResidualFunctor<Hex8, ScatterVector> f{element_data(), state,       frozen,         history_,
+                                              body_force_,    state_gradient_, scatter};
   Kokkos::parallel_for("rouleau::FluidOperator::residual", Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
   contribute_to(result, scatter);
   if (nodal_load_.extent(0) > 0) {
@@ -101,9 +127,14 @@ void FluidOperator::residual(const ConstVector& state, const ConstVector& frozen
 void FluidOperator::jacobian_action(const ConstVector& state, const ConstVector& direction,
                                     const Vector& result) const {
   ProfilingRegion region("rouleau::FluidOperator::jacobian_action");
+  if (coefficients_.viscous_reconstruction) {
+    project_gradient(state, state_gradient_);
+    project_gradient(direction, direction_gradient_);
+  }
   Kokkos::deep_copy(result, 0.0);
   ScatterVector scatter(result);
-  FluidJacobianActionFunctor<Hex8, ScatterVector> f{element_data(), state, direction, history_, body_force_, scatter};
+  FluidJacobianActionFunctor<Hex8, ScatterVector> f{
+      element_data(), state, direction, history_, body_force_, state_gradient_, direction_gradient_, scatter};
   Kokkos::parallel_for("rouleau::FluidOperator::jacobian_action",
                        Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
   contribute_to(result, scatter);
@@ -116,8 +147,10 @@ void FluidOperator::linear_action(const ConstVector& direction, const Vector& re
     throw std::logic_error("rouleau::FluidOperator::linear_action: the residual is not affine with convection on");
   Kokkos::deep_copy(result, 0.0);
   ScatterVector scatter(result);
+  if (coefficients_.viscous_reconstruction) project_gradient(direction, direction_gradient_);
   const ConstVector none;
-  FluidResidualFunctor<Hex8, ScatterVector> f{element_data(), direction, direction, none, none, scatter};
+  FluidResidualFunctor<Hex8, ScatterVector> f{element_data(), direction, direction, none,
+                                              none,           direction_gradient_, scatter};
   Kokkos::parallel_for("rouleau::FluidOperator::linear_action", Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements),
                        f);
   contribute_to(result, scatter);
@@ -126,9 +159,11 @@ void FluidOperator::linear_action(const ConstVector& direction, const Vector& re
 
 void FluidOperator::diagonal_blocks(const ConstVector& state, const Vector& blocks) const {
   ProfilingRegion region("rouleau::FluidOperator::diagonal_blocks");
+  if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_);
   Kokkos::deep_copy(blocks, 0.0);
   ScatterVector scatter(blocks);
-  FluidElementJacobianFunctor<Hex8, true, ScatterVector> f{element_data(), state, history_, body_force_, scatter, {}};
+  FluidElementJacobianFunctor<Hex8, true, ScatterVector> f{
+      element_data(), state, history_, body_force_, state_gradient_, scatter, {}};
   Kokkos::parallel_for("rouleau::FluidOperator::diagonal_blocks",
                        Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
   contribute_to(blocks, scatter);
@@ -143,7 +178,9 @@ void FluidOperator::diagonal_blocks(const ConstVector& state, const Vector& bloc
 }
 
 void FluidOperator::element_matrices(const ConstVector& state, const Kokkos::View<double***>& matrices) const {
-  FluidElementJacobianFunctor<Hex8, false, ScatterVector> f{element_data(), state, history_, body_force_, {}, matrices};
+  if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_);
+  FluidElementJacobianFunctor<Hex8, false, ScatterVector> f{
+      element_data(), state, history_, body_force_, state_gradient_, {}, matrices};
   Kokkos::parallel_for("rouleau::FluidOperator::element_matrices",
                        Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
 }

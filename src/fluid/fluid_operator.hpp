@@ -58,6 +58,10 @@ class FluidOperator {
   // Element matrices K_e(4a+i, 4b+j) without Dirichlet rows (tests, assembly).
   void element_matrices(const ConstVector& state, const Kokkos::View<double***>& matrices) const;
 
+  // The lumped L2 projection of the velocity gradient of `state` onto the dof nodes:
+  // gradient(9·node + 3i + j) = G_node,ij ≈ ∂_j u_i (scaled).
+  void project_gradient(const ConstVector& state, const Vector& gradient) const;
+
   // Geometry stored per quadrature point (scaled): [e][q][(J⁻¹)_kd, det J·w].
   const Kokkos::View<double***>& geometry() const { return geometry_; }
   const Kokkos::View<double*>& element_size() const { return element_size_; }
@@ -78,6 +82,8 @@ class FluidOperator {
   Kokkos::View<double*> dirichlet_values_;
   Vector nodal_load_;
   ConstVector history_, body_force_;
+  Kokkos::View<double*> lumped_mass_;                        // Σ_e ∫ N_a dV per dof node
+  Kokkos::View<double*> state_gradient_, direction_gradient_;  // scratch for G(U), G(δ)
 };
 
 }  // namespace rouleau

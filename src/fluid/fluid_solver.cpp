@@ -1,5 +1,7 @@
 #include "fluid/fluid_solver.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <KokkosBlas1_axpby.hpp>
 #include <KokkosBlas1_nrm2.hpp>
 #include <KokkosBlas1_update.hpp>
@@ -207,6 +209,14 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history) {
     KokkosBlas::axpby(1.0, correction_, 1.0, state_);
     operator_.residual(state_, state_, residual_);
     norm = KokkosBlas::nrm2(residual_);
+    if (spdlog::should_log(spdlog::level::debug)) {
+      double momentum = 0.0, continuity = 0.0;
+      block_norms(residual_, momentum, continuity);
+      spdlog::debug("Newton {}: GMRES {} iterations to {:.1e} ({}), residual {:.3e} (momentum {:.3e}, continuity "
+                    "{:.3e}), target {:.3e}",
+                    report.newton_iterations, g.iterations, forcing, g.converged ? "converged" : "not converged",
+                    norm, momentum, continuity, target);
+    }
     if (!std::isfinite(norm)) {
       report.failure = "the residual is not finite after Newton step " + std::to_string(report.newton_iterations);
       break;
@@ -235,6 +245,7 @@ FluidSolveReport FluidSolver::solve_steady() {
   FluidCoefficients c;
   c.reynolds = scales_.reynolds;
   c.convection = stokes_ ? 0 : 1;
+  c.viscous_reconstruction = stokes_ ? 0 : 1;
   c.mass_coefficient = 0.0;
   c.inverse_dt = 0.0;
   if (c.mass_coefficient != last_mass_coefficient_) preconditioner_current_ = false;
@@ -251,6 +262,7 @@ FluidSolveReport FluidSolver::advance(double dt, TimeScheme scheme) {
   FluidCoefficients c;
   c.reynolds = scales_.reynolds;
   c.convection = stokes_ ? 0 : 1;
+  c.viscous_reconstruction = stokes_ ? 0 : 1;
   c.mass_coefficient = a0 / dt_scaled;
   c.inverse_dt = 1.0 / dt_scaled;
   if (c.mass_coefficient != last_mass_coefficient_) preconditioner_current_ = false;

@@ -1,0 +1,337 @@
+// Throughput of the matrix-free stabilized Navier–Stokes operator, set against the
+// machine's achievable memory bandwidth, and GMRES iterations per Stokes solve as the
+// mesh is refined (with and without block Jacobi).
+//
+//   BM_JacobianAction/n   J(U)δ, Navier–Stokes (convection 1, Re 1, transient BDF1
+//                         coefficients, history and body force set), dual numbers
+//   BM_LinearAction/n     Aδ, the Stokes limit (convection 0)
+//   BM_Residual/n         R(U) with τ frozen at U, same setting as BM_JacobianAction
+//   BM_Triad/n            a = b + s·c over as many bytes as BM_JacobianAction/n moves
+//   BM_StokesSolve/n/pc   one steady Stokes solve of a manufactured problem (pc 1: block
+//                         Jacobi, 0: none), one iteration, GMRES iterations reported
+//
+// Mesh: the unit cube in n³ trilinear hexahedra, no periodicity, walls (Dirichlet
+// velocity) on all six sides. The state and direction are random in [−1, 1].
+//
+// Byte model ("GB/s"): the bytes a perfect implementation must move per application —
+// each nodal vector it reads gathered exactly once (4 doubles per node), the result
+// written once (4 doubles per node), and per element the stored quadrature geometry
+// (8 points × 10 doubles: J⁻¹ and det J·w), the element size h (1 double) and the
+// connectivity (8 ints). The nodal vectors read are
+//   jacobian_action: state, direction, BDF history, body force     (4 vectors)
+//   residual:        state (= frozen, the same View), history, force (3 vectors)
+//   linear_action:   direction                                       (1 vector)
+// Dirichlet rows (O(n²) entries) and the ScatterView's per-thread copies are not
+// counted: the latter are an implementation cost, which is what the ratio exposes.
+// The triad counts 3 arrays × 8 bytes per entry (STREAM convention, no write-allocate).
+#include <benchmark/benchmark.h>
+
+#include <Kokkos_Core.hpp>
+#include <Kokkos_Random.hpp>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fluid/boundary_conditions.hpp"
+#include "fluid/fluid_operator.hpp"
+#include "fluid/fluid_solver.hpp"
+#include "mesh/fluid_mesh.hpp"
+
+namespace {
+
+using rouleau::FluidCoefficients;
+using rouleau::FluidMesh;
+using rouleau::FluidOperator;
+using rouleau::Vector;
+
+constexpr double bytes_per_double = 8.0;
+constexpr double bytes_per_int = 4.0;
+constexpr double geometry_doubles_per_element = 8.0 * rouleau::geometry_entries;
+
+enum class Pass { jacobian_action, linear_action, residual };
+
+int vectors_read(Pass pass) {
+  switch (pass) {
+    case Pass::jacobian_action: return 4;
+    case Pass::residual: return 3;
+    case Pass::linear_action: return 1;
+  }
+  return 0;
+}
+
+// The byte model above, for one application on `mesh`.
+double operator_bytes(const FluidMesh& mesh, Pass pass) {
+  const double unknowns = mesh.num_unknowns();
+  const double per_element = (geometry_doubles_per_element + 1.0) * bytes_per_double + 8.0 * bytes_per_int;
+  return (vectors_read(pass) + 1) * unknowns * bytes_per_double + mesh.num_elements * per_element;
+}
+
+// An operator on the unit cube with walls everywhere and random state, direction and
+// sources. Built once per mesh size and kept while benchmarks of that size run
+// (Google Benchmark calls a benchmark function several times to size its loop).
+struct OperatorProblem {
+  int n;
+  FluidMesh mesh;
+  FluidOperator op;
+  Vector state, direction, history, force, result;
+
+  explicit OperatorProblem(int cells)
+      : n(cells),
+        mesh(rouleau::make_box_mesh({0, 0, 0}, {1, 1, 1}, {cells, cells, cells}, {1, 1, 1}, {false, false, false})),
+        op(mesh, 1.0),
+        state("state", mesh.num_unknowns()),
+        direction("direction", mesh.num_unknowns()),
+        history("history", mesh.num_unknowns()),
+        force("force", mesh.num_unknowns()),
+        result("result", mesh.num_unknowns()) {
+    const auto bc = rouleau::build_boundary_conditions(mesh, std::array<rouleau::BoundaryConfig, 6>{},
+                                                       rouleau::FluidScales{});
+    op.set_dirichlet(bc.dirichlet_dofs, bc.dirichlet_values);
+    Kokkos::Random_XorShift64_Pool<> pool(20240607);
+    Kokkos::fill_random(state, pool, -1.0, 1.0);
+    Kokkos::fill_random(direction, pool, -1.0, 1.0);
+    Kokkos::fill_random(history, pool, -1.0, 1.0);
+    Kokkos::fill_random(force, pool, -1.0, 1.0);
+    Kokkos::fence();
+  }
+
+  // Navier–Stokes, Re = 1, one backward-Euler step of Δt = 0.1 (scaled).
+  void navier_stokes() {
+    FluidCoefficients c;
+    c.reynolds = 1.0;
+    c.mass_coefficient = 1.0 / 0.1;
+    c.inverse_dt = 1.0 / 0.1;
+    c.convection = 1;
+    op.set_coefficients(c);
+    op.set_sources(history, force);
+  }
+  // The steady Stokes limit (linear_action ignores the sources).
+  void stokes() {
+    FluidCoefficients c;
+    c.reynolds = 0.0;
+    c.convection = 0;
+    op.set_coefficients(c);
+    op.set_sources(rouleau::ConstVector(), rouleau::ConstVector());
+  }
+};
+
+std::unique_ptr<OperatorProblem> cached_problem;
+
+OperatorProblem& problem(int n) {
+  if (!cached_problem || cached_problem->n != n) {
+    cached_problem.reset();  // free the previous size first
+    cached_problem = std::make_unique<OperatorProblem>(n);
+  }
+  return *cached_problem;
+}
+
+double seconds_since(const Kokkos::Timer& timer) { return timer.seconds(); }
+
+void set_operator_counters(benchmark::State& state, const FluidMesh& mesh, Pass pass) {
+  const double applications = static_cast<double>(state.iterations());
+  state.counters["MDoF/s"] = benchmark::Counter(applications * mesh.num_unknowns() * 1e-6, benchmark::Counter::kIsRate);
+  state.counters["elements/s"] = benchmark::Counter(applications * mesh.num_elements, benchmark::Counter::kIsRate);
+  state.counters["GB/s"] = benchmark::Counter(applications * operator_bytes(mesh, pass) * 1e-9,
+                                              benchmark::Counter::kIsRate);
+  state.counters["unknowns"] = mesh.num_unknowns();
+  state.counters["MB/application"] = operator_bytes(mesh, pass) * 1e-6;
+}
+
+void BM_JacobianAction(benchmark::State& state) {
+  OperatorProblem& p = problem(static_cast<int>(state.range(0)));
+  p.navier_stokes();
+  p.op.jacobian_action(p.state, p.direction, p.result);  // warm-up: first touch, allocations
+  Kokkos::fence();
+  for (auto _ : state) {
+    Kokkos::fence();
+    Kokkos::Timer timer;
+    p.op.jacobian_action(p.state, p.direction, p.result);
+    Kokkos::fence();
+    state.SetIterationTime(seconds_since(timer));
+  }
+  set_operator_counters(state, p.mesh, Pass::jacobian_action);
+}
+
+void BM_LinearAction(benchmark::State& state) {
+  OperatorProblem& p = problem(static_cast<int>(state.range(0)));
+  p.stokes();
+  p.op.linear_action(p.direction, p.result);
+  Kokkos::fence();
+  for (auto _ : state) {
+    Kokkos::fence();
+    Kokkos::Timer timer;
+    p.op.linear_action(p.direction, p.result);
+    Kokkos::fence();
+    state.SetIterationTime(seconds_since(timer));
+  }
+  set_operator_counters(state, p.mesh, Pass::linear_action);
+}
+
+void BM_Residual(benchmark::State& state) {
+  OperatorProblem& p = problem(static_cast<int>(state.range(0)));
+  p.navier_stokes();
+  p.op.residual(p.state, p.state, p.result);
+  Kokkos::fence();
+  for (auto _ : state) {
+    Kokkos::fence();
+    Kokkos::Timer timer;
+    p.op.residual(p.state, p.state, p.result);
+    Kokkos::fence();
+    state.SetIterationTime(seconds_since(timer));
+  }
+  set_operator_counters(state, p.mesh, Pass::residual);
+}
+
+// STREAM triad over the bytes BM_JacobianAction/n moves: three arrays of bytes/24 doubles.
+void BM_Triad(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const int nodes = (n + 1) * (n + 1) * (n + 1), elements = n * n * n;
+  const double bytes_target = (vectors_read(Pass::jacobian_action) + 1) * 4.0 * nodes * bytes_per_double +
+                              elements * ((geometry_doubles_per_element + 1.0) * bytes_per_double + 8 * bytes_per_int);
+  const auto length = static_cast<std::int64_t>(bytes_target / (3 * bytes_per_double));
+  Kokkos::View<double*> a("a", length), b("b", length), c("c", length);
+  Kokkos::deep_copy(b, 1.0);
+  Kokkos::deep_copy(c, 2.0);
+  const double s = 3.0;
+  using Policy = Kokkos::RangePolicy<Kokkos::DefaultExecutionSpace, Kokkos::IndexType<std::int64_t>>;
+  auto triad = [&]() {
+    Kokkos::parallel_for(
+        "bench::triad", Policy(0, length), KOKKOS_LAMBDA(const std::int64_t i) { a(i) = b(i) + s * c(i); });
+  };
+  triad();
+  Kokkos::fence();
+  for (auto _ : state) {
+    Kokkos::fence();
+    Kokkos::Timer timer;
+    triad();
+    Kokkos::fence();
+    state.SetIterationTime(seconds_since(timer));
+  }
+  const double bytes = 3.0 * bytes_per_double * static_cast<double>(length);
+  state.counters["GB/s"] = benchmark::Counter(static_cast<double>(state.iterations()) * bytes * 1e-9,
+                                              benchmark::Counter::kIsRate);
+  state.counters["MB/application"] = bytes * 1e-6;
+}
+
+// The manufactured Stokes problem on the unit cube (k = π), divergence-free:
+//   u = (sin kx cos ky cos kz, cos kx sin ky cos kz, −2 cos kx cos ky sin kz),
+//   p = sin kx sin ky sin kz,  f = −Δu + ∇p = 3k² u + ∇p  (unit scales: μ = 1, L = U = 1).
+constexpr double pi = 3.14159265358979323846;
+
+std::array<double, 3> exact_velocity(const std::array<double, 3>& x) {
+  const double sx = std::sin(pi * x[0]), sy = std::sin(pi * x[1]), sz = std::sin(pi * x[2]);
+  const double cx = std::cos(pi * x[0]), cy = std::cos(pi * x[1]), cz = std::cos(pi * x[2]);
+  return {sx * cy * cz, cx * sy * cz, -2.0 * cx * cy * sz};
+}
+
+std::array<double, 3> stokes_force(const std::array<double, 3>& x) {
+  const double sx = std::sin(pi * x[0]), sy = std::sin(pi * x[1]), sz = std::sin(pi * x[2]);
+  const double cx = std::cos(pi * x[0]), cy = std::cos(pi * x[1]), cz = std::cos(pi * x[2]);
+  const auto u = exact_velocity(x);
+  const double grad_p[3] = {pi * cx * sy * sz, pi * sx * cy * sz, pi * sx * sy * cz};
+  std::array<double, 3> f;
+  for (int i = 0; i < 3; ++i) f[i] = 3.0 * pi * pi * u[i] + grad_p[i];
+  return f;
+}
+
+void BM_StokesSolve(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const bool block_jacobi = state.range(1) != 0;
+  const FluidMesh mesh = rouleau::make_box_mesh({0, 0, 0}, {1, 1, 1}, {n, n, n}, {1, 1, 1}, {false, false, false});
+  rouleau::FluidConfig fluid;
+  fluid.viscosity = 1.0;
+  fluid.density = 0.0;
+  rouleau::FluidScales scales;  // unit scales: dimensional = scaled
+  scales.reynolds = 0.0;
+  rouleau::SolverConfig settings;
+  settings.gmres_rtol = 1e-8;
+  settings.gmres_restart = 100;
+  // Unpreconditioned GMRES(100) stagnates near 2e-8 at 16³ (20000 iterations, 190 s, did
+  // not reach 1e-8): cap it, and report the residual reduction reached.
+  settings.gmres_max_iterations = 4000;
+  settings.preconditioner =
+      block_jacobi ? rouleau::PreconditionerType::block_jacobi : rouleau::PreconditionerType::none;
+
+  rouleau::FluidSolveReport report;
+  for (auto _ : state) {
+    // Setup (operator geometry, Dirichlet values, body force) outside the timed region;
+    // the preconditioner is built inside solve_steady() and so is timed.
+    rouleau::FluidSolver solver(mesh, fluid, std::array<rouleau::BoundaryConfig, 6>{}, settings, scales, true);
+    solver.prescribe_boundary_velocity(exact_velocity);
+    auto coordinates = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
+    std::vector<double> force(3 * mesh.num_dof_nodes);
+    for (int node = 0; node < mesh.num_nodes; ++node) {
+      const auto f = stokes_force({coordinates(node, 0), coordinates(node, 1), coordinates(node, 2)});
+      for (int d = 0; d < 3; ++d) force[3 * mesh.dof_node_of_node[node] + d] = f[d];
+    }
+    solver.set_body_force(force);
+    Kokkos::fence();
+    Kokkos::Timer timer;
+    report = solver.solve_steady();
+    Kokkos::fence();
+    state.SetIterationTime(seconds_since(timer));
+  }
+  state.counters["converged"] = report.converged ? 1 : 0;
+  // ‖R‖ after the solve over ‖R(U₀)‖ (the Krylov solve's reduction of the true residual).
+  state.counters["residual_reduction"] =
+      std::hypot(report.momentum_residual, report.continuity_residual) / report.initial_residual;
+  const double iterations = report.gmres_iterations;
+  state.counters["gmres_iterations"] = iterations;
+  state.counters["unknowns"] = mesh.num_unknowns();
+  state.counters["MDoF/s"] = benchmark::Counter(static_cast<double>(state.iterations()) * iterations *
+                                                    mesh.num_unknowns() * 1e-6,
+                                                benchmark::Counter::kIsRate);
+  state.SetLabel(std::string(block_jacobi ? "block Jacobi" : "no preconditioner") +
+                 (report.converged ? "" : ", NOT CONVERGED: " + report.failure));
+}
+
+}  // namespace
+
+BENCHMARK(BM_Triad)->ArgName("n")->Arg(16)->Arg(32)->Arg(48)->Arg(64)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_JacobianAction)
+    ->ArgName("n")
+    ->Arg(16)
+    ->Arg(32)
+    ->Arg(48)
+    ->Arg(64)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LinearAction)
+    ->ArgName("n")
+    ->Arg(16)
+    ->Arg(32)
+    ->Arg(48)
+    ->Arg(64)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Residual)->ArgName("n")->Arg(16)->Arg(32)->Arg(48)->Arg(64)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StokesSolve)
+    ->ArgNames({"n", "block_jacobi"})
+    ->Args({8, 1})
+    ->Args({16, 1})
+    ->Args({24, 1})
+    ->Args({32, 1})
+    ->Args({8, 0})
+    ->Args({16, 0})
+    ->Iterations(1)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+
+int main(int argc, char** argv) {
+  Kokkos::ScopeGuard kokkos(argc, argv);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  using Space = Kokkos::DefaultExecutionSpace;
+  benchmark::AddCustomContext("kokkos_execution_space", Space::name());
+  benchmark::AddCustomContext("kokkos_concurrency", std::to_string(Space().concurrency()));
+  benchmark::AddCustomContext("kokkos_version", std::to_string(KOKKOS_VERSION / 10000) + "." +
+                                                    std::to_string(KOKKOS_VERSION / 100 % 100) + "." +
+                                                    std::to_string(KOKKOS_VERSION % 100));
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  cached_problem.reset();  // Kokkos Views must go before Kokkos::finalize
+  return 0;
+}

@@ -86,6 +86,19 @@ void FluidSolver::set_uniform_body_force(const std::array<double, 3>& force_dens
   set_body_force(field);
 }
 
+void FluidSolver::set_velocity(
+    const std::function<std::array<double, 3>(const std::array<double, 3>&)>& velocity) {
+  const FluidMesh& mesh = operator_.mesh();
+  auto coordinates = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
+  auto state = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), state_);
+  for (int n = 0; n < mesh.num_nodes; ++n) {
+    const auto v = velocity({coordinates(n, 0), coordinates(n, 1), coordinates(n, 2)});
+    for (int c = 0; c < 3; ++c) state(4 * mesh.dof_node_of_node[n] + c) = v[c] / scales_.velocity;
+  }
+  Kokkos::deep_copy(state_, state);
+  operator_.impose_dirichlet(state_);
+}
+
 void FluidSolver::prescribe_boundary_velocity(
     const std::function<std::array<double, 3>(const std::array<double, 3>&)>& velocity) {
   const FluidMesh& mesh = operator_.mesh();

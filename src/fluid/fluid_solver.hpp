@@ -44,6 +44,10 @@ class FluidSolver {
   // Constant body force density everywhere [pN/μm³].
   void set_uniform_body_force(const std::array<double, 3>& force_density);
 
+  // Sets the velocity everywhere to velocity(x) [μm/s] at the nodes x [μm] (an initial
+  // condition; Dirichlet values are imposed again afterwards).
+  void set_velocity(const std::function<std::array<double, 3>(const std::array<double, 3>&)>& velocity);
+
   // Replaces the prescribed velocity on every Dirichlet velocity unknown by
   // velocity(x) [μm/s] at the node's position x [μm] (manufactured solutions, custom inflows).
   void prescribe_boundary_velocity(const std::function<std::array<double, 3>(const std::array<double, 3>&)>& velocity);

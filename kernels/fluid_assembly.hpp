@@ -213,17 +213,35 @@ struct FluidJacobianActionFunctor {
   }
 };
 
-// Element Jacobian columns ∂R_a/∂U_b (4×4 blocks), node b at a time in Dual<4>.
-// DiagonalOnly: scatter the blocks a = b into blocks(16·dof_node + 4i + j);
-// otherwise write the whole element matrix matrices(e, 4a+i, 4b+j). The projected
-// gradient G couples beyond the element: here it is held at its value (for the
-// preconditioner), so these are exact only without viscous reconstruction.
-template <class Element, bool DiagonalOnly, class Scatter>
+// Where element Jacobian blocks go: the node-diagonal blocks (block Jacobi), whole
+// element matrices (tests), or the global CRS matrix (assembled preconditioners).
+enum class JacobianSink { diagonal_blocks, element_matrices, crs };
+
+// Element Jacobian columns ∂R_a/∂U_b (4×4 blocks), node b at a time in Dual<4>, sent to
+//   diagonal_blocks:  blocks(16·dof_node + 4i + j) for a = b (scattered)
+//   element_matrices: matrices(e, 4a+i, 4b+j)
+//   crs:              values at row 4A+i, column 4B+j of the graph (atomic adds)
+// The projected gradient G couples beyond the element: here it is held at its value
+// (for preconditioners), so these are exact only without viscous reconstruction.
+template <class Element, JacobianSink Sink, class Scatter>
 struct FluidElementJacobianFunctor {
   FluidElementData data;
   Kokkos::View<const double*> state, history, force, gradient;
-  Scatter blocks;                    // used when DiagonalOnly
-  Kokkos::View<double***> matrices;  // used otherwise
+  Scatter blocks;                                  // diagonal_blocks
+  Kokkos::View<double***> matrices;                // element_matrices
+  Kokkos::View<const std::size_t*> row_map;        // crs
+  Kokkos::View<const int*> node_offsets, node_neighbors;
+  Kokkos::View<double*> values;
+
+  // Index k of node B among the neighbors of node A (binary search).
+  KOKKOS_INLINE_FUNCTION int neighbor_index(int A, int B) const {
+    int lo = node_offsets(A), hi = node_offsets(A + 1) - 1;
+    while (lo < hi) {
+      const int mid = (lo + hi) / 2;
+      if (node_neighbors(mid) < B) lo = mid + 1; else hi = mid;
+    }
+    return lo - node_offsets(A);
+  }
 
   KOKKOS_INLINE_FUNCTION void operator()(const int e) const {
     constexpr int n = Element::nodes;
@@ -244,15 +262,24 @@ struct FluidElementJacobianFunctor {
         }
       fluid_element_residual<Element, Dual<4>>(data.coefficients, data.geometry, e, data.element_size(e), x, uf, h, f,
                                                g, r);
-      if constexpr (DiagonalOnly) {
+      if constexpr (Sink == JacobianSink::diagonal_blocks) {
         auto out = blocks.access();
         const int base = 16 * data.element_dof_nodes(e, b);
         for (int i = 0; i < 4; ++i)
           for (int j = 0; j < 4; ++j) out(base + 4 * i + j) += r[b][i].derivative[j];
-      } else {
+      } else if constexpr (Sink == JacobianSink::element_matrices) {
         for (int a = 0; a < n; ++a)
           for (int i = 0; i < 4; ++i)
             for (int j = 0; j < 4; ++j) matrices(e, 4 * a + i, 4 * b + j) = r[a][i].derivative[j];
+      } else {
+        const int B = data.element_dof_nodes(e, b);
+        for (int a = 0; a < n; ++a) {
+          const int A = data.element_dof_nodes(e, a);
+          const int k = neighbor_index(A, B);
+          for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j)
+              Kokkos::atomic_add(&values(row_map(4 * A + i) + 4 * k + j), r[a][i].derivative[j]);
+        }
       }
     }
   }

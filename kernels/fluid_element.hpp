@@ -127,20 +127,29 @@ KOKKOS_INLINE_FUNCTION void fluid_element_residual(
     }
     const Scalar divergence = grad_u[0][0] + grad_u[1][1] + grad_u[2][2];
 
-    for (int a = 0; a < n; ++a) {
-      Scalar supg_weight = 0.0;  // Re τ_M c u·∇N_a
-      if (coef.convection) supg_weight = (re * tau) * (u[0] * grad[a][0] + u[1] * grad[a][1] + u[2] * grad[a][2]);
-      Scalar pspg = 0.0;  // τ_M ∇N_a · r
-      for (int i = 0; i < 3; ++i) {
-        Scalar viscous = 0.0;  // ∂_j N_a (∂_j u_i + ∂_i u_j)
-        for (int j = 0; j < 3; ++j) viscous += grad[a][j] * (grad_u[i][j] + grad_u[j][i]);
-        Scalar r_ai = shape[a] * inertia[i] + viscous - grad[a][i] * p - shape[a] * f[i] +
-                      supg_weight * strong[i] + (nu_lsic * grad[a][i]) * divergence;
-        residual[a][i] += dv * r_ai;
-        pspg += (tau * grad[a][i]) * strong[i];
+    // Flux form: every term above is N_a s_c + ∇N_a · F_c with, per quadrature point,
+    //   s_i = Re (u_t + c u·∇u)_i − f_i,        s_4 = ∇·u
+    //   F_ij = ∂_j u_i + ∂_i u_j − p δ_ij + ν_L ∇·u δ_ij + Re τ_M c u_j r_i,   F_4j = τ_M r_j
+    // (SUPG: (u·∇N_a) r_i = ∇N_a · (u r_i); PSPG: τ_M ∇N_a · r), so each node costs 16
+    // multiply-adds instead of re-forming the terms.
+    Scalar source[4], flux[4][3];
+    const Scalar pressure_and_lsic = nu_lsic * divergence - p;
+    for (int i = 0; i < 3; ++i) {
+      source[i] = dv * (inertia[i] - f[i]);
+      const Scalar supg = coef.convection ? Scalar((re * tau) * strong[i]) : Scalar(0.0);
+      for (int j = 0; j < 3; ++j) {
+        Scalar fij = grad_u[i][j] + grad_u[j][i];
+        if (coef.convection) fij += supg * u[j];
+        if (i == j) fij += pressure_and_lsic;
+        flux[i][j] = dv * fij;
       }
-      residual[a][3] += dv * (shape[a] * divergence + pspg);
+      flux[3][i] = (dv * tau) * strong[i];
     }
+    source[3] = dv * divergence;
+    for (int a = 0; a < n; ++a)
+      for (int c = 0; c < 4; ++c)
+        residual[a][c] += shape[a] * source[c] + grad[a][0] * flux[c][0] + grad[a][1] * flux[c][1] +
+                          grad[a][2] * flux[c][2];
   }
 }
 

@@ -7,6 +7,9 @@
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
   spdlog::cfg::load_env_levels();  // SPDLOG_LEVEL=debug shows Newton/GMRES progress
+  // Listing the tests (ctest's discovery) needs no Kokkos, and Kokkos' start-up warnings
+  // would otherwise be read as test names.
+  if (::testing::GTEST_FLAG(list_tests)) return RUN_ALL_TESTS();
   Kokkos::ScopeGuard kokkos(argc, argv);
   return RUN_ALL_TESTS();
 }

@@ -6,6 +6,7 @@
 #include <Kokkos_Random.hpp>
 
 #include "fluid/boundary_conditions.hpp"
+#include "fluid/fluid_matrix.hpp"
 #include "fluid/fluid_operator.hpp"
 #include "mesh/fluid_mesh.hpp"
 #include "test_helpers.hpp"
@@ -18,10 +19,10 @@ namespace {
 struct TinyProblem {
   FluidMesh mesh = make_box_mesh({0.0, 0.0, 0.0}, {2.0, 1.0, 1.5}, {3, 3, 2}, {1.0, 2.0, 1.0}, {true, false, false});
   FluidOperator op{mesh, 1.0};
-  Vector state{"state", mesh.num_unknowns()};
-  Vector direction{"direction", mesh.num_unknowns()};
-  Vector history{"history", mesh.num_unknowns()};
-  Vector force{"force", mesh.num_unknowns()};
+  Vector state{"state", static_cast<size_t>(mesh.num_unknowns())};
+  Vector direction{"direction", static_cast<size_t>(mesh.num_unknowns())};
+  Vector history{"history", static_cast<size_t>(mesh.num_unknowns())};
+  Vector force{"force", static_cast<size_t>(mesh.num_unknowns())};
 
   explicit TinyProblem(int convection, int viscous_reconstruction = 0) {
     FluidCoefficients c;
@@ -167,6 +168,28 @@ TEST(FluidOperator, DiagonalBlocksMatchAssembledMatrix) {
       for (int j = 0; j < 4; ++j) h(16 * node + 4 * i + j) = A.coeff(4 * node + i, 4 * node + j);
   Kokkos::deep_copy(expected, h);
   testing::expectAllClose(blocks, expected, 1e-12, 1e-12);
+}
+
+TEST(FluidOperator, CrsAssemblyMatchesElementAssembly) {
+  // The CRS Jacobian for assembled preconditioners against the element-matrix assembly.
+  TinyProblem p(1);
+  const FluidMatrixGraph graph = build_fluid_matrix_graph(p.mesh);
+  Vector values("values", graph.entries.extent(0));
+  p.op.assemble_jacobian(p.state, graph, values);
+  const Eigen::SparseMatrix<double> A = p.assemble();
+  auto row_map = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), graph.row_map);
+  auto entries = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), graph.entries);
+  auto v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), values);
+  double difference = 0.0, norm = 0.0, stored = 0.0;
+  for (int row = 0; row < graph.num_rows; ++row)
+    for (size_t k = row_map(row); k < row_map(row + 1); ++k) {
+      difference = std::max(difference, std::fabs(v(k) - A.coeff(row, entries(k))));
+      norm = std::max(norm, std::fabs(A.coeff(row, entries(k))));
+      stored += A.coeff(row, entries(k)) * A.coeff(row, entries(k));
+    }
+  // Every nonzero of A lies on the graph: the squared entries on it sum to ‖A‖_F².
+  EXPECT_NEAR(stored, A.squaredNorm(), 1e-12 * A.squaredNorm());
+  EXPECT_LT(difference, 1e-13 * norm);
 }
 
 TEST(FluidOperator, InvertedElementIsRejected) {

@@ -58,7 +58,7 @@ struct TimeConfig {
 };
 
 enum class StokesChoice { automatic, on, off };
-enum class PreconditionerType { none, block_jacobi };
+enum class PreconditionerType { none, block_jacobi, ilu0 };
 
 struct SolverConfig {
   StokesChoice stokes = StokesChoice::automatic;  // key stokes = "auto" | "on" | "off"
@@ -69,7 +69,7 @@ struct SolverConfig {
   int gmres_restart = 60;
   double gmres_rtol = 1e-8;                       // relative to the right-hand side
   int gmres_max_iterations = 3000;
-  PreconditionerType preconditioner = PreconditionerType::block_jacobi;
+  PreconditionerType preconditioner = PreconditionerType::ilu0;
 };
 
 // Scales of the nondimensional solver variables; 0 = derive from the case.

@@ -500,7 +500,8 @@ void read_solver(const TableReader& root, SolverConfig& solver) {
   assign(solver.gmres_rtol, section.number("gmres_rtol", Range::open(0, 1)));
   assign(solver.gmres_max_iterations, section.integer("gmres_max_iterations", iteration_count));
   assign(solver.preconditioner,
-         section.choice("preconditioner", choices_of({PreconditionerType::block_jacobi, PreconditionerType::none})));
+         section.choice("preconditioner", choices_of({PreconditionerType::ilu0, PreconditionerType::block_jacobi,
+                                                               PreconditionerType::none})));
 }
 
 void read_scales(const TableReader& root, ScalesConfig& scales) {
@@ -542,7 +543,12 @@ const char* toml_name(StokesChoice choice) {
   return "?";
 }
 const char* toml_name(PreconditionerType type) {
-  return type == PreconditionerType::block_jacobi ? "block_jacobi" : "none";
+  switch (type) {
+    case PreconditionerType::ilu0: return "ilu0";
+    case PreconditionerType::block_jacobi: return "block_jacobi";
+    case PreconditionerType::none: break;
+  }
+  return "none";
 }
 
 CaseConfig load_case(const std::string& path, const std::vector<std::string>& overrides) {

@@ -162,8 +162,8 @@ void FluidOperator::diagonal_blocks(const ConstVector& state, const Vector& bloc
   if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_);
   Kokkos::deep_copy(blocks, 0.0);
   ScatterVector scatter(blocks);
-  FluidElementJacobianFunctor<Hex8, true, ScatterVector> f{
-      element_data(), state, history_, body_force_, state_gradient_, scatter, {}};
+  FluidElementJacobianFunctor<Hex8, JacobianSink::diagonal_blocks, ScatterVector> f{
+      element_data(), state, history_, body_force_, state_gradient_, scatter, {}, {}, {}, {}, {}};
   Kokkos::parallel_for("rouleau::FluidOperator::diagonal_blocks",
                        Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
   contribute_to(blocks, scatter);
@@ -179,10 +179,32 @@ void FluidOperator::diagonal_blocks(const ConstVector& state, const Vector& bloc
 
 void FluidOperator::element_matrices(const ConstVector& state, const Kokkos::View<double***>& matrices) const {
   if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_);
-  FluidElementJacobianFunctor<Hex8, false, ScatterVector> f{
-      element_data(), state, history_, body_force_, state_gradient_, {}, matrices};
+  FluidElementJacobianFunctor<Hex8, JacobianSink::element_matrices, ScatterVector> f{
+      element_data(), state, history_, body_force_, state_gradient_, {}, matrices, {}, {}, {}, {}};
   Kokkos::parallel_for("rouleau::FluidOperator::element_matrices",
                        Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
+}
+
+void FluidOperator::assemble_jacobian(const ConstVector& state, const FluidMatrixGraph& graph,
+                                      const Vector& values) const {
+  ProfilingRegion region("rouleau::FluidOperator::assemble_jacobian");
+  if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_);
+  Kokkos::deep_copy(values, 0.0);
+  FluidElementJacobianFunctor<Hex8, JacobianSink::crs, ScatterVector> f{
+      element_data(), state, history_, body_force_, state_gradient_, {}, {},
+      graph.row_map,  graph.node_offsets, graph.node_neighbors, values};
+  Kokkos::parallel_for("rouleau::FluidOperator::assemble_jacobian",
+                       Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
+  // A constrained row is the identity row.
+  auto dofs = dirichlet_dofs_;
+  auto row_map = graph.row_map;
+  auto entries = graph.entries;
+  Kokkos::parallel_for(
+      "rouleau::FluidOperator::dirichlet_crs_rows", Kokkos::RangePolicy<ExecSpace>(0, dofs.extent(0)),
+      KOKKOS_LAMBDA(const int k) {
+        const int row = dofs(k);
+        for (std::size_t p = row_map(row); p < row_map(row + 1); ++p) values(p) = entries(p) == row ? 1.0 : 0.0;
+      });
 }
 
 }  // namespace rouleau

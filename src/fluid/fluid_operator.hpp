@@ -11,6 +11,7 @@
 #include <Kokkos_Core.hpp>
 #include <vector>
 
+#include "fluid/fluid_matrix.hpp"
 #include "kernels/fluid_assembly.hpp"
 #include "mesh/fluid_mesh.hpp"
 
@@ -55,6 +56,9 @@ class FluidOperator {
   void linear_action(const ConstVector& direction, const Vector& result) const;
   // blocks(16·node + 4i + j) = ∂R_(node,i)/∂U_(node,j)
   void diagonal_blocks(const ConstVector& state, const Vector& blocks) const;
+  // The global Jacobian in CRS form on `graph` (with identity Dirichlet rows), for
+  // assembled preconditioners; exact without viscous reconstruction, which it holds fixed.
+  void assemble_jacobian(const ConstVector& state, const FluidMatrixGraph& graph, const Vector& values) const;
   // Element matrices K_e(4a+i, 4b+j) without Dirichlet rows (tests, assembly).
   void element_matrices(const ConstVector& state, const Kokkos::View<double***>& matrices) const;
 

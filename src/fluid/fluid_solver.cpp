@@ -66,6 +66,11 @@ FluidSolver::FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid,
   blocks_ = Vector("rouleau::FluidSolver::blocks", 16 * mesh.num_dof_nodes);
   operator_.set_dirichlet(boundary_.dirichlet_dofs, boundary_.dirichlet_values);
   operator_.set_nodal_load(boundary_.traction_load);
+  if (settings_.preconditioner == PreconditionerType::ilu0) {
+    matrix_graph_ = build_fluid_matrix_graph(mesh);
+    matrix_values_ = Vector("rouleau::FluidSolver::matrix_values", matrix_graph_.entries.extent(0));
+    ilu0_ = std::make_unique<Ilu0Preconditioner>(matrix_graph_.row_map, matrix_graph_.entries);
+  }
   operator_.impose_dirichlet(state_);
   set_uniform_body_force(fluid.body_force);
 }
@@ -175,6 +180,31 @@ void FluidSolver::block_norms(const ConstVector& r, double& momentum, double& co
   continuity = std::sqrt(c);
 }
 
+void FluidSolver::rebuild_preconditioner() {
+  ProfilingRegion region("rouleau::FluidSolver::preconditioner");
+  switch (settings_.preconditioner) {
+    case PreconditionerType::block_jacobi:
+      operator_.diagonal_blocks(state_, blocks_);
+      block_jacobi_.factor(blocks_);
+      break;
+    case PreconditionerType::ilu0:
+      operator_.assemble_jacobian(state_, matrix_graph_, matrix_values_);
+      ilu0_->factor(matrix_values_);
+      break;
+    case PreconditionerType::none:
+      break;
+  }
+}
+
+const Preconditioner& FluidSolver::preconditioner() const {
+  switch (settings_.preconditioner) {
+    case PreconditionerType::block_jacobi: return block_jacobi_;
+    case PreconditionerType::ilu0: return *ilu0_;
+    case PreconditionerType::none: break;
+  }
+  return identity_;
+}
+
 FluidSolveReport FluidSolver::solve(const ConstVector& history) {
   ProfilingRegion region("rouleau::FluidSolver::solve");
   FluidSolveReport report;
@@ -190,15 +220,10 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history) {
   while (report.failure.empty() && norm > target && report.newton_iterations < settings_.newton_max_iterations) {
     // Preconditioner from the Jacobian at the current state (constant in the Stokes limit).
     if (!linear || !preconditioner_current_) {
-      if (settings_.preconditioner == PreconditionerType::block_jacobi) {
-        operator_.diagonal_blocks(state_, blocks_);
-        block_jacobi_.factor(blocks_);
-      }
+      rebuild_preconditioner();
       preconditioner_current_ = true;
     }
-    const Preconditioner& M = settings_.preconditioner == PreconditionerType::block_jacobi
-                                  ? static_cast<const Preconditioner&>(block_jacobi_)
-                                  : identity_;
+    const Preconditioner& M = preconditioner();
     // J δ = −R, solved to the Eisenstat–Walker forcing term η_k (choice 2, γ = 0.9, α = 2):
     // η_k = γ (‖R_k‖/‖R_{k−1}‖)², safeguarded by γ η_{k−1}² when that exceeds 0.1, capped at
     // 0.1, and no tighter than needed to reach the Newton target. An affine (Stokes)

@@ -13,7 +13,9 @@
 #include "config/case_config.hpp"
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/fluid_operator.hpp"
+#include "fluid/fluid_matrix.hpp"
 #include "solver/block_jacobi.hpp"
+#include "solver/ilu0_preconditioner.hpp"
 #include "solver/gmres.hpp"
 
 namespace rouleau {
@@ -69,6 +71,9 @@ class FluidSolver {
 
  private:
   FluidSolveReport solve(const ConstVector& history);
+  // Rebuilds the configured preconditioner from the Jacobian at the current state.
+  void rebuild_preconditioner();
+  const Preconditioner& preconditioner() const;
   void block_norms(const ConstVector& r, double& momentum, double& continuity) const;
 
   FluidOperator operator_;
@@ -80,6 +85,9 @@ class FluidSolver {
   Vector residual_;  // also scratch for boundary_force() (const)
   BlockJacobi block_jacobi_;
   IdentityPreconditioner identity_;
+  FluidMatrixGraph matrix_graph_;               // ILU(0): the assembled Jacobian's graph,
+  Vector matrix_values_;                        // its values,
+  std::unique_ptr<Ilu0Preconditioner> ilu0_;    // and the factorization
   Gmres gmres_;
   bool preconditioner_current_ = false;  // Stokes: J is constant while dt is
   double last_mass_coefficient_ = -1.0;

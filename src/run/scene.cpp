@@ -14,12 +14,21 @@ std::vector<Stage> plan_stages(const CaseConfig& config, const DerivedQuantities
     fluid << "; " << (config.time.scheme == TimeScheme::bdf2 ? "BDF2" : "backward Euler") << " steps of "
           << config.time.dt << " s to " << config.time.end << " s";
   stages.push_back({"fluid", true, fluid.str()});
-  stages.push_back({"preconditioner", true,
-                    config.solver.preconditioner == PreconditionerType::block_jacobi
-                        ? std::string(derived.stokes ? "point-block Jacobi, built once (the Stokes operator is "
-                                                       "constant while dt is)"
-                                                     : "point-block Jacobi, rebuilt every Newton step")
-                        : std::string("none")});
+  std::string preconditioner;
+  const char* when = derived.stokes ? "built once (the Stokes operator is constant while dt is)"
+                                    : "rebuilt every Newton step";
+  switch (config.solver.preconditioner) {
+    case PreconditionerType::ilu0:
+      preconditioner = std::string("ILU(0) of the assembled Jacobian (KokkosKernels spiluk/sptrsv), ") + when;
+      break;
+    case PreconditionerType::block_jacobi:
+      preconditioner = std::string("point-block Jacobi (4x4 node blocks), ") + when;
+      break;
+    case PreconditionerType::none:
+      preconditioner = "none";
+      break;
+  }
+  stages.push_back({"preconditioner", true, preconditioner});
   const char* no_cells = "skipped: the scene has no cells";
   stages.push_back({"neo-Hookean cell forces", false, no_cells});
   stages.push_back({"Morse cell-cell forces", false, no_cells});

@@ -1,0 +1,38 @@
+#pragma once
+// Incomplete LU factorization without fill, ILU(0), of an assembled CRS matrix, through
+// KokkosKernels (spiluk for the factors, level-scheduled sptrsv for the two triangular
+// solves). M = L U with the sparsity of A; M⁻¹ r solves L y = r, then U z = y.
+#include <Kokkos_Core.hpp>
+#include <KokkosKernels_Handle.hpp>
+#include <cstddef>
+
+#include "solver/linear_operator.hpp"
+
+namespace rouleau {
+
+class Ilu0Preconditioner final : public Preconditioner {
+ public:
+  using ExecSpace = Kokkos::DefaultExecutionSpace;
+  using MemorySpace = ExecSpace::memory_space;
+  using Handle = KokkosKernels::Experimental::KokkosKernelsHandle<std::size_t, int, double, ExecSpace, MemorySpace,
+                                                                  MemorySpace>;
+
+  // The symbolic factorization on the graph (row_map, entries), done once.
+  Ilu0Preconditioner(const Kokkos::View<std::size_t*>& row_map, const Kokkos::View<int*>& entries);
+  ~Ilu0Preconditioner() override;
+  Ilu0Preconditioner(const Ilu0Preconditioner&) = delete;
+  Ilu0Preconditioner& operator=(const Ilu0Preconditioner&) = delete;
+
+  // The numeric factorization of the values on the graph.
+  void factor(const Kokkos::View<double*>& values);
+  void apply(const Kokkos::View<const double*>& r, const Kokkos::View<double*>& z) const override;
+
+ private:
+  int num_rows_;
+  Kokkos::View<std::size_t*> row_map_, lower_row_map_, upper_row_map_;
+  Kokkos::View<int*> entries_, lower_entries_, upper_entries_;
+  Kokkos::View<double*> lower_values_, upper_values_, intermediate_, right_hand_side_;
+  mutable Handle factor_handle_, lower_handle_, upper_handle_;
+};
+
+}  // namespace rouleau

@@ -78,6 +78,7 @@ void expect_identical_cases(const CaseConfig& a, const CaseConfig& b) {
     EXPECT_EQ(first.mean_speed, second.mean_speed);
     EXPECT_EQ(first.profile, second.profile);
     EXPECT_EQ(first.pressure, second.pressure);
+    EXPECT_EQ(first.parallel_flow, second.parallel_flow);
   }
   EXPECT_EQ(a.time.mode, b.time.mode);
   EXPECT_EQ(a.time.scheme, b.time.scheme);

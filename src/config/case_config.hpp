@@ -25,6 +25,9 @@ struct BoundaryConfig {
   double mean_speed = 0.0;                         // inflow mean speed [μm/s]   key mean_speed_um_s
   InflowProfile profile = InflowProfile::parabolic;  //                         key profile
   double pressure = 0.0;                           // traction pressure [Pa]     key pressure_Pa
+  // traction: the flow crosses the side normally (tangential velocity 0), as a fully
+  // developed inflow/outflow does; the tangential traction is then a reaction.  key parallel_flow
+  bool parallel_flow = false;
 };
 
 // The six sides, in this order, with these TOML names.

@@ -419,7 +419,7 @@ std::vector<std::string_view> boundary_keys_of(BoundaryType type) {
     case BoundaryType::periodic: return {};
     case BoundaryType::wall: return {"velocity_um_s"};
     case BoundaryType::inflow: return {"mean_speed_um_s", "profile"};
-    case BoundaryType::traction: return {"pressure_Pa"};
+    case BoundaryType::traction: return {"pressure_Pa", "parallel_flow"};
   }
   return {};
 }
@@ -429,7 +429,7 @@ void read_boundaries(const TableReader& root, DomainConfig& domain) {
       root.table("boundary", std::vector<std::string_view>(side_names.begin(), side_names.end()));
   for (int side = 0; side < 6; ++side) {
     const TableReader reader = boundaries.table(
-        side_names[side], {"type", "velocity_um_s", "mean_speed_um_s", "profile", "pressure_Pa"});
+        side_names[side], {"type", "velocity_um_s", "mean_speed_um_s", "profile", "pressure_Pa", "parallel_flow"});
     BoundaryConfig& boundary = domain.boundary[side];
     assign(boundary.type, reader.choice("type", choices_of({BoundaryType::periodic, BoundaryType::wall,
                                                                  BoundaryType::inflow, BoundaryType::traction})));
@@ -453,6 +453,7 @@ void read_boundaries(const TableReader& root, DomainConfig& domain) {
     assign(boundary.profile,
            reader.choice("profile", choices_of({InflowProfile::uniform, InflowProfile::parabolic})));
     assign(boundary.pressure, reader.number("pressure_Pa"));
+    assign(boundary.parallel_flow, reader.boolean("parallel_flow"));
   }
   for (int axis = 0; axis < 3; ++axis) {
     const int low = 2 * axis, high = 2 * axis + 1;

@@ -106,7 +106,10 @@ std::string resolved_case_toml(const CaseConfig& config, const DerivedQuantities
         toml_file.key("mean_speed_um_s", boundary.mean_speed);
         toml_file.key("profile", toml_name(boundary.profile));
         break;
-      case BoundaryType::traction: toml_file.key("pressure_Pa", boundary.pressure); break;
+      case BoundaryType::traction:
+        toml_file.key("pressure_Pa", boundary.pressure);
+        toml_file.key("parallel_flow", boundary.parallel_flow);
+        break;
     }
   }
 

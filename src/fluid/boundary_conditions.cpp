@@ -20,7 +20,9 @@ FluidBoundaryConditions build_boundary_conditions(const FluidMesh& mesh,
     const BoundaryFaces& b = mesh.boundary(side_names[side]);
     const int normal = side / 2;
     for (int node : b.nodes) {
-      double velocity[3] = {s.velocity[0], s.velocity[1], s.velocity[2]};
+      double velocity[3] = {0.0, 0.0, 0.0};
+      if (s.type == BoundaryType::wall)
+        for (int d = 0; d < 3; ++d) velocity[d] = s.velocity[d];
       if (s.type == BoundaryType::inflow) {
         // Inflow runs against the outward normal; parabolic: Π 4 s (1 − s) / (2/3) per bounded direction.
         double shape = 1.0;
@@ -33,12 +35,16 @@ FluidBoundaryConditions build_boundary_conditions(const FluidMesh& mesh,
         for (int d = 0; d < 3; ++d) velocity[d] = -b.outward_normal[d] * s.mean_speed * shape;
       }
       const int dof_node = mesh.dof_node_of_node[node];
-      for (int c = 0; c < 3; ++c) constrained[fluid_unknowns_per_node * dof_node + c] = velocity[c] / scales.velocity;
+      for (int c = 0; c < 3; ++c) {
+        // A parallel-flow traction side fixes only the tangential components (to 0).
+        if (s.type == BoundaryType::traction && c == normal) continue;
+        constrained[fluid_unknowns_per_node * dof_node + c] = velocity[c] / scales.velocity;
+      }
     }
   };
-  for (BoundaryType pass : {BoundaryType::inflow, BoundaryType::wall})
+  for (BoundaryType pass : {BoundaryType::traction, BoundaryType::inflow, BoundaryType::wall})
     for (int side = 0; side < 6; ++side)
-      if (sides[side].type == pass) apply_side(side);
+      if (sides[side].type == pass && (pass != BoundaryType::traction || sides[side].parallel_flow)) apply_side(side);
 
   // Traction load: for each planar quadrilateral face, ∫ N_a dA = A/4 at its corners.
   bc.traction_load = Kokkos::View<double*>("rouleau::FluidBoundaryConditions::traction_load", num_unknowns);

@@ -29,8 +29,9 @@ struct FluidBoundaryConditions {
   Kokkos::View<double*> traction_load;    // scaled nodal load ∫ N_a t dA, t = −p n
 };
 
-// Walls (no-slip or moving) and inflows give Dirichlet velocities; where sides meet, a
-// wall wins over an inflow. A parabolic inflow is the product of parabolas across the
+// Walls (no-slip or moving) and inflows give Dirichlet velocities, and traction sides with
+// parallel_flow a zero tangential velocity; where sides meet, a wall wins over an inflow,
+// which wins over a parallel-flow side. A parabolic inflow is the product of parabolas across the
 // face's non-periodic tangential directions, scaled to the requested mean speed.
 // Traction sides give the load ∫ N_a (−p n) dA. Without a traction side the pressure is
 // fixed to 0 at the first node.

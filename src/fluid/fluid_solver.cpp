@@ -283,7 +283,7 @@ FluidSolveReport FluidSolver::solve_steady() {
   FluidCoefficients c;
   c.reynolds = scales_.reynolds;
   c.convection = stokes_ ? 0 : 1;
-  c.viscous_reconstruction = stokes_ ? 0 : 1;
+  c.viscous_reconstruction = 1;
   c.mass_coefficient = 0.0;
   c.inverse_dt = 0.0;
   if (c.mass_coefficient != last_mass_coefficient_) preconditioner_current_ = false;
@@ -300,7 +300,7 @@ FluidSolveReport FluidSolver::advance(double dt, TimeScheme scheme) {
   FluidCoefficients c;
   c.reynolds = scales_.reynolds;
   c.convection = stokes_ ? 0 : 1;
-  c.viscous_reconstruction = stokes_ ? 0 : 1;
+  c.viscous_reconstruction = 1;
   c.mass_coefficient = a0 / dt_scaled;
   c.inverse_dt = 1.0 / dt_scaled;
   if (c.mass_coefficient != last_mass_coefficient_) preconditioner_current_ = false;

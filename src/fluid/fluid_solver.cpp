@@ -279,16 +279,21 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history) {
   return report;
 }
 
-FluidSolveReport FluidSolver::solve_steady() {
+void FluidSolver::set_time_coefficients(double mass_coefficient, double inverse_dt) {
   FluidCoefficients c;
   c.reynolds = scales_.reynolds;
   c.convection = stokes_ ? 0 : 1;
   c.viscous_reconstruction = 1;
-  c.mass_coefficient = 0.0;
-  c.inverse_dt = 0.0;
+  c.mass_coefficient = mass_coefficient;
+  c.inverse_dt = inverse_dt;
+  // The Stokes operator, and so its preconditioner, changes only with the time step.
   if (c.mass_coefficient != last_mass_coefficient_) preconditioner_current_ = false;
   last_mass_coefficient_ = c.mass_coefficient;
   operator_.set_coefficients(c);
+}
+
+FluidSolveReport FluidSolver::solve_steady() {
+  set_time_coefficients(0.0, 0.0);
   return solve(ConstVector());
 }
 
@@ -297,15 +302,7 @@ FluidSolveReport FluidSolver::advance(double dt, TimeScheme scheme) {
   const double dt_scaled = dt * scales_.velocity / scales_.length;
   const bool bdf2 = scheme == TimeScheme::bdf2 && steps_ > 0;
   const double a0 = bdf2 ? 1.5 : 1.0, a1 = bdf2 ? -2.0 : -1.0, a2 = bdf2 ? 0.5 : 0.0;
-  FluidCoefficients c;
-  c.reynolds = scales_.reynolds;
-  c.convection = stokes_ ? 0 : 1;
-  c.viscous_reconstruction = 1;
-  c.mass_coefficient = a0 / dt_scaled;
-  c.inverse_dt = 1.0 / dt_scaled;
-  if (c.mass_coefficient != last_mass_coefficient_) preconditioner_current_ = false;
-  last_mass_coefficient_ = c.mass_coefficient;
-  operator_.set_coefficients(c);
+  set_time_coefficients(a0 / dt_scaled, 1.0 / dt_scaled);
 
   // H = (α1 u^n + α2 u^{n−1}) / Δt̂
   Kokkos::deep_copy(older_state_, bdf2 ? previous_state_ : state_);

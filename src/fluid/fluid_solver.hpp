@@ -71,6 +71,8 @@ class FluidSolver {
 
  private:
   FluidSolveReport solve(const ConstVector& history);
+  // The operator's coefficients for a BDF mass coefficient α0/Δt and 1/Δt (scaled; 0, 0: steady).
+  void set_time_coefficients(double mass_coefficient, double inverse_dt);
   // Rebuilds the configured preconditioner from the Jacobian at the current state.
   void rebuild_preconditioner();
   const Preconditioner& preconditioner() const;

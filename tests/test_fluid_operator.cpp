@@ -16,15 +16,17 @@ namespace {
 
 // A tiny graded, partly periodic box with walls and a moving lid, in a Navier–Stokes
 // transient setting with O(1) Reynolds number so every term of the element is active.
-struct TinyProblem {
+// ExecSpace runs the operator's loops (the default space, or each host backend).
+template <class ExecSpace>
+struct TinyProblemOn {
   FluidMesh mesh = make_box_mesh({0.0, 0.0, 0.0}, {2.0, 1.0, 1.5}, {3, 3, 2}, {1.0, 2.0, 1.0}, {true, false, false});
-  FluidOperator op{mesh, 1.0};
+  BasicFluidOperator<ExecSpace> op{mesh, 1.0};
   Vector state{"state", static_cast<size_t>(mesh.num_unknowns())};
   Vector direction{"direction", static_cast<size_t>(mesh.num_unknowns())};
   Vector history{"history", static_cast<size_t>(mesh.num_unknowns())};
   Vector force{"force", static_cast<size_t>(mesh.num_unknowns())};
 
-  explicit TinyProblem(int convection, int viscous_reconstruction = 0) {
+  explicit TinyProblemOn(int convection, int viscous_reconstruction = 0) {
     FluidCoefficients c;
     c.viscous_reconstruction = viscous_reconstruction;
     c.reynolds = 3.0;
@@ -74,6 +76,8 @@ struct TinyProblem {
     return A;
   }
 };
+
+using TinyProblem = TinyProblemOn<Kokkos::DefaultExecutionSpace>;
 
 Eigen::VectorXd to_eigen(const Vector& v) {
   auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), v);
@@ -191,6 +195,47 @@ TEST(FluidOperator, CrsAssemblyMatchesElementAssembly) {
   EXPECT_NEAR(stored, A.squaredNorm(), 1e-12 * A.squaredNorm());
   EXPECT_LT(difference, 1e-13 * norm);
 }
+
+#if defined(KOKKOS_ENABLE_SERIAL) && defined(KOKKOS_ENABLE_OPENMP) && !defined(KOKKOS_ENABLE_CUDA)
+TEST(FluidOperator, SerialAndOpenMPBackendsAgreeToRoundOff) {
+  // Every pass of the operator on the Serial and the OpenMP backend, same inputs: the
+  // only difference allowed is the order of floating-point sums (scatter duplication).
+  TinyProblemOn<Kokkos::Serial> serial(1, 1);
+  TinyProblemOn<Kokkos::OpenMP> openmp(1, 1);
+  const int n = serial.mesh.num_unknowns();
+  auto compare = [](const char* what, const Vector& a, const Vector& b) {
+    const double difference = testing::relativeDifference(a, b);
+    std::printf("%-18s Serial vs OpenMP (%d threads): relative difference %.2e\n", what,
+                Kokkos::OpenMP().concurrency(), difference);
+    EXPECT_LT(difference, 1e-14) << what;
+  };
+  Vector a("a", n), b("b", n);
+  serial.op.residual(serial.state, serial.state, a);
+  openmp.op.residual(openmp.state, openmp.state, b);
+  compare("residual", a, b);
+  serial.op.jacobian_action(serial.state, serial.direction, a);
+  openmp.op.jacobian_action(openmp.state, openmp.direction, b);
+  compare("jacobian_action", a, b);
+  Vector ga("ga", 9 * serial.mesh.num_dof_nodes), gb("gb", 9 * serial.mesh.num_dof_nodes);
+  serial.op.project_gradient(serial.state, ga);
+  openmp.op.project_gradient(openmp.state, gb);
+  compare("project_gradient", ga, gb);
+  Vector ba("ba", 16 * serial.mesh.num_dof_nodes), bb("bb", 16 * serial.mesh.num_dof_nodes);
+  serial.op.diagonal_blocks(serial.state, ba);
+  openmp.op.diagonal_blocks(openmp.state, bb);
+  compare("diagonal_blocks", ba, bb);
+  const FluidMatrixGraph graph = build_fluid_matrix_graph(serial.mesh);
+  Vector ma("ma", graph.entries.extent(0)), mb("mb", graph.entries.extent(0));
+  serial.op.assemble_jacobian(serial.state, graph, ma);
+  openmp.op.assemble_jacobian(openmp.state, graph, mb);
+  compare("assemble_jacobian", ma, mb);
+  TinyProblemOn<Kokkos::Serial> serial_stokes(0, 1);
+  TinyProblemOn<Kokkos::OpenMP> openmp_stokes(0, 1);
+  serial_stokes.op.linear_action(serial_stokes.direction, a);
+  openmp_stokes.op.linear_action(openmp_stokes.direction, b);
+  compare("linear_action", a, b);
+}
+#endif
 
 TEST(FluidOperator, InvertedElementIsRejected) {
   FluidMesh mesh = make_box_mesh({0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {1, 1, 1}, {false, false, false});

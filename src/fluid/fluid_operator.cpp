@@ -11,18 +11,20 @@
 namespace rouleau {
 
 namespace {
-using ExecSpace = Kokkos::DefaultExecutionSpace;
-using ScatterVector = Kokkos::Experimental::ScatterView<double*>;
 
 void require_hexahedra(const FluidMesh& mesh) {
   if (mesh.element_type != FluidElementType::hexahedron8)
     throw std::invalid_argument("rouleau::FluidOperator: only 8-node hexahedra are implemented so far");
 }
 // Adds the scattered contributions into `target` (contribute wants a non-const View).
-void contribute_to(Vector target, ScatterVector& scatter) { Kokkos::Experimental::contribute(target, scatter); }
+template <class Scatter>
+void contribute_to(Vector target, Scatter& scatter) {
+  Kokkos::Experimental::contribute(target, scatter);
+}
 }  // namespace
 
-FluidOperator::FluidOperator(const FluidMesh& mesh, double length_scale)
+template <class ExecSpace>
+BasicFluidOperator<ExecSpace>::BasicFluidOperator(const FluidMesh& mesh, double length_scale)
     : mesh_(mesh), length_scale_(length_scale), num_unknowns_(mesh.num_unknowns()) {
   require_hexahedra(mesh_);
   ProfilingRegion region("rouleau::FluidOperator::setup");
@@ -45,18 +47,19 @@ FluidOperator::FluidOperator(const FluidMesh& mesh, double length_scale)
   direction_gradient_ =
       Kokkos::View<double*>("rouleau::FluidOperator::direction_gradient", 9 * mesh_.num_dof_nodes);
   Vector zero("rouleau::FluidOperator::zero", num_unknowns_);
-  ScatterVector gradient_scatter(state_gradient_), mass_scatter(lumped_mass_);
-  FluidGradientProjectionFunctor<Hex8, ScatterVector> mass{element_data(), zero, gradient_scatter, mass_scatter, true};
+  Scatter gradient_scatter(state_gradient_), mass_scatter(lumped_mass_);
+  FluidGradientProjectionFunctor<Hex8, Scatter> mass{element_data(), zero, gradient_scatter, mass_scatter, true};
   Kokkos::parallel_for("rouleau::FluidOperator::lumped_mass", Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements),
                        mass);
   contribute_to(lumped_mass_, mass_scatter);
 }
 
-void FluidOperator::project_gradient(const ConstVector& state, const Vector& gradient) const {
+template <class ExecSpace>
+void BasicFluidOperator<ExecSpace>::project_gradient(const ConstVector& state, const Vector& gradient) const {
   ProfilingRegion region("rouleau::FluidOperator::project_gradient");
   Kokkos::deep_copy(gradient, 0.0);
-  ScatterVector scatter(gradient);
-  FluidGradientProjectionFunctor<Hex8, ScatterVector> f{element_data(), state, scatter, scatter, false};
+  Scatter scatter(gradient);
+  FluidGradientProjectionFunctor<Hex8, Scatter> f{element_data(), state, scatter, scatter, false};
   Kokkos::parallel_for("rouleau::FluidOperator::project_gradient",
                        Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
   contribute_to(gradient, scatter);
@@ -66,11 +69,13 @@ void FluidOperator::project_gradient(const ConstVector& state, const Vector& gra
       KOKKOS_LAMBDA(const int k) { gradient(k) /= mass(k / 9); });
 }
 
-FluidElementData FluidOperator::element_data() const {
+template <class ExecSpace>
+FluidElementData BasicFluidOperator<ExecSpace>::element_data() const {
   return FluidElementData{mesh_.element_dof_nodes, geometry_, element_size_, coefficients_};
 }
 
-void FluidOperator::set_dirichlet(const std::vector<int>& dofs, const std::vector<double>& values) {
+template <class ExecSpace>
+void BasicFluidOperator<ExecSpace>::set_dirichlet(const std::vector<int>& dofs, const std::vector<double>& values) {
   if (dofs.size() != values.size()) throw std::invalid_argument("rouleau::FluidOperator::set_dirichlet: sizes differ");
   dirichlet_dofs_ = Kokkos::View<int*>("rouleau::FluidOperator::dirichlet_dofs", dofs.size());
   dirichlet_values_ = Kokkos::View<double*>("rouleau::FluidOperator::dirichlet_values", values.size());
@@ -84,7 +89,8 @@ void FluidOperator::set_dirichlet(const std::vector<int>& dofs, const std::vecto
   Kokkos::deep_copy(dirichlet_values_, v);
 }
 
-void FluidOperator::impose_dirichlet(const Vector& state) const {
+template <class ExecSpace>
+void BasicFluidOperator<ExecSpace>::impose_dirichlet(const Vector& state) const {
   auto dofs = dirichlet_dofs_;
   auto values = dirichlet_values_;
   Kokkos::parallel_for(
@@ -93,7 +99,8 @@ void FluidOperator::impose_dirichlet(const Vector& state) const {
 }
 
 // Dirichlet rows: R_d = U_d − g_d for a residual, (Jδ)_d = δ_d for an action.
-void FluidOperator::finish_rows(const ConstVector& state, const ConstVector& direction, bool residual_rows,
+template <class ExecSpace>
+void BasicFluidOperator<ExecSpace>::finish_rows(const ConstVector& state, const ConstVector& direction, bool residual_rows,
                                 const Vector& result) const {
   auto dofs = dirichlet_dofs_;
   auto values = dirichlet_values_;
@@ -105,13 +112,14 @@ void FluidOperator::finish_rows(const ConstVector& state, const ConstVector& dir
       });
 }
 
-void FluidOperator::residual(const ConstVector& state, const ConstVector& frozen, const Vector& result,
+template <class ExecSpace>
+void BasicFluidOperator<ExecSpace>::residual(const ConstVector& state, const ConstVector& frozen, const Vector& result,
                              bool constrained_rows) const {
   ProfilingRegion region("rouleau::FluidOperator::residual");
   if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_);
   Kokkos::deep_copy(result, 0.0);
-  ScatterVector scatter(result);
-  FluidResidualFunctor<Hex8, ScatterVector> f{element_data(), state,       frozen,         history_,
+  Scatter scatter(result);
+  FluidResidualFunctor<Hex8, Scatter> f{element_data(), state,       frozen,         history_,
                                               body_force_,    state_gradient_, scatter};
   Kokkos::parallel_for("rouleau::FluidOperator::residual", Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
   contribute_to(result, scatter);
@@ -124,7 +132,8 @@ void FluidOperator::residual(const ConstVector& state, const ConstVector& frozen
   if (constrained_rows) finish_rows(state, state, true, result);
 }
 
-void FluidOperator::jacobian_action(const ConstVector& state, const ConstVector& direction,
+template <class ExecSpace>
+void BasicFluidOperator<ExecSpace>::jacobian_action(const ConstVector& state, const ConstVector& direction,
                                     const Vector& result) const {
   ProfilingRegion region("rouleau::FluidOperator::jacobian_action");
   if (coefficients_.viscous_reconstruction) {
@@ -132,8 +141,8 @@ void FluidOperator::jacobian_action(const ConstVector& state, const ConstVector&
     project_gradient(direction, direction_gradient_);
   }
   Kokkos::deep_copy(result, 0.0);
-  ScatterVector scatter(result);
-  FluidJacobianActionFunctor<Hex8, ScatterVector> f{
+  Scatter scatter(result);
+  FluidJacobianActionFunctor<Hex8, Scatter> f{
       element_data(), state, direction, history_, body_force_, state_gradient_, direction_gradient_, scatter};
   Kokkos::parallel_for("rouleau::FluidOperator::jacobian_action",
                        Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
@@ -141,15 +150,16 @@ void FluidOperator::jacobian_action(const ConstVector& state, const ConstVector&
   finish_rows(state, direction, false, result);
 }
 
-void FluidOperator::linear_action(const ConstVector& direction, const Vector& result) const {
+template <class ExecSpace>
+void BasicFluidOperator<ExecSpace>::linear_action(const ConstVector& direction, const Vector& result) const {
   ProfilingRegion region("rouleau::FluidOperator::linear_action");
   if (coefficients_.convection)
     throw std::logic_error("rouleau::FluidOperator::linear_action: the residual is not affine with convection on");
   Kokkos::deep_copy(result, 0.0);
-  ScatterVector scatter(result);
+  Scatter scatter(result);
   if (coefficients_.viscous_reconstruction) project_gradient(direction, direction_gradient_);
   const ConstVector none;
-  FluidResidualFunctor<Hex8, ScatterVector> f{element_data(), direction, direction, none,
+  FluidResidualFunctor<Hex8, Scatter> f{element_data(), direction, direction, none,
                                               none,           direction_gradient_, scatter};
   Kokkos::parallel_for("rouleau::FluidOperator::linear_action", Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements),
                        f);
@@ -157,12 +167,13 @@ void FluidOperator::linear_action(const ConstVector& direction, const Vector& re
   finish_rows(direction, direction, false, result);
 }
 
-void FluidOperator::diagonal_blocks(const ConstVector& state, const Vector& blocks) const {
+template <class ExecSpace>
+void BasicFluidOperator<ExecSpace>::diagonal_blocks(const ConstVector& state, const Vector& blocks) const {
   ProfilingRegion region("rouleau::FluidOperator::diagonal_blocks");
   if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_);
   Kokkos::deep_copy(blocks, 0.0);
-  ScatterVector scatter(blocks);
-  FluidElementJacobianFunctor<Hex8, JacobianSink::diagonal_blocks, ScatterVector> f{
+  Scatter scatter(blocks);
+  FluidElementJacobianFunctor<Hex8, JacobianSink::diagonal_blocks, Scatter> f{
       element_data(), state, history_, body_force_, state_gradient_, scatter, {}, {}, {}, {}, {}};
   Kokkos::parallel_for("rouleau::FluidOperator::diagonal_blocks",
                        Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
@@ -177,20 +188,22 @@ void FluidOperator::diagonal_blocks(const ConstVector& state, const Vector& bloc
       });
 }
 
-void FluidOperator::element_matrices(const ConstVector& state, const Kokkos::View<double***>& matrices) const {
+template <class ExecSpace>
+void BasicFluidOperator<ExecSpace>::element_matrices(const ConstVector& state, const Kokkos::View<double***>& matrices) const {
   if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_);
-  FluidElementJacobianFunctor<Hex8, JacobianSink::element_matrices, ScatterVector> f{
+  FluidElementJacobianFunctor<Hex8, JacobianSink::element_matrices, Scatter> f{
       element_data(), state, history_, body_force_, state_gradient_, {}, matrices, {}, {}, {}, {}};
   Kokkos::parallel_for("rouleau::FluidOperator::element_matrices",
                        Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
 }
 
-void FluidOperator::assemble_jacobian(const ConstVector& state, const FluidMatrixGraph& graph,
+template <class ExecSpace>
+void BasicFluidOperator<ExecSpace>::assemble_jacobian(const ConstVector& state, const FluidMatrixGraph& graph,
                                       const Vector& values) const {
   ProfilingRegion region("rouleau::FluidOperator::assemble_jacobian");
   if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_);
   Kokkos::deep_copy(values, 0.0);
-  FluidElementJacobianFunctor<Hex8, JacobianSink::crs, ScatterVector> f{
+  FluidElementJacobianFunctor<Hex8, JacobianSink::crs, Scatter> f{
       element_data(), state, history_, body_force_, state_gradient_, {}, {},
       graph.row_map,  graph.node_offsets, graph.node_neighbors, values};
   Kokkos::parallel_for("rouleau::FluidOperator::assemble_jacobian",
@@ -206,5 +219,23 @@ void FluidOperator::assemble_jacobian(const ConstVector& state, const FluidMatri
         for (std::size_t p = row_map(row); p < row_map(row + 1); ++p) values(p) = entries(p) == row ? 1.0 : 0.0;
       });
 }
+
+// A device build instantiates its device space (the host spaces cannot reach its memory);
+// a host build every host backend it has, so the tests can compare them.
+#if defined(KOKKOS_ENABLE_CUDA)
+template class BasicFluidOperator<Kokkos::Cuda>;
+#elif defined(KOKKOS_ENABLE_HIP)
+template class BasicFluidOperator<Kokkos::Experimental::HIP>;
+#else
+#if defined(KOKKOS_ENABLE_SERIAL)
+template class BasicFluidOperator<Kokkos::Serial>;
+#endif
+#if defined(KOKKOS_ENABLE_OPENMP)
+template class BasicFluidOperator<Kokkos::OpenMP>;
+#endif
+#if defined(KOKKOS_ENABLE_THREADS)
+template class BasicFluidOperator<Kokkos::Threads>;
+#endif
+#endif
 
 }  // namespace rouleau

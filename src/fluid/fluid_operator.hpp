@@ -9,6 +9,7 @@
 // are nodal loads and do not enter the stabilization's strong residual). Quadrature
 // geometry is computed once, at construction: the mesh never moves.
 #include <Kokkos_Core.hpp>
+#include <Kokkos_ScatterView.hpp>
 #include <vector>
 
 #include "fluid/fluid_matrix.hpp"
@@ -20,10 +21,13 @@ namespace rouleau {
 using Vector = Kokkos::View<double*>;
 using ConstVector = Kokkos::View<const double*>;
 
-class FluidOperator {
+// ExecSpace runs the element loops; the default execution space in production, and
+// each host backend in the equivalence tests (all share the default memory space).
+template <class ExecSpace>
+class BasicFluidOperator {
  public:
   // `length_scale` [μm] scales the coordinates: the operator works in x/L.
-  FluidOperator(const FluidMesh& mesh, double length_scale);
+  BasicFluidOperator(const FluidMesh& mesh, double length_scale);
 
   int num_unknowns() const { return num_unknowns_; }
   const FluidMesh& mesh() const { return mesh_; }
@@ -72,6 +76,8 @@ class FluidOperator {
   double length_scale() const { return length_scale_; }
 
  private:
+  using Scatter = Kokkos::Experimental::ScatterView<double*, typename Vector::array_layout,
+                                                    typename ExecSpace::device_type>;
   FluidElementData element_data() const;
   void finish_rows(const ConstVector& state, const ConstVector& direction, bool residual_rows,
                    const Vector& result) const;
@@ -89,5 +95,11 @@ class FluidOperator {
   Kokkos::View<double*> lumped_mass_;                        // Σ_e ∫ N_a dV per dof node
   Kokkos::View<double*> state_gradient_, direction_gradient_;  // scratch for G(U), G(δ)
 };
+
+using FluidOperator = BasicFluidOperator<Kokkos::DefaultExecutionSpace>;
+
+// Instantiated (in fluid_operator.cpp) for every enabled execution space that can reach
+// the default memory space.
+extern template class BasicFluidOperator<Kokkos::DefaultExecutionSpace>;
 
 }  // namespace rouleau

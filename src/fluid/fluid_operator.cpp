@@ -21,6 +21,19 @@ template <class Scatter>
 void contribute_to(Vector target, Scatter& scatter) {
   Kokkos::Experimental::contribute(target, scatter);
 }
+// Dirichlet rows: R_d = U_d − g_d for a residual, (Jδ)_d = δ_d for an action. (A free
+// function: CUDA forbids extended lambdas in private member functions.)
+template <class ExecSpace>
+void apply_dirichlet_rows(const Kokkos::View<int*>& dofs, const Kokkos::View<double*>& values,
+                          const ConstVector& state, const ConstVector& direction, bool residual_rows,
+                          const Vector& result) {
+  Kokkos::parallel_for(
+      "rouleau::FluidOperator::dirichlet_rows", Kokkos::RangePolicy<ExecSpace>(0, dofs.extent(0)),
+      KOKKOS_LAMBDA(const int i) {
+        const int d = dofs(i);
+        result(d) = residual_rows ? state(d) - values(i) : direction(d);
+      });
+}
 }  // namespace
 
 template <class ExecSpace>
@@ -98,20 +111,6 @@ void BasicFluidOperator<ExecSpace>::impose_dirichlet(const Vector& state) const 
       KOKKOS_LAMBDA(const int i) { state(dofs(i)) = values(i); });
 }
 
-// Dirichlet rows: R_d = U_d − g_d for a residual, (Jδ)_d = δ_d for an action.
-template <class ExecSpace>
-void BasicFluidOperator<ExecSpace>::finish_rows(const ConstVector& state, const ConstVector& direction, bool residual_rows,
-                                const Vector& result) const {
-  auto dofs = dirichlet_dofs_;
-  auto values = dirichlet_values_;
-  Kokkos::parallel_for(
-      "rouleau::FluidOperator::dirichlet_rows", Kokkos::RangePolicy<ExecSpace>(0, dofs.extent(0)),
-      KOKKOS_LAMBDA(const int i) {
-        const int d = dofs(i);
-        result(d) = residual_rows ? state(d) - values(i) : direction(d);
-      });
-}
-
 template <class ExecSpace>
 void BasicFluidOperator<ExecSpace>::residual(const ConstVector& state, const ConstVector& frozen, const Vector& result,
                              bool constrained_rows) const {
@@ -129,7 +128,7 @@ void BasicFluidOperator<ExecSpace>::residual(const ConstVector& state, const Con
         "rouleau::FluidOperator::nodal_load", Kokkos::RangePolicy<ExecSpace>(0, num_unknowns_),
         KOKKOS_LAMBDA(const int i) { result(i) -= load(i); });
   }
-  if (constrained_rows) finish_rows(state, state, true, result);
+  if (constrained_rows) apply_dirichlet_rows<ExecSpace>(dirichlet_dofs_, dirichlet_values_, state, state, true, result);
 }
 
 template <class ExecSpace>
@@ -147,7 +146,7 @@ void BasicFluidOperator<ExecSpace>::jacobian_action(const ConstVector& state, co
   Kokkos::parallel_for("rouleau::FluidOperator::jacobian_action",
                        Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
   contribute_to(result, scatter);
-  finish_rows(state, direction, false, result);
+  apply_dirichlet_rows<ExecSpace>(dirichlet_dofs_, dirichlet_values_, state, direction, false, result);
 }
 
 template <class ExecSpace>
@@ -164,7 +163,7 @@ void BasicFluidOperator<ExecSpace>::linear_action(const ConstVector& direction, 
   Kokkos::parallel_for("rouleau::FluidOperator::linear_action", Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements),
                        f);
   contribute_to(result, scatter);
-  finish_rows(direction, direction, false, result);
+  apply_dirichlet_rows<ExecSpace>(dirichlet_dofs_, dirichlet_values_, direction, direction, false, result);
 }
 
 template <class ExecSpace>

@@ -79,9 +79,6 @@ class BasicFluidOperator {
   using Scatter = Kokkos::Experimental::ScatterView<double*, typename Vector::array_layout,
                                                     typename ExecSpace::device_type>;
   FluidElementData element_data() const;
-  void finish_rows(const ConstVector& state, const ConstVector& direction, bool residual_rows,
-                   const Vector& result) const;
-
   FluidMesh mesh_;
   double length_scale_;
   int num_unknowns_;

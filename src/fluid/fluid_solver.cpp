@@ -36,6 +36,24 @@ class FluidJacobian final : public LinearOperator {
   bool linear_;
 };
 
+// ‖R‖ over the velocity rows and over the pressure rows (a free function: CUDA forbids
+// extended lambdas in private member functions).
+void block_norms(const ConstVector& r, double& momentum, double& continuity) {
+  double m = 0.0, c = 0.0;
+  Kokkos::parallel_reduce(
+      "rouleau::FluidSolver::block_norms", Kokkos::RangePolicy<ExecSpace>(0, r.extent(0)),
+      KOKKOS_LAMBDA(const int i, double& sm, double& sc) {
+        const double v = r(i) * r(i);
+        if (i % 4 == 3)
+          sc += v;
+        else
+          sm += v;
+      },
+      m, c);
+  momentum = std::sqrt(m);
+  continuity = std::sqrt(c);
+}
+
 GmresSettings gmres_settings(const SolverConfig& s) {
   GmresSettings g;
   g.restart = s.gmres_restart;
@@ -162,22 +180,6 @@ std::array<double, 3> FluidSolver::mean_velocity() const {
       },
       volume, u[0], u[1], u[2]);
   return {u[0] / volume * scales_.velocity, u[1] / volume * scales_.velocity, u[2] / volume * scales_.velocity};
-}
-
-void FluidSolver::block_norms(const ConstVector& r, double& momentum, double& continuity) const {
-  double m = 0.0, c = 0.0;
-  Kokkos::parallel_reduce(
-      "rouleau::FluidSolver::block_norms", Kokkos::RangePolicy<ExecSpace>(0, r.extent(0)),
-      KOKKOS_LAMBDA(const int i, double& sm, double& sc) {
-        const double v = r(i) * r(i);
-        if (i % 4 == 3)
-          sc += v;
-        else
-          sm += v;
-      },
-      m, c);
-  momentum = std::sqrt(m);
-  continuity = std::sqrt(c);
 }
 
 void FluidSolver::rebuild_preconditioner() {

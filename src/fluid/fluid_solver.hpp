@@ -76,7 +76,6 @@ class FluidSolver {
   // Rebuilds the configured preconditioner from the Jacobian at the current state.
   void rebuild_preconditioner();
   const Preconditioner& preconditioner() const;
-  void block_norms(const ConstVector& r, double& momentum, double& continuity) const;
 
   FluidOperator operator_;
   FluidScales scales_;

@@ -125,7 +125,7 @@ TEST(ConfigLoad, GoodCaseHasTheConvertedValues) {
   EXPECT_FALSE(config.output.write_fields);
   EXPECT_EQ(config.output.fields_every_steps, 10);
   // keys the file leaves out keep the struct defaults
-  const rouleau::SolverConfig default_solver;
+  const rouleau::SolverConfig default_solver{};
   EXPECT_EQ(config.solver.newton_atol, default_solver.newton_atol);
   EXPECT_EQ(config.solver.gmres_max_iterations, default_solver.gmres_max_iterations);
   EXPECT_EQ(config.output.diagnostics_every_steps, 1);

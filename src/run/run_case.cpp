@@ -64,7 +64,6 @@ class StageTimes {
     seconds_[stage] += std::chrono::duration<double>(Clock::now() - start).count();
     return result;
   }
-  void add(const std::string& stage, double seconds) { seconds_[stage] += seconds; }
   void print(std::ostream& out) const {
     out << "time per stage:\n";
     for (const auto& [stage, s] : seconds_) {

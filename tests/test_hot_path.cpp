@@ -1,0 +1,78 @@
+// What the time loop moves between memory spaces, counted through Kokkos' profiling
+// hooks: after warm-up, a time step may copy whole fields between device Views (BDF
+// history, preconditioner input), but nothing through a host mirror. On a GPU build a
+// host mirror is the only way a field reaches the host, so this guards the hot path
+// against per-step host-device copies (DESIGN.md: the host only reads scalars).
+#include <gtest/gtest.h>
+
+#include <Kokkos_Core.hpp>
+#include <cstdint>
+#include <cstring>
+#include <string>
+
+#include "fluid/fluid_solver.hpp"
+
+namespace rouleau {
+namespace {
+
+struct CopyCount {
+  int copies = 0;          // deep copies between Views (fills excluded)
+  int fills = 0;           // deep_copy(View, scalar)
+  int through_mirror = 0;  // copies whose source or destination is a host mirror
+  std::uint64_t bytes = 0;
+};
+CopyCount counted;
+
+bool is_mirror(const char* label) {
+  const std::size_t n = std::strlen(label);
+  return n >= 7 && std::strcmp(label + n - 7, "_mirror") == 0;
+}
+
+// Kokkos_Profiling_beginDeepCopyFunction: destination handle/name/pointer, source
+// handle/name/pointer, size in bytes. deep_copy(View, value) reports the source "Scalar".
+void count_deep_copy(Kokkos_Profiling_SpaceHandle, const char* destination, const void*, Kokkos_Profiling_SpaceHandle,
+                     const char* source, const void*, std::uint64_t size) {
+  if (std::strcmp(source, "Scalar") == 0) {
+    ++counted.fills;
+    return;
+  }
+  ++counted.copies;
+  counted.bytes += size;
+  if (is_mirror(destination) || is_mirror(source)) ++counted.through_mirror;
+}
+
+TEST(HotPath, TimeStepsCopyNothingThroughAHostMirror) {
+  const FluidMesh mesh = make_box_mesh({0, 0, 0}, {2, 1, 1}, {8, 8, 4}, {1, 1, 1}, {true, false, true});
+  std::array<BoundaryConfig, 6> sides{};
+  sides[Side::x_min].type = sides[Side::x_max].type = BoundaryType::periodic;
+  sides[Side::z_min].type = sides[Side::z_max].type = BoundaryType::periodic;
+  sides[Side::y_max].velocity = {1.0, 0.0, 0.0};
+  FluidConfig fluid;
+  fluid.viscosity = 1.0;
+  fluid.density = 1.0;
+  FluidScales scales;
+  scales.reynolds = 1.0;
+  FluidSolver solver(mesh, fluid, sides, SolverConfig{}, scales, true);
+  for (int step = 0; step < 2; ++step) ASSERT_TRUE(solver.advance(0.01, TimeScheme::bdf2).converged);
+
+  counted = CopyCount{};
+  Kokkos::Tools::Experimental::set_begin_deep_copy_callback(count_deep_copy);
+  const int steps = 3;
+  int gmres_iterations = 0;
+  for (int step = 0; step < steps; ++step) {
+    const FluidSolveReport report = solver.advance(0.01, TimeScheme::bdf2);
+    ASSERT_TRUE(report.converged) << report.failure;
+    gmres_iterations += report.gmres_iterations;
+  }
+  Kokkos::Tools::Experimental::set_begin_deep_copy_callback(nullptr);
+
+  const double field_bytes = 8.0 * mesh.num_unknowns();
+  std::printf("per step: %.1f copies (%.1f whole fields), %.1f fills, %d through a host mirror; %.1f GMRES iterations\n",
+              double(counted.copies) / steps, counted.bytes / field_bytes / steps, double(counted.fills) / steps,
+              counted.through_mirror, double(gmres_iterations) / steps);
+  EXPECT_GT(counted.copies, 0);  // the hook is live: BDF shifts its history every step
+  EXPECT_EQ(counted.through_mirror, 0);
+}
+
+}  // namespace
+}  // namespace rouleau

@@ -1,6 +1,7 @@
-// What the time loop moves between memory spaces, counted through Kokkos' profiling
-// hooks: after warm-up, a time step may copy whole fields between device Views (BDF
-// history, preconditioner input), but nothing through a host mirror. On a GPU build a
+// What the time loop allocates and moves between memory spaces, counted through Kokkos'
+// profiling hooks: after warm-up, a time step allocates nothing, and may copy whole fields
+// between device Views (BDF history, preconditioner input), but nothing through a host
+// mirror. On a GPU build a
 // host mirror is the only way a field reaches the host, so this guards the hot path
 // against per-step host-device copies (DESIGN.md: the host only reads scalars).
 #include <gtest/gtest.h>
@@ -20,6 +21,8 @@ struct CopyCount {
   int fills = 0;           // deep_copy(View, scalar)
   int through_mirror = 0;  // copies whose source or destination is a host mirror
   std::uint64_t bytes = 0;
+  int allocations = 0;     // Kokkos allocations (Views, scatter buffers)
+  std::string first_allocation;
 };
 CopyCount counted;
 
@@ -41,7 +44,12 @@ void count_deep_copy(Kokkos_Profiling_SpaceHandle, const char* destination, cons
   if (is_mirror(destination) || is_mirror(source)) ++counted.through_mirror;
 }
 
-TEST(HotPath, TimeStepsCopyNothingThroughAHostMirror) {
+// Kokkos_Profiling_allocateDataFunction: space handle, label, pointer, size in bytes.
+void count_allocation(Kokkos_Profiling_SpaceHandle, const char* label, const void*, std::uint64_t) {
+  if (counted.allocations++ == 0) counted.first_allocation = label;
+}
+
+TEST(HotPath, TimeStepsAllocateNothingAndCopyNothingThroughAHostMirror) {
   const FluidMesh mesh = make_box_mesh({0, 0, 0}, {2, 1, 1}, {8, 8, 4}, {1, 1, 1}, {true, false, true});
   std::array<BoundaryConfig, 6> sides{};
   sides[Side::x_min].type = sides[Side::x_max].type = BoundaryType::periodic;
@@ -57,6 +65,7 @@ TEST(HotPath, TimeStepsCopyNothingThroughAHostMirror) {
 
   counted = CopyCount{};
   Kokkos::Tools::Experimental::set_begin_deep_copy_callback(count_deep_copy);
+  Kokkos::Tools::Experimental::set_allocate_data_callback(count_allocation);
   const int steps = 3;
   int gmres_iterations = 0;
   for (int step = 0; step < steps; ++step) {
@@ -65,13 +74,17 @@ TEST(HotPath, TimeStepsCopyNothingThroughAHostMirror) {
     gmres_iterations += report.gmres_iterations;
   }
   Kokkos::Tools::Experimental::set_begin_deep_copy_callback(nullptr);
+  Kokkos::Tools::Experimental::set_allocate_data_callback(nullptr);
 
   const double field_bytes = 8.0 * mesh.num_unknowns();
-  std::printf("per step: %.1f copies (%.1f whole fields), %.1f fills, %d through a host mirror; %.1f GMRES iterations\n",
+  std::printf("per step: %.1f copies (%.1f whole fields), %.1f fills, %d through a host mirror, %.1f allocations "
+              "(first: %s); %.1f GMRES iterations\n",
               double(counted.copies) / steps, counted.bytes / field_bytes / steps, double(counted.fills) / steps,
-              counted.through_mirror, double(gmres_iterations) / steps);
+              counted.through_mirror, double(counted.allocations) / steps, counted.first_allocation.c_str(),
+              double(gmres_iterations) / steps);
   EXPECT_GT(counted.copies, 0);  // the hook is live: BDF shifts its history every step
   EXPECT_EQ(counted.through_mirror, 0);
+  EXPECT_EQ(counted.allocations, 0) << "first: " << counted.first_allocation;
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <Kokkos_ScatterView.hpp>
 #include <sstream>
+#include <type_traits>
 #include <stdexcept>
 
 #include "kernels/fluid_assembly.hpp"
@@ -20,6 +21,27 @@ void require_hexahedra(const FluidMesh& mesh) {
 template <class Scatter>
 void contribute_to(Vector target, Scatter& scatter) {
   Kokkos::Experimental::contribute(target, scatter);
+}
+
+// Whether a ScatterView keeps per-thread copies (CPU threads) or adds atomically into
+// one buffer (GPUs, Serial).
+template <class Scatter>
+struct IsDuplicated : std::false_type {};
+template <class D, class L, class Dev, class Op, class C>
+struct IsDuplicated<Kokkos::Experimental::ScatterView<D, L, Dev, Op, Kokkos::Experimental::ScatterDuplicated, C>>
+    : std::true_type {};
+
+// target = the sum of the scatter buffer's contributions: its per-thread copies added
+// up, or its one buffer copied (Kokkos 3.4's contribute_into adds nothing from a
+// non-duplicated buffer into another View).
+template <class Scatter>
+void gather_into(const Vector& target, const Scatter& scatter) {
+  if constexpr (IsDuplicated<Scatter>::value) {
+    Kokkos::deep_copy(target, 0.0);
+    scatter.contribute_into(target);
+  } else {
+    Kokkos::deep_copy(target, scatter.subview());
+  }
 }
 // Dirichlet rows: R_d = U_d − g_d for a residual, (Jδ)_d = δ_d for an action. (A free
 // function: CUDA forbids extended lambdas in private member functions.)
@@ -70,12 +92,11 @@ BasicFluidOperator<ExecSpace>::BasicFluidOperator(const FluidMesh& mesh, double 
 template <class ExecSpace>
 void BasicFluidOperator<ExecSpace>::project_gradient(const ConstVector& state, const Vector& gradient) const {
   ProfilingRegion region("rouleau::FluidOperator::project_gradient");
-  Kokkos::deep_copy(gradient, 0.0);
-  Scatter scatter(gradient);
+  Scatter& scatter = zeroed_scatter(gradient_scatter_, gradient.extent(0), "rouleau::FluidOperator::gradient_scatter");
   FluidGradientProjectionFunctor<Hex8, Scatter> f{element_data(), state, scatter, scatter, false};
   Kokkos::parallel_for("rouleau::FluidOperator::project_gradient",
                        Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
-  contribute_to(gradient, scatter);
+  gather_into(gradient, scatter);
   auto mass = lumped_mass_;
   Kokkos::parallel_for(
       "rouleau::FluidOperator::project_gradient::divide", Kokkos::RangePolicy<ExecSpace>(0, gradient.extent(0)),
@@ -116,12 +137,11 @@ void BasicFluidOperator<ExecSpace>::residual(const ConstVector& state, const Con
                              bool constrained_rows) const {
   ProfilingRegion region("rouleau::FluidOperator::residual");
   if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_);
-  Kokkos::deep_copy(result, 0.0);
-  Scatter scatter(result);
+  Scatter& scatter = zeroed_scatter(unknowns_scatter_, result.extent(0), "rouleau::FluidOperator::unknowns_scatter");
   FluidResidualFunctor<Hex8, Scatter> f{element_data(), state,       frozen,         history_,
                                               body_force_,    state_gradient_, scatter};
   Kokkos::parallel_for("rouleau::FluidOperator::residual", Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
-  contribute_to(result, scatter);
+  gather_into(result, scatter);
   if (nodal_load_.extent(0) > 0) {
     auto load = nodal_load_;
     Kokkos::parallel_for(
@@ -139,13 +159,12 @@ void BasicFluidOperator<ExecSpace>::jacobian_action(const ConstVector& state, co
     project_gradient(state, state_gradient_);
     project_gradient(direction, direction_gradient_);
   }
-  Kokkos::deep_copy(result, 0.0);
-  Scatter scatter(result);
+  Scatter& scatter = zeroed_scatter(unknowns_scatter_, result.extent(0), "rouleau::FluidOperator::unknowns_scatter");
   FluidJacobianActionFunctor<Hex8, Scatter> f{
       element_data(), state, direction, history_, body_force_, state_gradient_, direction_gradient_, scatter};
   Kokkos::parallel_for("rouleau::FluidOperator::jacobian_action",
                        Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
-  contribute_to(result, scatter);
+  gather_into(result, scatter);
   apply_dirichlet_rows<ExecSpace>(dirichlet_dofs_, dirichlet_values_, state, direction, false, result);
 }
 
@@ -154,15 +173,14 @@ void BasicFluidOperator<ExecSpace>::linear_action(const ConstVector& direction, 
   ProfilingRegion region("rouleau::FluidOperator::linear_action");
   if (coefficients_.convection)
     throw std::logic_error("rouleau::FluidOperator::linear_action: the residual is not affine with convection on");
-  Kokkos::deep_copy(result, 0.0);
-  Scatter scatter(result);
+  Scatter& scatter = zeroed_scatter(unknowns_scatter_, result.extent(0), "rouleau::FluidOperator::unknowns_scatter");
   if (coefficients_.viscous_reconstruction) project_gradient(direction, direction_gradient_);
   const ConstVector none;
   FluidResidualFunctor<Hex8, Scatter> f{element_data(), direction, direction, none,
                                               none,           direction_gradient_, scatter};
   Kokkos::parallel_for("rouleau::FluidOperator::linear_action", Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements),
                        f);
-  contribute_to(result, scatter);
+  gather_into(result, scatter);
   apply_dirichlet_rows<ExecSpace>(dirichlet_dofs_, dirichlet_values_, direction, direction, false, result);
 }
 
@@ -170,13 +188,12 @@ template <class ExecSpace>
 void BasicFluidOperator<ExecSpace>::diagonal_blocks(const ConstVector& state, const Vector& blocks) const {
   ProfilingRegion region("rouleau::FluidOperator::diagonal_blocks");
   if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_);
-  Kokkos::deep_copy(blocks, 0.0);
-  Scatter scatter(blocks);
+  Scatter& scatter = zeroed_scatter(blocks_scatter_, blocks.extent(0), "rouleau::FluidOperator::blocks_scatter");
   FluidElementJacobianFunctor<Hex8, JacobianSink::diagonal_blocks, Scatter> f{
       element_data(), state, history_, body_force_, state_gradient_, scatter, {}, {}, {}, {}, {}};
   Kokkos::parallel_for("rouleau::FluidOperator::diagonal_blocks",
                        Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
-  contribute_to(blocks, scatter);
+  gather_into(blocks, scatter);
   // A constrained row is the identity row.
   auto dofs = dirichlet_dofs_;
   Kokkos::parallel_for(
@@ -217,6 +234,18 @@ void BasicFluidOperator<ExecSpace>::assemble_jacobian(const ConstVector& state, 
         const int row = dofs(k);
         for (std::size_t p = row_map(row); p < row_map(row + 1); ++p) values(p) = entries(p) == row ? 1.0 : 0.0;
       });
+}
+
+// A persistent scatter buffer of `size` entries, zeroed: allocated on first use (or when
+// the size changes), so the element loops allocate nothing per call.
+template <class ExecSpace>
+typename BasicFluidOperator<ExecSpace>::Scatter& BasicFluidOperator<ExecSpace>::zeroed_scatter(
+    Scatter& buffer, std::size_t size, const char* label) const {
+  if (!buffer.is_allocated() || buffer.subview().extent(0) != size)
+    buffer = Scatter(label, size);  // constructed zeroed
+  else
+    buffer.reset();
+  return buffer;
 }
 
 // A device build instantiates its device space (the host spaces cannot reach its memory);

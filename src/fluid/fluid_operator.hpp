@@ -79,6 +79,7 @@ class BasicFluidOperator {
   using Scatter = Kokkos::Experimental::ScatterView<double*, typename Vector::array_layout,
                                                     typename ExecSpace::device_type>;
   FluidElementData element_data() const;
+  Scatter& zeroed_scatter(Scatter& buffer, std::size_t size, const char* label) const;
   FluidMesh mesh_;
   double length_scale_;
   int num_unknowns_;
@@ -91,6 +92,9 @@ class BasicFluidOperator {
   ConstVector history_, body_force_;
   Kokkos::View<double*> lumped_mass_;                        // Σ_e ∫ N_a dV per dof node
   Kokkos::View<double*> state_gradient_, direction_gradient_;  // scratch for G(U), G(δ)
+  // Persistent scatter buffers of the element loops (per-thread copies on CPUs, the
+  // atomic target on GPUs), for results of the unknowns', gradients' and blocks' sizes.
+  mutable Scatter unknowns_scatter_, gradient_scatter_, blocks_scatter_;
 };
 
 using FluidOperator = BasicFluidOperator<Kokkos::DefaultExecutionSpace>;

@@ -140,48 +140,39 @@ void set_operator_counters(benchmark::State& state, const FluidMesh& mesh, Pass 
   state.counters["MB/application"] = operator_bytes(mesh, pass) * 1e-6;
 }
 
-void BM_JacobianAction(benchmark::State& state) {
-  OperatorProblem& p = problem(static_cast<int>(state.range(0)));
-  p.navier_stokes();
-  p.op.jacobian_action(p.state, p.direction, p.result);  // warm-up: first touch, allocations
+// Times `apply` (after one warm-up call: first touch, allocations) with fences around
+// each timed application.
+template <class Apply>
+void time_applications(benchmark::State& state, const Apply& apply) {
+  apply();
   Kokkos::fence();
   for (auto _ : state) {
     Kokkos::fence();
     Kokkos::Timer timer;
-    p.op.jacobian_action(p.state, p.direction, p.result);
+    apply();
     Kokkos::fence();
     state.SetIterationTime(seconds_since(timer));
   }
+}
+
+void BM_JacobianAction(benchmark::State& state) {
+  OperatorProblem& p = problem(static_cast<int>(state.range(0)));
+  p.navier_stokes();
+  time_applications(state, [&] { p.op.jacobian_action(p.state, p.direction, p.result); });
   set_operator_counters(state, p.mesh, Pass::jacobian_action);
 }
 
 void BM_LinearAction(benchmark::State& state) {
   OperatorProblem& p = problem(static_cast<int>(state.range(0)));
   p.stokes();
-  p.op.linear_action(p.direction, p.result);
-  Kokkos::fence();
-  for (auto _ : state) {
-    Kokkos::fence();
-    Kokkos::Timer timer;
-    p.op.linear_action(p.direction, p.result);
-    Kokkos::fence();
-    state.SetIterationTime(seconds_since(timer));
-  }
+  time_applications(state, [&] { p.op.linear_action(p.direction, p.result); });
   set_operator_counters(state, p.mesh, Pass::linear_action);
 }
 
 void BM_Residual(benchmark::State& state) {
   OperatorProblem& p = problem(static_cast<int>(state.range(0)));
   p.navier_stokes();
-  p.op.residual(p.state, p.state, p.result);
-  Kokkos::fence();
-  for (auto _ : state) {
-    Kokkos::fence();
-    Kokkos::Timer timer;
-    p.op.residual(p.state, p.state, p.result);
-    Kokkos::fence();
-    state.SetIterationTime(seconds_since(timer));
-  }
+  time_applications(state, [&] { p.op.residual(p.state, p.state, p.result); });
   set_operator_counters(state, p.mesh, Pass::residual);
 }
 

@@ -94,9 +94,7 @@ void BasicFluidOperator<ExecSpace>::project_gradient(const ConstVector& state, c
   ProfilingRegion region("rouleau::FluidOperator::project_gradient");
   Scatter& scatter = zeroed_scatter(gradient_scatter_, gradient.extent(0), "rouleau::FluidOperator::gradient_scatter");
   FluidGradientProjectionFunctor<Hex8, Scatter> f{element_data(), state, scatter, scatter, false};
-  Kokkos::parallel_for("rouleau::FluidOperator::project_gradient",
-                       Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
-  gather_into(gradient, scatter);
+  for_each_element("rouleau::FluidOperator::project_gradient", f, scatter, gradient);
   auto mass = lumped_mass_;
   Kokkos::parallel_for(
       "rouleau::FluidOperator::project_gradient::divide", Kokkos::RangePolicy<ExecSpace>(0, gradient.extent(0)),
@@ -140,8 +138,7 @@ void BasicFluidOperator<ExecSpace>::residual(const ConstVector& state, const Con
   Scatter& scatter = zeroed_scatter(unknowns_scatter_, result.extent(0), "rouleau::FluidOperator::unknowns_scatter");
   FluidResidualFunctor<Hex8, Scatter> f{element_data(), state,       frozen,         history_,
                                               body_force_,    state_gradient_, scatter};
-  Kokkos::parallel_for("rouleau::FluidOperator::residual", Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
-  gather_into(result, scatter);
+  for_each_element("rouleau::FluidOperator::residual", f, scatter, result);
   if (nodal_load_.extent(0) > 0) {
     auto load = nodal_load_;
     Kokkos::parallel_for(
@@ -162,9 +159,7 @@ void BasicFluidOperator<ExecSpace>::jacobian_action(const ConstVector& state, co
   Scatter& scatter = zeroed_scatter(unknowns_scatter_, result.extent(0), "rouleau::FluidOperator::unknowns_scatter");
   FluidJacobianActionFunctor<Hex8, Scatter> f{
       element_data(), state, direction, history_, body_force_, state_gradient_, direction_gradient_, scatter};
-  Kokkos::parallel_for("rouleau::FluidOperator::jacobian_action",
-                       Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
-  gather_into(result, scatter);
+  for_each_element("rouleau::FluidOperator::jacobian_action", f, scatter, result);
   apply_dirichlet_rows<ExecSpace>(dirichlet_dofs_, dirichlet_values_, state, direction, false, result);
 }
 
@@ -178,9 +173,7 @@ void BasicFluidOperator<ExecSpace>::linear_action(const ConstVector& direction, 
   const ConstVector none;
   FluidResidualFunctor<Hex8, Scatter> f{element_data(), direction, direction, none,
                                               none,           direction_gradient_, scatter};
-  Kokkos::parallel_for("rouleau::FluidOperator::linear_action", Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements),
-                       f);
-  gather_into(result, scatter);
+  for_each_element("rouleau::FluidOperator::linear_action", f, scatter, result);
   apply_dirichlet_rows<ExecSpace>(dirichlet_dofs_, dirichlet_values_, direction, direction, false, result);
 }
 
@@ -191,9 +184,7 @@ void BasicFluidOperator<ExecSpace>::diagonal_blocks(const ConstVector& state, co
   Scatter& scatter = zeroed_scatter(blocks_scatter_, blocks.extent(0), "rouleau::FluidOperator::blocks_scatter");
   FluidElementJacobianFunctor<Hex8, JacobianSink::diagonal_blocks, Scatter> f{
       element_data(), state, history_, body_force_, state_gradient_, scatter, {}, {}, {}, {}, {}};
-  Kokkos::parallel_for("rouleau::FluidOperator::diagonal_blocks",
-                       Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
-  gather_into(blocks, scatter);
+  for_each_element("rouleau::FluidOperator::diagonal_blocks", f, scatter, blocks);
   // A constrained row is the identity row.
   auto dofs = dirichlet_dofs_;
   Kokkos::parallel_for(
@@ -234,6 +225,16 @@ void BasicFluidOperator<ExecSpace>::assemble_jacobian(const ConstVector& state, 
         const int row = dofs(k);
         for (std::size_t p = row_map(row); p < row_map(row + 1); ++p) values(p) = entries(p) == row ? 1.0 : 0.0;
       });
+}
+
+// Runs the element functor `f` over every element, then gathers its scatter buffer into
+// `target`.
+template <class ExecSpace>
+template <class Functor>
+void BasicFluidOperator<ExecSpace>::for_each_element(const char* label, const Functor& f, const Scatter& scatter,
+                                                     const Vector& target) const {
+  Kokkos::parallel_for(label, Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
+  gather_into(target, scatter);
 }
 
 // A persistent scatter buffer of `size` entries, zeroed: allocated on first use (or when

@@ -80,6 +80,8 @@ class BasicFluidOperator {
                                                     typename ExecSpace::device_type>;
   FluidElementData element_data() const;
   Scatter& zeroed_scatter(Scatter& buffer, std::size_t size, const char* label) const;
+  template <class Functor>
+  void for_each_element(const char* label, const Functor& f, const Scatter& scatter, const Vector& target) const;
   FluidMesh mesh_;
   double length_scale_;
   int num_unknowns_;

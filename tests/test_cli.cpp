@@ -17,6 +17,7 @@
 #include "rouleau_version.hpp"
 #include "util/errors.hpp"
 #include "run_rouleau.hpp"
+#include "bad_case_files.hpp"
 
 namespace {
 
@@ -124,13 +125,6 @@ TEST(CliInfo, LinesAreAligned) {
 
 std::size_t line_count(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
 
-std::string expected_key_of(const std::string& path) {
-  std::ifstream file(path);
-  std::string line;
-  while (std::getline(file, line))
-    if (line.rfind("# expect-key: ", 0) == 0) return line.substr(14);
-  return {};
-}
 
 TEST(CliExecutable, CheckGoodCasePrintsItsSummary) {
   const Outcome outcome = run_rouleau("check '" + good_case + "'");

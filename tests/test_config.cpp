@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "bad_case_files.hpp"
 #include "config/derived.hpp"
 #include "config/load_case.hpp"
 #include "config/resolved_case.hpp"
@@ -50,14 +51,6 @@ InputError load_error(const std::string& path, const std::vector<std::string>& o
   return InputError("", "", "");
 }
 
-// The key a bad case file expects in its error ("# expect-key: KEY" on its second line).
-std::string expected_key_of(const std::string& path) {
-  std::ifstream file(path);
-  std::string line;
-  while (std::getline(file, line))
-    if (line.rfind("# expect-key: ", 0) == 0) return line.substr(14);
-  return {};
-}
 
 // Every field of two cases (source_file aside) is exactly equal.
 void expect_identical_cases(const CaseConfig& a, const CaseConfig& b) {

@@ -150,15 +150,19 @@ void BasicFluidOperator<ExecSpace>::residual(const ConstVector& state, const Con
 
 template <class ExecSpace>
 void BasicFluidOperator<ExecSpace>::jacobian_action(const ConstVector& state, const ConstVector& direction,
-                                    const Vector& result) const {
+                                                    const Vector& result) const {
+  if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_);
+  jacobian_action(state, state_gradient_, direction, result);
+}
+
+template <class ExecSpace>
+void BasicFluidOperator<ExecSpace>::jacobian_action(const ConstVector& state, const ConstVector& state_gradient,
+                                                    const ConstVector& direction, const Vector& result) const {
   ProfilingRegion region("rouleau::FluidOperator::jacobian_action");
-  if (coefficients_.viscous_reconstruction) {
-    project_gradient(state, state_gradient_);
-    project_gradient(direction, direction_gradient_);
-  }
+  if (coefficients_.viscous_reconstruction) project_gradient(direction, direction_gradient_);
   Scatter& scatter = zeroed_scatter(unknowns_scatter_, result.extent(0), "rouleau::FluidOperator::unknowns_scatter");
   FluidJacobianActionFunctor<Hex8, Scatter> f{
-      element_data(), state, direction, history_, body_force_, state_gradient_, direction_gradient_, scatter};
+      element_data(), state, direction, history_, body_force_, state_gradient, direction_gradient_, scatter};
   for_each_element("rouleau::FluidOperator::jacobian_action", f, scatter, result);
   apply_dirichlet_rows<ExecSpace>(dirichlet_dofs_, dirichlet_values_, state, direction, false, result);
 }

@@ -57,6 +57,10 @@ class BasicFluidOperator {
   void residual(const ConstVector& state, const ConstVector& frozen, const Vector& result,
                 bool constrained_rows = true) const;
   void jacobian_action(const ConstVector& state, const ConstVector& direction, const Vector& result) const;
+  // The same with the projected gradient G(U) of `state` given (project_gradient), for
+  // a Krylov solve that applies J(U) many times at one state.
+  void jacobian_action(const ConstVector& state, const ConstVector& state_gradient, const ConstVector& direction,
+                       const Vector& result) const;
   void linear_action(const ConstVector& direction, const Vector& result) const;
   // blocks(16·node + 4i + j) = ∂R_(node,i)/∂U_(node,j)
   void diagonal_blocks(const ConstVector& state, const Vector& blocks) const;

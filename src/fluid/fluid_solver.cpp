@@ -19,20 +19,24 @@ namespace {
 using ExecSpace = Kokkos::DefaultExecutionSpace;
 
 // J(U)·x through the element kernels (Navier–Stokes), or A·x (Stokes: affine residual).
+// The state's projected gradient is computed once: U is fixed during the Krylov solve.
 class FluidJacobian final : public LinearOperator {
  public:
-  FluidJacobian(const FluidOperator& op, const ConstVector& state, bool linear)
-      : op_(op), state_(state), linear_(linear) {}
+  FluidJacobian(const FluidOperator& op, const ConstVector& state, const Vector& state_gradient, bool linear)
+      : op_(op), state_(state), state_gradient_(state_gradient), linear_(linear) {
+    if (!linear_ && op_.coefficients().viscous_reconstruction) op_.project_gradient(state_, state_gradient_);
+  }
   void apply(const ConstVector& x, const Vector& y) const override {
     if (linear_)
       op_.linear_action(x, y);
     else
-      op_.jacobian_action(state_, x, y);
+      op_.jacobian_action(state_, state_gradient_, x, y);
   }
 
  private:
   const FluidOperator& op_;
   ConstVector state_;
+  Vector state_gradient_;
   bool linear_;
 };
 
@@ -82,6 +86,7 @@ FluidSolver::FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid,
   residual_ = Vector("rouleau::FluidSolver::residual", n);
   correction_ = Vector("rouleau::FluidSolver::correction", n);
   blocks_ = Vector("rouleau::FluidSolver::blocks", 16 * mesh.num_dof_nodes);
+  state_gradient_ = Vector("rouleau::FluidSolver::state_gradient", 9 * mesh.num_dof_nodes);
   operator_.set_dirichlet(boundary_.dirichlet_dofs, boundary_.dirichlet_values);
   operator_.set_nodal_load(boundary_.traction_load);
   if (settings_.preconditioner == PreconditionerType::ilu0) {
@@ -242,7 +247,7 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history) {
     previous_norm = norm;
     KokkosBlas::axpby(-1.0, residual_, 0.0, residual_);
     Kokkos::deep_copy(correction_, 0.0);
-    FluidJacobian J(operator_, state_, linear);
+    FluidJacobian J(operator_, state_, state_gradient_, linear);
     const GmresResult g = gmres_.solve(J, M, residual_, correction_, forcing);
     report.gmres_iterations += g.iterations;
     ++report.newton_iterations;

@@ -84,6 +84,7 @@ class FluidSolver {
   FluidBoundaryConditions boundary_;
   Vector state_, previous_state_, older_state_, history_, body_force_, correction_, blocks_;
   Vector residual_;  // also scratch for boundary_force() (const)
+  Vector state_gradient_;  // G(U) during a Krylov solve
   BlockJacobi block_jacobi_;
   IdentityPreconditioner identity_;
   FluidMatrixGraph matrix_graph_;               // ILU(0): the assembled Jacobian's graph,

@@ -3,25 +3,18 @@
 // stress τ_w = μ γ̇). The four-cell cases fill this box with cells.
 //   case_shear_flow [CASE.toml] [OUT_DIR]
 #include <Kokkos_Core.hpp>
-#include <cmath>
 #include <cstdio>
 
-#include "config/load_case.hpp"
 #include "io/diagnostics_reader.hpp"
 #include "run/run_case.hpp"
 
 int main(int argc, char** argv) {
   Kokkos::ScopeGuard kokkos(argc, argv);
-  // Inputs
-  const std::string case_file = argc > 1 ? argv[1] : ROULEAU_CASE_DIR "/case.toml";
-  rouleau::RunOptions options;
-  options.output_dir = argc > 2 ? argv[2] : "runs/shear_flow";
-  const rouleau::CaseConfig config = rouleau::load_case(case_file);
-  // Run
-  const int status = rouleau::run_case(config, options);
-  if (status != 0) return status;
+  // Inputs and run
+  const auto run = rouleau::run_case_driver(argc, argv, ROULEAU_CASE_DIR "/case.toml", "runs/shear_flow");
+  if (run.status != 0) return run.status;
   // What is special to this case: the suspension's rheology (here plasma alone).
-  const auto last = rouleau::read_last_diagnostics(options.output_dir + "/diagnostics.csv");
+  const auto last = rouleau::read_last_diagnostics(run.options.output_dir + "/diagnostics.csv");
   std::printf("wall shear stress %.6g Pa (top), %.6g Pa (bottom); relative apparent viscosity %.6f\n",
               last.at("wall_shear_stress_y_max_Pa"), last.at("wall_shear_stress_y_min_Pa"),
               last.at("relative_apparent_viscosity"));

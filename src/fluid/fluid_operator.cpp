@@ -17,12 +17,6 @@ void require_hexahedra(const FluidMesh& mesh) {
   if (mesh.element_type != FluidElementType::hexahedron8)
     throw std::invalid_argument("rouleau::FluidOperator: only 8-node hexahedra are implemented so far");
 }
-// Adds the scattered contributions into `target` (contribute wants a non-const View).
-template <class Scatter>
-void contribute_to(Vector target, Scatter& scatter) {
-  Kokkos::Experimental::contribute(target, scatter);
-}
-
 // Whether a ScatterView keeps per-thread copies (CPU threads) or adds atomically into
 // one buffer (GPUs, Serial).
 template <class Scatter>
@@ -82,11 +76,12 @@ BasicFluidOperator<ExecSpace>::BasicFluidOperator(const FluidMesh& mesh, double 
   direction_gradient_ =
       Kokkos::View<double*>("rouleau::FluidOperator::direction_gradient", 9 * mesh_.num_dof_nodes);
   Vector zero("rouleau::FluidOperator::zero", num_unknowns_);
-  Scatter gradient_scatter(state_gradient_), mass_scatter(lumped_mass_);
-  FluidGradientProjectionFunctor<Hex8, Scatter> mass{element_data(), zero, gradient_scatter, mass_scatter, true};
-  Kokkos::parallel_for("rouleau::FluidOperator::lumped_mass", Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements),
-                       mass);
-  contribute_to(lumped_mass_, mass_scatter);
+  // The lumped mass comes with a gradient projection of the zero field (discarded).
+  Scatter& gradient = zeroed_scatter(gradient_scatter_, state_gradient_.extent(0),
+                                     "rouleau::FluidOperator::gradient_scatter");
+  Scatter mass_scatter("rouleau::FluidOperator::mass_scatter", mesh_.num_dof_nodes);
+  FluidGradientProjectionFunctor<Hex8, Scatter> mass{element_data(), zero, gradient, mass_scatter, true};
+  for_each_element("rouleau::FluidOperator::lumped_mass", mass, mass_scatter, lumped_mass_);
 }
 
 template <class ExecSpace>

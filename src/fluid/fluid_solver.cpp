@@ -145,20 +145,25 @@ void FluidSolver::prescribe_boundary_velocity(
   operator_.impose_dirichlet(state_);
 }
 
-std::array<double, 3> FluidSolver::boundary_force(const std::string& side) const {
+std::vector<std::array<double, 3>> FluidSolver::boundary_forces(const std::vector<std::string>& sides) const {
   const FluidMesh& mesh = operator_.mesh();
+  // One residual without constraint rows and one host copy for all the sides asked.
   operator_.residual(state_, state_, residual_, false);
   auto r = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), residual_);
-  std::vector<int> dof_nodes;
-  for (int node : mesh.boundary(side).nodes) dof_nodes.push_back(mesh.dof_node_of_node[node]);
-  std::sort(dof_nodes.begin(), dof_nodes.end());
-  dof_nodes.erase(std::unique(dof_nodes.begin(), dof_nodes.end()), dof_nodes.end());
-  // R_a = ∫ ∇N_a : σ − ... = the force the wall exerts on the fluid at node a; the fluid
-  // pushes back with −R_a. Scaled force → pN: × P L².
-  std::array<double, 3> force{0.0, 0.0, 0.0};
-  for (int n : dof_nodes)
-    for (int d = 0; d < 3; ++d) force[d] -= r(4 * n + d) * scales_.force();
-  return force;
+  std::vector<std::array<double, 3>> forces;
+  for (const std::string& side : sides) {
+    std::vector<int> dof_nodes;
+    for (int node : mesh.boundary(side).nodes) dof_nodes.push_back(mesh.dof_node_of_node[node]);
+    std::sort(dof_nodes.begin(), dof_nodes.end());
+    dof_nodes.erase(std::unique(dof_nodes.begin(), dof_nodes.end()), dof_nodes.end());
+    // R_a = ∫ ∇N_a : σ − ... = the force the wall exerts on the fluid at node a; the fluid
+    // pushes back with −R_a. Scaled force → pN: × P L².
+    std::array<double, 3> force{0.0, 0.0, 0.0};
+    for (int n : dof_nodes)
+      for (int d = 0; d < 3; ++d) force[d] -= r(4 * n + d) * scales_.force();
+    forces.push_back(force);
+  }
+  return forces;
 }
 
 std::array<double, 3> FluidSolver::mean_velocity() const {

@@ -54,9 +54,10 @@ class FluidSolver {
   // velocity(x) [μm/s] at the node's position x [μm] (manufactured solutions, custom inflows).
   void prescribe_boundary_velocity(const std::function<std::array<double, 3>(const std::array<double, 3>&)>& velocity);
 
-  // Force [pN] that the fluid exerts on the boundary `side` (a wall), from the consistent
-  // nodal reactions: the residual at the constrained nodes before the constraint rows.
-  std::array<double, 3> boundary_force(const std::string& side) const;
+  // Forces [pN] that the fluid exerts on each of the boundary `sides` (walls), from the
+  // consistent nodal reactions: the residual at the constrained nodes before the
+  // constraint rows (one residual evaluation for all sides).
+  std::vector<std::array<double, 3>> boundary_forces(const std::vector<std::string>& sides) const;
   // Volume average of the velocity [μm/s].
   std::array<double, 3> mean_velocity() const;
 
@@ -83,7 +84,7 @@ class FluidSolver {
   bool stokes_;
   FluidBoundaryConditions boundary_;
   Vector state_, previous_state_, older_state_, history_, body_force_, correction_, blocks_;
-  Vector residual_;  // also scratch for boundary_force() (const)
+  Vector residual_;  // also scratch for boundary_forces() (const)
   Vector state_gradient_;  // G(U) during a Krylov solve
   BlockJacobi block_jacobi_;
   IdentityPreconditioner identity_;

@@ -11,6 +11,7 @@
 
 #include "cli/progress.hpp"
 #include "config/derived.hpp"
+#include "config/load_case.hpp"
 #include "config/resolved_case.hpp"
 #include "fluid/fluid_solver.hpp"
 #include "io/atomic_file.hpp"
@@ -113,13 +114,16 @@ struct FluidDiagnostics {
     const DomainConfig& domain = config.domain;
     const double area = (domain.upper[0] - domain.lower[0]) * (domain.upper[2] - domain.lower[2]);
     double shear[2] = {NAN, NAN};
-    for (int k = 0; k < 2; ++k) {
-      const int side = Side::y_min + k;
-      if (domain.boundary[side].type != BoundaryType::wall) continue;
+    std::vector<std::string> walls;
+    for (int k = 0; k < 2; ++k)
+      if (domain.boundary[Side::y_min + k].type == BoundaryType::wall) walls.push_back(side_names[Side::y_min + k]);
+    const auto forces = solver.boundary_forces(walls);
+    for (size_t w = 0; w < walls.size(); ++w) {
+      const int k = walls[w] == side_names[Side::y_min] ? 0 : 1;
       // τ_w = μ ∂u_x/∂y at the wall = −n_y F_x / A, with F the force the fluid exerts on the
       // wall and n_y the fluid's outward normal: positive on both walls in simple shear.
       const double outward_normal_y = k == 0 ? -1.0 : 1.0;
-      shear[k] = -outward_normal_y * solver.boundary_force(side_names[side])[0] / area;
+      shear[k] = -outward_normal_y * forces[w][0] / area;
     }
     // Simple shear between the y walls: γ̇ = (U_top − U_bottom)/H, τ_w = μ γ̇ for plasma alone.
     double relative_viscosity = NAN;
@@ -225,6 +229,15 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
   times.print(std::cerr);
   std::cerr << "wrote " << out << "/" << (fields ? "fluid.xdmf, " : "") << "diagnostics.csv, case.resolved.toml\n";
   return static_cast<int>(ExitCode::done);
+}
+
+CaseDriverRun run_case_driver(int argc, char** argv, const std::string& default_case,
+                              const std::string& default_output_dir) {
+  CaseDriverRun run;
+  run.config = load_case(argc > 1 ? argv[1] : default_case);
+  run.options.output_dir = argc > 2 ? argv[2] : default_output_dir;
+  run.status = run_case(run.config, run.options);
+  return run;
 }
 
 }  // namespace rouleau

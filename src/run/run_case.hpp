@@ -19,6 +19,17 @@ struct RunOptions {
 // Returns the process exit code (ExitCode); throws InputError for bad input found late.
 int run_case(const CaseConfig& config, const RunOptions& options);
 
+// What a case driver (cases/NAME/main.cpp) runs: `driver [CASE.toml] [OUT_DIR]`, with
+// the driver's own case file and output folder as defaults. Loads the case and runs it;
+// the driver then checks what is special to its case.
+struct CaseDriverRun {
+  CaseConfig config;
+  RunOptions options;
+  int status = 0;  // run_case's exit code
+};
+CaseDriverRun run_case_driver(int argc, char** argv, const std::string& default_case,
+                              const std::string& default_output_dir);
+
 // Name/value lines for `rouleau info`: Kokkos version and enabled backends, default
 // execution space and its concurrency (threads), KokkosKernels version.
 std::vector<std::pair<std::string, std::string>> kokkos_runtime_info();

@@ -81,6 +81,57 @@ struct ScalesConfig {
   double velocity = 0.0;  // [μm/s]  key velocity_um_s
 };
 
+// ---- cells (the Lagrangian bodies)
+
+// The body shapes cells are meshed from (src/geometry).
+enum class CellShape {
+  rbc,     // Evans–Fung biconcave disc, paper eq. (1), revolved about its axis (local z)
+  sickle,  // crescent: an ellipsoid bent along a circular arc in its local x–y plane
+  sphere,  // sphere / spherical capsule
+};
+// What of the body is solid: its whole volume, or a membrane layer of given thickness
+// enclosing fluid that belongs to the Eulerian mesh.
+enum class CellBody { shell, filled };
+// Mesh resolution presets (element sizes per shape in src/geometry/cell_geometry.hpp).
+enum class MeshResolution { coarse, paper, fine };
+
+// A kind of cell: shape, size, mesh and material. Built-in kinds "normal", "sickle" and
+// "capsule" have defaults (cell_kind_defaults()); a case may change them or add its own
+// under [cell_kinds.NAME].
+struct CellKindConfig {
+  std::string name;
+  CellShape shape = CellShape::rbc;  // key shape = "rbc" | "sickle" | "sphere"
+  CellBody body = CellBody::shell;   // key body = "shell" | "filled"
+  // rbc and sphere: the diameter [μm]                    key diameter_um
+  double diameter = 7.82;
+  // sickle: centre-line length, in-plane width, out-of-plane thickness of the unbent
+  // ellipsoid, and the radius of the arc its centre line is bent along [μm]
+  double length = 14.0;       // key length_um
+  double width = 4.2;         // key width_um
+  double thickness = 3.0;     // key thickness_um
+  double arc_radius = 8.0;    // key arc_radius_um
+  double shell_thickness = 0.36;  // shell body: membrane thickness [μm]   key shell_thickness_um
+  MeshResolution resolution = MeshResolution::paper;  // key resolution
+  double mesh_size = 0.0;     // element size [μm] overriding the preset when > 0   key mesh_size_um
+  // Material, paper eq. (2) with C1 = G/2, C2 = K. In the file either
+  // shear_modulus_Pa (3D) or membrane_shear_modulus_pN_um (shell only; G = G_s / h),
+  // and either bulk_modulus_Pa or poisson_ratio (K = 2G(1+ν) / (3(1−2ν))).
+  double shear_modulus = 4.2 / 0.36;  // G [Pa]
+  double bulk_modulus = 0.0;          // K [Pa]; set from poisson_ratio when not given
+  double poisson_ratio = 0.45;        // ν, the one that gives K from G (reported)
+  double density = 1.1e-9;            // [pN·s²/μm⁴]   key density_kg_m3 (RBC: 1100 kg/m³)
+};
+
+// One cell placed in the domain.
+struct CellPlacement {
+  std::string kind = "normal";                 // key kind: a [cell_kinds] name
+  std::array<double, 3> center{0.0, 0.0, 0.0};  // [μm] the body's centroid   key center_um
+  // Rotation of the body from its local frame (RBC and sphere axis along z; sickle
+  // centre line in the x–y plane, bent toward +y): rotations about the fixed x, then y,
+  // then z axes, in degrees.                                 key orientation_deg
+  std::array<double, 3> orientation{0.0, 0.0, 0.0};
+};
+
 struct OutputConfig {
   bool write_fields = true;       // key fields
   int fields_every_steps = 1;     // key fields_every_steps
@@ -97,6 +148,8 @@ struct CaseConfig {
   SolverConfig solver;
   ScalesConfig scales;
   OutputConfig output;
+  std::vector<CellKindConfig> cell_kinds;  // [cell_kinds.NAME]: the built-in kinds, changed or added to
+  std::vector<CellPlacement> cells;        // [[cells]]: empty = fluid only
 };
 
 // Values derived from a case (written to the resolved configuration).

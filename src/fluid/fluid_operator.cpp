@@ -2,11 +2,11 @@
 
 #include <Kokkos_ScatterView.hpp>
 #include <sstream>
-#include <type_traits>
 #include <stdexcept>
 
 #include "kernels/fluid_assembly.hpp"
 #include "kernels/hex8.hpp"
+#include "kernels/scatter_sum.hpp"
 #include "run/profiling_region.hpp"
 
 namespace rouleau {
@@ -16,26 +16,6 @@ namespace {
 void require_hexahedra(const FluidMesh& mesh) {
   if (mesh.element_type != FluidElementType::hexahedron8)
     throw std::invalid_argument("rouleau::FluidOperator: only 8-node hexahedra are implemented so far");
-}
-// Whether a ScatterView keeps per-thread copies (CPU threads) or adds atomically into
-// one buffer (GPUs, Serial).
-template <class Scatter>
-struct IsDuplicated : std::false_type {};
-template <class D, class L, class Dev, class Op, class C>
-struct IsDuplicated<Kokkos::Experimental::ScatterView<D, L, Dev, Op, Kokkos::Experimental::ScatterDuplicated, C>>
-    : std::true_type {};
-
-// target = the sum of the scatter buffer's contributions: its per-thread copies added
-// up, or its one buffer copied (Kokkos 3.4's contribute_into adds nothing from a
-// non-duplicated buffer into another View).
-template <class Scatter>
-void gather_into(const Vector& target, const Scatter& scatter) {
-  if constexpr (IsDuplicated<Scatter>::value) {
-    Kokkos::deep_copy(target, 0.0);
-    scatter.contribute_into(target);
-  } else {
-    Kokkos::deep_copy(target, scatter.subview());
-  }
 }
 // Dirichlet rows: R_d = U_d − g_d for a residual, (Jδ)_d = δ_d for an action. (A free
 // function: CUDA forbids extended lambdas in private member functions.)

@@ -1,0 +1,112 @@
+#pragma once
+// The cells' compressible neo-Hookean solid (paper eq. 2) and its nodal internal forces
+// on 4-node tetrahedra in total-Lagrangian form (paper eqs. 9–10).
+//
+//   W(F) = C1 (J1 − 3) + C2/2 (J2 − 1)²,  J1 = I1 I3^(−1/3),  J2 = I3^(1/2),
+//   I1 = tr C = F : F,  I3 = det C = J²,  J = det F,  C = FᵀF,
+// with C1 = G/2 and C2 = K (small-strain shear and bulk moduli). Its first
+// Piola–Kirchhoff stress P = ∂W/∂F, with ∂I1/∂F = 2F, ∂J/∂F = cof F = J F⁻ᵀ:
+//   P = C1 [2 J^(−2/3) F − (2/3) I1 J^(−5/3) cof F] + C2 (J − 1) cof F,
+// and the internal (elastic) force on node a of an element, f_a = −∂(V0 W)/∂x_a:
+//   f_a = −V0 P ∇_X N_a.
+// The element's strain energy is V0 W(F).
+#include <Kokkos_Core.hpp>
+#include <cmath>
+
+#include "kernels/mat3.hpp"
+#include "kernels/tet4.hpp"
+
+namespace rouleau {
+
+struct NeoHookeanMaterial {
+  double c1 = 0.0;  // C1 = G/2 [Pa]
+  double c2 = 0.0;  // C2 = K [Pa]
+
+  static NeoHookeanMaterial from_moduli(double shear_modulus, double bulk_modulus) {
+    return {0.5 * shear_modulus, bulk_modulus};
+  }
+
+  // W(F) [Pa = pN·μm/μm³]
+  KOKKOS_INLINE_FUNCTION double energy_density(const Mat3& f) const {
+    const double j = determinant(f);
+    const double i1 = frobenius_product(f, f);
+    const double j_minus_two_thirds = 1.0 / (cbrt(j) * cbrt(j));
+    return c1 * (i1 * j_minus_two_thirds - 3.0) + 0.5 * c2 * (j - 1.0) * (j - 1.0);
+  }
+
+  // P(F) = ∂W/∂F [Pa]
+  KOKKOS_INLINE_FUNCTION Mat3 first_piola(const Mat3& f) const {
+    const Mat3 cof = cofactor(f);
+    const double j = determinant(f);
+    const double i1 = frobenius_product(f, f);
+    const double j_minus_two_thirds = 1.0 / (cbrt(j) * cbrt(j));
+    const double deviatoric = 2.0 * c1 * j_minus_two_thirds;
+    const double volumetric = -(2.0 / 3.0) * c1 * i1 * j_minus_two_thirds / j + c2 * (j - 1.0);
+    Mat3 p;
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) p.m[i][k] = deviatoric * f.m[i][k] + volumetric * cof.m[i][k];
+    return p;
+  }
+
+  // Cauchy stress σ = J⁻¹ P Fᵀ [Pa]
+  KOKKOS_INLINE_FUNCTION Mat3 cauchy_stress(const Mat3& f) const {
+    Mat3 sigma = multiply(first_piola(f), transpose(f));
+    const double inverse_j = 1.0 / determinant(f);
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) sigma.m[i][k] *= inverse_j;
+    return sigma;
+  }
+};
+
+// Launch tags: the forces alone (parallel_for), or the forces and the total strain
+// energy Σ V0 W (parallel_reduce into a double), so the energy costs nothing when it is
+// not asked for.
+struct ForcesOnly {};
+struct ForcesAndEnergy {};
+
+// Internal forces of all tetrahedra of all cells, summed into the nodes through a
+// ScatterView.
+template <class Scatter>
+struct NeoHookeanForceFunctor {
+  Kokkos::View<const double* [3]> positions;                // x (node, 3) [μm]
+  Kokkos::View<const int* [4]> element_nodes;               // (element, 4)
+  Kokkos::View<const double* [3][3]> inverse_edge_matrix;   // D_m⁻¹ (element, 3, 3) [1/μm]
+  Kokkos::View<const double*> reference_volume;             // V0 (element) [μm³]
+  Kokkos::View<const int*> element_material;                // index into materials (element)
+  Kokkos::View<const NeoHookeanMaterial*> materials;
+  Scatter forces;                                           // f (node, 3) [pN]
+
+  // Forces of element e; returns its strain energy V0 W.
+  KOKKOS_INLINE_FUNCTION double element_forces(const int e) const {
+    double x[4][3];
+    for (int a = 0; a < 4; ++a)
+      for (int i = 0; i < 3; ++i) x[a][i] = positions(element_nodes(e, a), i);
+    Mat3 inverse;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) inverse.m[i][j] = inverse_edge_matrix(e, i, j);
+    double gradient[4][3];
+    Tet4::shape_gradients(inverse, gradient);
+    const Mat3 f = Tet4::deformation_gradient(x, inverse);
+    const NeoHookeanMaterial material = materials(element_material(e));
+    const Mat3 p = material.first_piola(f);
+    const double volume = reference_volume(e);
+    auto access = forces.access();
+    for (int a = 0; a < 4; ++a) {
+      const int node = element_nodes(e, a);
+      for (int i = 0; i < 3; ++i) {
+        // f_a,i = −V0 Σ_j P_ij ∂N_a/∂X_j
+        const double f_ai = -volume * (p.m[i][0] * gradient[a][0] + p.m[i][1] * gradient[a][1] +
+                                       p.m[i][2] * gradient[a][2]);
+        access(node, i) += f_ai;
+      }
+    }
+    return volume * material.energy_density(f);
+  }
+
+  KOKKOS_INLINE_FUNCTION void operator()(ForcesOnly, const int e) const { element_forces(e); }
+  KOKKOS_INLINE_FUNCTION void operator()(ForcesAndEnergy, const int e, double& energy) const {
+    energy += element_forces(e);
+  }
+};
+
+}  // namespace rouleau

@@ -1,0 +1,221 @@
+#include "cells/cell_population.hpp"
+
+#include <sstream>
+#include <stdexcept>
+
+#include "kernels/cell_surface.hpp"
+#include "kernels/scatter_sum.hpp"
+#include "kernels/tet4.hpp"
+#include "run/profiling_region.hpp"
+
+namespace rouleau {
+
+template <class ExecSpace>
+BasicCellPopulation<ExecSpace>::BasicCellPopulation(const std::vector<PlacedCell>& cells)
+    : num_cells_(static_cast<int>(cells.size())) {
+  ProfilingRegion region("rouleau::CellPopulation::setup");
+  std::size_t node_count = 0, element_count = 0, triangle_count = 0;
+  for (const PlacedCell& cell : cells) {
+    if (!cell.mesh) throw std::invalid_argument("rouleau::CellPopulation: a cell without a mesh");
+    node_count += cell.mesh->nodes.size();
+    element_count += cell.mesh->tetrahedra.size();
+    triangle_count += cell.mesh->outer_surface.size();
+  }
+  reference_positions_ = NodeVectors("rouleau::CellPopulation::reference_positions", node_count);
+  positions_ = NodeVectors("rouleau::CellPopulation::positions", node_count);
+  velocities_ = NodeVectors("rouleau::CellPopulation::velocities", node_count);
+  internal_forces_ = NodeVectors("rouleau::CellPopulation::internal_forces", node_count);
+  node_cell_ = Kokkos::View<int*>("rouleau::CellPopulation::node_cell", node_count);
+  element_nodes_ = Kokkos::View<int* [4]>("rouleau::CellPopulation::element_nodes", element_count);
+  element_cell_ = Kokkos::View<int*>("rouleau::CellPopulation::element_cell", element_count);
+  inverse_edge_matrix_ = Kokkos::View<double* [3][3]>("rouleau::CellPopulation::inverse_edge_matrix", element_count);
+  reference_volume_ = Kokkos::View<double*>("rouleau::CellPopulation::reference_volume", element_count);
+  materials_ = Kokkos::View<NeoHookeanMaterial*>("rouleau::CellPopulation::materials", cells.size());
+  surface_triangles_ = Kokkos::View<int* [3]>("rouleau::CellPopulation::surface_triangles", triangle_count);
+  triangle_cell_ = Kokkos::View<int*>("rouleau::CellPopulation::triangle_cell", triangle_count);
+  cell_first_node_ = Kokkos::View<int*>("rouleau::CellPopulation::cell_first_node", cells.size());
+  surface_area_weights_ = Kokkos::View<double*>("rouleau::CellPopulation::surface_area_weights", node_count);
+  cell_sums_ = Kokkos::View<double* [5]>("rouleau::CellPopulation::cell_sums", cells.size());
+  cell_origins_ = NodeVectors("rouleau::CellPopulation::cell_origins", cells.size());
+
+  auto x = Kokkos::create_mirror_view(reference_positions_);
+  auto node_cell = Kokkos::create_mirror_view(node_cell_);
+  auto element_nodes = Kokkos::create_mirror_view(element_nodes_);
+  auto element_cell = Kokkos::create_mirror_view(element_cell_);
+  auto materials = Kokkos::create_mirror_view(materials_);
+  auto triangles = Kokkos::create_mirror_view(surface_triangles_);
+  auto triangle_cell = Kokkos::create_mirror_view(triangle_cell_);
+  auto first_node = Kokkos::create_mirror_view(cell_first_node_);
+  std::size_t node = 0, element = 0, triangle = 0;
+  for (int c = 0; c < num_cells_; ++c) {
+    const PlacedCell& cell = cells[c];
+    const CellMesh& mesh = *cell.mesh;
+    const int offset = static_cast<int>(node);
+    first_node(c) = offset;
+    cell_first_node_host_.push_back(offset);
+    cell_node_count_host_.push_back(static_cast<int>(mesh.nodes.size()));
+    materials(c) = cell.material;
+    // x_world = center + R x_body
+    for (const auto& p : mesh.nodes) {
+      for (int i = 0; i < 3; ++i)
+        x(node, i) = cell.center[i] + cell.rotation[i][0] * p[0] + cell.rotation[i][1] * p[1] + cell.rotation[i][2] * p[2];
+      node_cell(node++) = c;
+    }
+    for (const auto& tet : mesh.tetrahedra) {
+      for (int a = 0; a < 4; ++a) element_nodes(element, a) = offset + tet[a];
+      element_cell(element++) = c;
+    }
+    for (const auto& tri : mesh.outer_surface) {
+      for (int k = 0; k < 3; ++k) triangles(triangle, k) = offset + tri[k];
+      triangle_cell(triangle++) = c;
+    }
+  }
+  Kokkos::deep_copy(reference_positions_, x);
+  Kokkos::deep_copy(positions_, x);
+  Kokkos::deep_copy(node_cell_, node_cell);
+  Kokkos::deep_copy(element_nodes_, element_nodes);
+  Kokkos::deep_copy(element_cell_, element_cell);
+  Kokkos::deep_copy(materials_, materials);
+  Kokkos::deep_copy(surface_triangles_, triangles);
+  Kokkos::deep_copy(triangle_cell_, triangle_cell);
+  Kokkos::deep_copy(cell_first_node_, first_node);
+
+  // Reference data of the tetrahedra, once (total-Lagrangian).
+  Tet4ReferenceFunctor<NodeVectors, Kokkos::View<int* [4]>, Kokkos::View<double* [3][3]>, Kokkos::View<double*>>
+      reference{reference_positions_, element_nodes_, inverse_edge_matrix_, reference_volume_};
+  int degenerate = 0;
+  Kokkos::parallel_reduce("rouleau::CellPopulation::reference_data",
+                          Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(element_count)), reference, degenerate);
+  if (degenerate > 0) {
+    std::ostringstream msg;
+    msg << "rouleau::CellPopulation: " << degenerate << " of " << element_count
+        << " cell tetrahedra are inverted or degenerate (reference volume <= 0)";
+    throw std::invalid_argument(msg.str());
+  }
+
+  // Nodal area weights of the outer surfaces, on the reference configuration.
+  using WeightScatter = Kokkos::Experimental::ScatterView<double*, typename Kokkos::View<double*>::array_layout,
+                                                          typename ExecSpace::device_type>;
+  WeightScatter weights("rouleau::CellPopulation::area_weight_scatter", node_count);
+  SurfaceAreaWeightsFunctor<WeightScatter> area_weights{reference_positions_, surface_triangles_, weights};
+  Kokkos::parallel_for("rouleau::CellPopulation::surface_area_weights",
+                       Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(triangle_count)), area_weights);
+  gather_into(surface_area_weights_, weights);
+
+  force_scatter_ = Scatter("rouleau::CellPopulation::force_scatter", node_count);
+  cell_sums_scatter_ = CellSumsScatter("rouleau::CellPopulation::cell_sums_scatter", cells.size());
+}
+
+template <class ExecSpace>
+void BasicCellPopulation<ExecSpace>::compute_internal_forces() {
+  ProfilingRegion region("rouleau::CellPopulation::internal_forces");
+  force_scatter_.reset();
+  NeoHookeanForceFunctor<Scatter> forces{positions_,       element_nodes_, inverse_edge_matrix_, reference_volume_,
+                                         element_cell_,    materials_,     force_scatter_};
+  Kokkos::parallel_for("rouleau::CellPopulation::internal_forces",
+                       Kokkos::RangePolicy<ExecSpace, ForcesOnly>(0, num_elements()), forces);
+  gather_into(internal_forces_, force_scatter_);
+}
+
+template <class ExecSpace>
+double BasicCellPopulation<ExecSpace>::compute_internal_forces_and_energy() {
+  ProfilingRegion region("rouleau::CellPopulation::internal_forces");
+  force_scatter_.reset();
+  NeoHookeanForceFunctor<Scatter> forces{positions_,       element_nodes_, inverse_edge_matrix_, reference_volume_,
+                                         element_cell_,    materials_,     force_scatter_};
+  double energy = 0.0;
+  Kokkos::parallel_reduce("rouleau::CellPopulation::internal_forces_and_energy",
+                          Kokkos::RangePolicy<ExecSpace, ForcesAndEnergy>(0, num_elements()), forces, energy);
+  gather_into(internal_forces_, force_scatter_);
+  return energy;
+}
+
+template <class ExecSpace>
+std::vector<CellMeasures> BasicCellPopulation<ExecSpace>::measures() const {
+  ProfilingRegion region("rouleau::CellPopulation::measures");
+  cell_sums_scatter_.reset();
+  CellSurfaceSumsFunctor<CellSumsScatter> sums{positions_, surface_triangles_, triangle_cell_, cell_first_node_,
+                                               cell_sums_scatter_};
+  Kokkos::parallel_for("rouleau::CellPopulation::measures",
+                       Kokkos::RangePolicy<ExecSpace>(0, num_surface_triangles()), sums);
+  gather_into(cell_sums_, cell_sums_scatter_);
+  // The origins o of the sums (each cell's first node), gathered on the device.
+  auto positions = positions_;
+  auto first_node = cell_first_node_;
+  auto origins = cell_origins_;
+  Kokkos::parallel_for(
+      "rouleau::CellPopulation::cell_origins", Kokkos::RangePolicy<ExecSpace>(0, num_cells_),
+      KOKKOS_LAMBDA(const int c) {
+        for (int i = 0; i < 3; ++i) origins(c, i) = positions(first_node(c), i);
+      });
+  auto host_sums = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cell_sums_);
+  auto o = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cell_origins_);
+  std::vector<CellMeasures> result(num_cells_);
+  for (int c = 0; c < num_cells_; ++c) {
+    CellMeasures& m = result[c];
+    m.volume = host_sums(c, enclosed_volume);
+    m.area = host_sums(c, surface_area);
+    for (int i = 0; i < 3; ++i) m.centroid[i] = o(c, i) + host_sums(c, first_moment_x + i) / m.volume;
+  }
+  return result;
+}
+
+template <class ExecSpace>
+MeshDescription BasicCellPopulation<ExecSpace>::mesh_description() const {
+  MeshDescription d;
+  d.name = "cells";
+  d.cell_type = CellType::tetrahedron4;
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), reference_positions_);
+  auto c = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), element_nodes_);
+  d.coordinates.resize(3 * x.extent(0));
+  for (std::size_t n = 0; n < x.extent(0); ++n)
+    for (int k = 0; k < 3; ++k) d.coordinates[3 * n + k] = x(n, k);
+  d.connectivity.resize(4 * c.extent(0));
+  for (std::size_t e = 0; e < c.extent(0); ++e)
+    for (int a = 0; a < 4; ++a) d.connectivity[4 * e + a] = c(e, a);
+  return d;
+}
+
+template <class ExecSpace>
+void BasicCellPopulation<ExecSpace>::copy_fields_to_host(HostFields& fields) const {
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), positions_);
+  auto x0 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), reference_positions_);
+  auto v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), velocities_);
+  auto f = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), internal_forces_);
+  auto cell = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), node_cell_);
+  const std::size_t n = x.extent(0);
+  fields.positions.resize(3 * n);
+  fields.displacement.resize(3 * n);
+  fields.velocity.resize(3 * n);
+  fields.internal_force.resize(3 * n);
+  fields.cell_id.resize(n);
+  for (std::size_t a = 0; a < n; ++a) {
+    for (int i = 0; i < 3; ++i) {
+      fields.positions[3 * a + i] = x(a, i);
+      fields.displacement[3 * a + i] = x(a, i) - x0(a, i);
+      fields.velocity[3 * a + i] = v(a, i);
+      fields.internal_force[3 * a + i] = f(a, i);
+    }
+    fields.cell_id[a] = cell(a);
+  }
+}
+
+// A device build instantiates its device space; a host build every host backend it has,
+// so the tests can compare them.
+#if defined(KOKKOS_ENABLE_CUDA)
+template class BasicCellPopulation<Kokkos::Cuda>;
+#elif defined(KOKKOS_ENABLE_HIP)
+template class BasicCellPopulation<Kokkos::Experimental::HIP>;
+#else
+#if defined(KOKKOS_ENABLE_SERIAL)
+template class BasicCellPopulation<Kokkos::Serial>;
+#endif
+#if defined(KOKKOS_ENABLE_OPENMP)
+template class BasicCellPopulation<Kokkos::OpenMP>;
+#endif
+#if defined(KOKKOS_ENABLE_THREADS)
+template class BasicCellPopulation<Kokkos::Threads>;
+#endif
+#endif
+
+}  // namespace rouleau

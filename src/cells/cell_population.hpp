@@ -1,0 +1,115 @@
+#pragma once
+// All cells of a scene on the device: their tetrahedral meshes concatenated, reference
+// data computed once (total-Lagrangian), current positions and velocities, the elastic
+// (neo-Hookean) internal forces, and per-cell measures from the outer surfaces.
+#include <Kokkos_Core.hpp>
+#include <Kokkos_ScatterView.hpp>
+#include <array>
+#include <string>
+#include <vector>
+
+#include "geometry/cell_mesh.hpp"
+#include "io/xdmf_writer.hpp"
+#include "kernels/neo_hookean.hpp"
+
+namespace rouleau {
+
+// One cell to place: its mesh in the body frame, x_world = center + rotation · x_body,
+// and its material.
+struct PlacedCell {
+  const CellMesh* mesh = nullptr;
+  std::array<std::array<double, 3>, 3> rotation{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+  std::array<double, 3> center{0.0, 0.0, 0.0};  // [μm]
+  NeoHookeanMaterial material;
+  int kind = 0;  // index of the cell's kind (for output)
+};
+
+// A cell's measures from its outer surface (the cavity of a shell included).
+struct CellMeasures {
+  double volume = 0.0;                  // enclosed volume [μm³]
+  double area = 0.0;                    // outer surface area [μm²]
+  std::array<double, 3> centroid{};     // volume centroid [μm]
+};
+
+template <class ExecSpace>
+class BasicCellPopulation {
+ public:
+  using NodeVectors = Kokkos::View<double* [3]>;
+  using Scatter = Kokkos::Experimental::ScatterView<double* [3], typename NodeVectors::array_layout,
+                                                    typename ExecSpace::device_type>;
+  using CellSumsScatter = Kokkos::Experimental::ScatterView<double* [5], typename NodeVectors::array_layout,
+                                                            typename ExecSpace::device_type>;
+
+  // Places the cells (reference = current configuration at rest, velocities zero).
+  // Throws std::invalid_argument when a mesh has an inverted or degenerate tetrahedron.
+  explicit BasicCellPopulation(const std::vector<PlacedCell>& cells);
+
+  int num_cells() const { return num_cells_; }
+  int num_nodes() const { return static_cast<int>(positions_.extent(0)); }
+  int num_elements() const { return static_cast<int>(element_nodes_.extent(0)); }
+  int num_surface_triangles() const { return static_cast<int>(surface_triangles_.extent(0)); }
+
+  // The state. positions() may be changed in place (the time loop moves the nodes).
+  const NodeVectors& reference_positions() const { return reference_positions_; }
+  const NodeVectors& positions() const { return positions_; }
+  const NodeVectors& velocities() const { return velocities_; }
+  const NodeVectors& internal_forces() const { return internal_forces_; }
+
+  // The mesh data.
+  const Kokkos::View<int* [4]>& element_nodes() const { return element_nodes_; }
+  const Kokkos::View<int*>& element_cell() const { return element_cell_; }
+  const Kokkos::View<int*>& node_cell() const { return node_cell_; }
+  const Kokkos::View<double* [3][3]>& inverse_edge_matrix() const { return inverse_edge_matrix_; }
+  const Kokkos::View<double*>& reference_volume() const { return reference_volume_; }
+  const Kokkos::View<int* [3]>& surface_triangles() const { return surface_triangles_; }
+  const Kokkos::View<int*>& triangle_cell() const { return triangle_cell_; }
+  // Nodal area weights of the outer surfaces in the reference configuration (zero off
+  // the surface): w_n = Σ_{t ∋ n} A_t / 3 [μm²].
+  const Kokkos::View<double*>& surface_area_weights() const { return surface_area_weights_; }
+  // First node and node count of each cell (host): cell c owns nodes
+  // [cell_first_node[c], cell_first_node[c] + cell_node_count[c]).
+  const std::vector<int>& cell_first_node() const { return cell_first_node_host_; }
+  const std::vector<int>& cell_node_count() const { return cell_node_count_host_; }
+
+  // internal_forces() = f, f_a = −Σ_e V0 P(F_e) ∇N_a (paper eqs. 2, 9, 10) at the
+  // current positions.
+  void compute_internal_forces();
+  // The same, returning the total strain energy Σ_e V0 W(F_e) [pN·μm].
+  double compute_internal_forces_and_energy();
+
+  // Per-cell volume, area and centroid at the current positions (a small host copy).
+  std::vector<CellMeasures> measures() const;
+
+  // The cells' meshes for the XDMF writer ("cells", reference coordinates, tetrahedra).
+  MeshDescription mesh_description() const;
+  // Host copies (node-major) of the current positions and of the nodal fields written
+  // with each output step: displacement, velocity, internal force, and the cell id.
+  struct HostFields {
+    std::vector<double> positions, displacement, velocity, internal_force, cell_id;
+  };
+  void copy_fields_to_host(HostFields& fields) const;
+
+ private:
+  int num_cells_ = 0;
+  NodeVectors reference_positions_, positions_, velocities_, internal_forces_;
+  Kokkos::View<int* [4]> element_nodes_;
+  Kokkos::View<int*> element_cell_, node_cell_;
+  Kokkos::View<double* [3][3]> inverse_edge_matrix_;
+  Kokkos::View<double*> reference_volume_;
+  Kokkos::View<NeoHookeanMaterial*> materials_;  // one per cell
+  Kokkos::View<int* [3]> surface_triangles_;
+  Kokkos::View<int*> triangle_cell_, cell_first_node_;
+  Kokkos::View<double*> surface_area_weights_;
+  Kokkos::View<double* [5]> cell_sums_;
+  NodeVectors cell_origins_;  // the point each cell's surface sums are taken from
+  std::vector<int> cell_first_node_host_, cell_node_count_host_;
+  // Persistent scatter buffers (per-thread copies on CPUs, the atomic target on GPUs).
+  mutable Scatter force_scatter_;
+  mutable CellSumsScatter cell_sums_scatter_;
+};
+
+using CellPopulation = BasicCellPopulation<Kokkos::DefaultExecutionSpace>;
+
+extern template class BasicCellPopulation<Kokkos::DefaultExecutionSpace>;
+
+}  // namespace rouleau

@@ -1,0 +1,409 @@
+// The neo-Hookean solid (paper eqs. 2, 9, 10) on 4-node tetrahedra, and the cells'
+// surface measures, against exact facts and a plain serial reference.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <Kokkos_Core.hpp>
+#include <cmath>
+#include <iostream>
+#include <random>
+
+#include "cells/cell_population.hpp"
+#include "kernels/neo_hookean.hpp"
+#include "test_helpers.hpp"
+#include "tet_box_mesh.hpp"
+
+namespace rouleau {
+namespace {
+
+using HostPopulation = BasicCellPopulation<Kokkos::DefaultHostExecutionSpace>;
+using SerialPopulation = BasicCellPopulation<Kokkos::Serial>;
+
+// A red-cell-membrane-like material: G = 11.67 Pa, K from ν = 0.45.
+const double shear_modulus = 4.2 / 0.36;
+const double bulk_modulus = 2.0 * shear_modulus * 1.45 / (3.0 * 0.1);
+const NeoHookeanMaterial material = NeoHookeanMaterial::from_moduli(shear_modulus, bulk_modulus);
+
+Mat3 to_mat3(const Eigen::Matrix3d& a) {
+  Mat3 m;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) m.m[i][j] = a(i, j);
+  return m;
+}
+Eigen::Matrix3d to_eigen(const Mat3& a) {
+  Eigen::Matrix3d m;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) m(i, j) = a.m[i][j];
+  return m;
+}
+Eigen::Matrix3d random_deformation_gradient(std::mt19937& rng, double amplitude) {
+  std::uniform_real_distribution<double> u(-amplitude, amplitude);
+  Eigen::Matrix3d f = Eigen::Matrix3d::Identity();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) f(i, j) += u(rng);
+  return f;
+}
+Eigen::Matrix3d rotation(double angle, Eigen::Vector3d axis) {
+  return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
+}
+
+// The reference stress by another route: S = 2 ∂W/∂C, with ∂I1/∂C = I, ∂I3/∂C = I3 C⁻¹:
+//   S = 2 C1 J^(−2/3) (I − I1/3 C⁻¹) + C2 J (J − 1) C⁻¹,   P = F S,   σ = J⁻¹ F S Fᵀ.
+Eigen::Matrix3d reference_first_piola(const Eigen::Matrix3d& f, const NeoHookeanMaterial& m) {
+  const Eigen::Matrix3d c = f.transpose() * f;
+  const double j = f.determinant();
+  const double i1 = c.trace();
+  const Eigen::Matrix3d c_inverse = c.inverse();
+  const Eigen::Matrix3d s = 2.0 * m.c1 * std::pow(j, -2.0 / 3.0) * (Eigen::Matrix3d::Identity() - i1 / 3.0 * c_inverse) +
+                            m.c2 * j * (j - 1.0) * c_inverse;
+  return f * s;
+}
+
+TEST(NeoHookeanMaterial, StressIsTheDerivativeOfTheEnergyDensity) {
+  // P = ∂W/∂F by central differences of W, step 1e-6.
+  std::mt19937 rng(7);
+  double worst = 0.0;
+  for (int sample = 0; sample < 20; ++sample) {
+    const Eigen::Matrix3d f = random_deformation_gradient(rng, 0.3);
+    const Mat3 p = material.first_piola(to_mat3(f));
+    const double step = 1e-6;
+    double error = 0.0, norm = 0.0;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        Eigen::Matrix3d plus = f, minus = f;
+        plus(i, j) += step;
+        minus(i, j) -= step;
+        const double derivative =
+            (material.energy_density(to_mat3(plus)) - material.energy_density(to_mat3(minus))) / (2 * step);
+        error += std::pow(derivative - p.m[i][j], 2);
+        norm += p.m[i][j] * p.m[i][j];
+      }
+    worst = std::max(worst, std::sqrt(error / norm));
+  }
+  std::cout << "  P vs central-difference ∂W/∂F: worst relative error " << worst << "\n";
+  EXPECT_LT(worst, 1e-6);
+}
+
+TEST(NeoHookeanMaterial, StressMatchesTheSecondPiolaKirchhoffRoute) {
+  std::mt19937 rng(11);
+  double worst = 0.0;
+  for (int sample = 0; sample < 50; ++sample) {
+    const Eigen::Matrix3d f = random_deformation_gradient(rng, 0.4);
+    const Eigen::Matrix3d expected = reference_first_piola(f, material);
+    worst = std::max(worst, (to_eigen(material.first_piola(to_mat3(f))) - expected).norm() / expected.norm());
+  }
+  std::cout << "  P vs F·S (2 ∂W/∂C): worst relative difference " << worst << "\n";
+  EXPECT_LT(worst, 1e-13);
+}
+
+TEST(NeoHookeanMaterial, SmallStrainsRecoverTheShearAndBulkModuli) {
+  // Linear elasticity: σ = 2G ε_dev + K tr(ε) I. Uniaxial strain ε along x:
+  //   σ_xx = (K + 4G/3) ε, σ_yy = (K − 2G/3) ε  ⇒  G = (σ_xx − σ_yy)/(2ε), K = (σ_xx + 2σ_yy)/(3ε);
+  // simple shear γ: σ_xy = G γ; hydrostatic stretch (1+ε)I: σ_ii = 3K ε.
+  const double strain = 1e-7;
+  Mat3 uniaxial = Mat3::identity();
+  uniaxial.m[0][0] += strain;
+  const Mat3 sigma = material.cauchy_stress(uniaxial);
+  const double g_uniaxial = (sigma.m[0][0] - sigma.m[1][1]) / (2.0 * strain);
+  const double k_uniaxial = (sigma.m[0][0] + 2.0 * sigma.m[1][1]) / (3.0 * strain);
+  Mat3 shear = Mat3::identity();
+  shear.m[0][1] = strain;
+  const double g_shear = material.cauchy_stress(shear).m[0][1] / strain;
+  Mat3 hydrostatic = Mat3::identity();
+  for (int i = 0; i < 3; ++i) hydrostatic.m[i][i] += strain;
+  const double k_hydrostatic = material.cauchy_stress(hydrostatic).m[0][0] / (3.0 * strain);
+  std::cout << "  uniaxial: G " << g_uniaxial << " K " << k_uniaxial << "; simple shear G " << g_shear
+            << "; hydrostatic K " << k_hydrostatic << " (exact G " << shear_modulus << ", K " << bulk_modulus << ")\n";
+  // The O(ε) nonlinear terms relative to the moduli are ~ε·K/G ≈ 1e-6.
+  EXPECT_NEAR(g_uniaxial / shear_modulus, 1.0, 1e-5);
+  EXPECT_NEAR(k_uniaxial / bulk_modulus, 1.0, 1e-5);
+  EXPECT_NEAR(g_shear / shear_modulus, 1.0, 1e-5);
+  EXPECT_NEAR(k_hydrostatic / bulk_modulus, 1.0, 1e-5);
+}
+
+// ---- the element kernel on whole meshes
+
+// The node vectors (node, 3) of a View as one flat host array (node-major).
+template <class View>
+Kokkos::View<double*, Kokkos::HostSpace> flat(const View& v) {
+  auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), v);
+  Kokkos::View<double*, Kokkos::HostSpace> out("flat", 3 * host.extent(0));
+  for (std::size_t n = 0; n < host.extent(0); ++n)
+    for (int i = 0; i < 3; ++i) out(3 * n + i) = host(n, i);
+  return out;
+}
+
+// A host copy of a View that never aliases it (create_mirror_view would, on the host).
+template <class View>
+auto host_copy(const View& v) {
+  auto copy = Kokkos::create_mirror(Kokkos::HostSpace(), v);
+  Kokkos::deep_copy(copy, v);
+  return copy;
+}
+
+// Sets the current positions to map(reference position) for every node.
+template <class Population, class Map>
+void deform(Population& cells, Map map) {
+  auto x0 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.reference_positions());
+  auto x = Kokkos::create_mirror_view(cells.positions());
+  for (std::size_t n = 0; n < x0.extent(0); ++n) {
+    const Eigen::Vector3d y = map(Eigen::Vector3d(x0(n, 0), x0(n, 1), x0(n, 2)));
+    for (int i = 0; i < 3; ++i) x(n, i) = y[i];
+  }
+  Kokkos::deep_copy(cells.positions(), x);
+}
+
+std::vector<PlacedCell> one_cell(const CellMesh& mesh, Eigen::Vector3d center = Eigen::Vector3d::Zero()) {
+  PlacedCell cell;
+  cell.mesh = &mesh;
+  cell.material = material;
+  for (int i = 0; i < 3; ++i) cell.center[i] = center[i];
+  return {cell};
+}
+
+// A random smooth-ish deformation: an affine part plus random nodal jitter.
+template <class Population>
+void deform_randomly(Population& cells, std::uint32_t seed, double jitter) {
+  std::mt19937 rng(seed);
+  const Eigen::Matrix3d f = random_deformation_gradient(rng, 0.2);
+  std::uniform_real_distribution<double> u(-jitter, jitter);
+  deform(cells, [&](const Eigen::Vector3d& x) { return Eigen::Vector3d(f * x + Eigen::Vector3d(u(rng), u(rng), u(rng))); });
+}
+
+TEST(NeoHookeanForces, AreMinusTheGradientOfTheStrainEnergy) {
+  // f = −∂E/∂x by central differences of E = Σ V0 W at every coordinate of 30 nodes.
+  const CellMesh mesh = testing::tetrahedral_box(3, 3.0);
+  HostPopulation cells(one_cell(mesh));
+  deform_randomly(cells, 3, 0.08);
+  cells.compute_internal_forces();
+  const auto force = host_copy(cells.internal_forces());
+  const auto x = host_copy(cells.positions());
+  const double step = 1e-6;
+  double error = 0.0, norm = 0.0;
+  for (int node = 0; node < cells.num_nodes(); node += std::max(1, cells.num_nodes() / 30))
+    for (int i = 0; i < 3; ++i) {
+      double energy[2];
+      for (int side = 0; side < 2; ++side) {
+        auto shifted = host_copy(x);
+        shifted(node, i) += side == 0 ? step : -step;
+        Kokkos::deep_copy(cells.positions(), shifted);
+        energy[side] = cells.compute_internal_forces_and_energy();
+      }
+      const double derivative = -(energy[0] - energy[1]) / (2 * step);
+      error += std::pow(derivative - force(node, i), 2);
+      norm += force(node, i) * force(node, i);
+    }
+  const double relative = std::sqrt(error / norm);
+  std::cout << "  nodal force vs −∂E/∂x (central differences): relative error " << relative << "\n";
+  EXPECT_LT(relative, 1e-6);
+}
+
+TEST(NeoHookeanForces, RigidMotionsGiveNoForceAndNoEnergy) {
+  const CellMesh mesh = testing::tetrahedral_box(3, 3.0);
+  HostPopulation cells(one_cell(mesh, {5.0, -2.0, 1.0}));
+  const Eigen::Vector3d shift(0.3, -7.0, 2.5);
+  double worst_force = 0.0, worst_energy = 0.0;
+  for (const double angle : {0.0, 0.1, 1.0, M_PI / 2, 2.5, M_PI}) {
+    const Eigen::Matrix3d r = rotation(angle, Eigen::Vector3d(1.0, -2.0, 0.5));
+    deform(cells, [&](const Eigen::Vector3d& x) { return Eigen::Vector3d(r * x + shift); });
+    const double energy = cells.compute_internal_forces_and_energy();
+    auto f = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.internal_forces());
+    for (int n = 0; n < cells.num_nodes(); ++n)
+      for (int i = 0; i < 3; ++i) worst_force = std::max(worst_force, std::fabs(f(n, i)));
+    worst_energy = std::max(worst_energy, std::fabs(energy));
+  }
+  // Scale: a unit strain on an element of size 1 μm gives forces of order G·1 μm² ≈ 10 pN.
+  std::cout << "  rigid motions: largest nodal force " << worst_force << " pN, largest energy " << worst_energy
+            << " pN·μm\n";
+  EXPECT_LT(worst_force, 1e-11 * shear_modulus);
+  EXPECT_LT(worst_energy, 1e-11 * shear_modulus);
+}
+
+TEST(NeoHookeanForces, AreObjective) {
+  // Rotating a deformed body rotates its forces and keeps its energy: f(Qx) = Q f(x).
+  const CellMesh mesh = testing::tetrahedral_box(3, 3.0);
+  HostPopulation cells(one_cell(mesh));
+  deform_randomly(cells, 5, 0.1);
+  const double energy = cells.compute_internal_forces_and_energy();
+  const auto x = host_copy(cells.positions());
+  const auto f = host_copy(cells.internal_forces());
+  const Eigen::Matrix3d q = rotation(2.2, Eigen::Vector3d(0.3, 1.0, -0.7));
+  auto rotated = host_copy(cells.positions());
+  for (int n = 0; n < cells.num_nodes(); ++n) {
+    const Eigen::Vector3d y = q * Eigen::Vector3d(x(n, 0), x(n, 1), x(n, 2));
+    for (int i = 0; i < 3; ++i) rotated(n, i) = y[i];
+  }
+  Kokkos::deep_copy(cells.positions(), rotated);
+  const double rotated_energy = cells.compute_internal_forces_and_energy();
+  auto g = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.internal_forces());
+  double error = 0.0, norm = 0.0;
+  for (int n = 0; n < cells.num_nodes(); ++n) {
+    const Eigen::Vector3d expected = q * Eigen::Vector3d(f(n, 0), f(n, 1), f(n, 2));
+    error += (Eigen::Vector3d(g(n, 0), g(n, 1), g(n, 2)) - expected).squaredNorm();
+    norm += expected.squaredNorm();
+  }
+  std::cout << "  rotated body: force error " << std::sqrt(error / norm) << ", energy change "
+            << std::fabs(rotated_energy - energy) / energy << " (relative)\n";
+  EXPECT_LT(std::sqrt(error / norm), 1e-12);
+  EXPECT_NEAR(rotated_energy / energy, 1.0, 1e-12);
+}
+
+TEST(NeoHookeanForces, PassThePatchTest) {
+  // A homogeneous deformation x = F X + c is an exact solution with no body force: the
+  // interior nodes feel no net force, and every element carries the exact stress, so
+  // the energy is V W(F).
+  const CellMesh mesh = testing::tetrahedral_box(4, 2.0);
+  HostPopulation cells(one_cell(mesh));
+  std::mt19937 rng(13);
+  const Eigen::Matrix3d f = random_deformation_gradient(rng, 0.3);
+  deform(cells, [&](const Eigen::Vector3d& x) { return Eigen::Vector3d(f * x + Eigen::Vector3d(1, 2, 3)); });
+  const double energy = cells.compute_internal_forces_and_energy();
+  const double expected_energy = 8.0 * material.energy_density(to_mat3(f));
+  auto force = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.internal_forces());
+  auto x0 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.reference_positions());
+  double interior = 0.0, boundary = 0.0;
+  Eigen::Vector3d face_force = Eigen::Vector3d::Zero();
+  for (int n = 0; n < cells.num_nodes(); ++n) {
+    const Eigen::Vector3d fn(force(n, 0), force(n, 1), force(n, 2));
+    bool on_surface = false;
+    for (int i = 0; i < 3; ++i) on_surface |= std::fabs(std::fabs(x0(n, i)) - 1.0) < 1e-12;
+    (on_surface ? boundary : interior) = std::max(on_surface ? boundary : interior, fn.norm());
+    // Nodes strictly inside the face X = +1 (no edge or corner): their forces sum to
+    // −P N A over their tributary area, (n−1)²/n² of the face (here 9/16 of 4 μm²).
+    if (std::fabs(x0(n, 0) - 1.0) < 1e-12 && std::fabs(x0(n, 1)) < 1.0 - 1e-12 && std::fabs(x0(n, 2)) < 1.0 - 1e-12)
+      face_force += fn;
+  }
+  const Eigen::Matrix3d p = reference_first_piola(f, material);
+  const Eigen::Vector3d expected_face_force = -p * Eigen::Vector3d(1, 0, 0) * (4.0 * 9.0 / 16.0);
+  std::cout << "  patch test: largest interior nodal force " << interior << " pN (boundary " << boundary
+            << "), energy error " << std::fabs(energy / expected_energy - 1.0) << ", face traction error "
+            << (face_force - expected_face_force).norm() / expected_face_force.norm() << "\n";
+  EXPECT_LT(interior, 1e-12 * boundary);
+  EXPECT_NEAR(energy / expected_energy, 1.0, 1e-12);
+  EXPECT_LT((face_force - expected_face_force).norm(), 1e-12 * expected_face_force.norm());
+}
+
+TEST(NeoHookeanForces, ConserveMomentumAndAngularMomentum) {
+  const CellMesh mesh = testing::tetrahedral_box(3, 3.0);
+  HostPopulation cells(one_cell(mesh, {10.0, 4.0, -3.0}));
+  deform_randomly(cells, 17, 0.15);
+  cells.compute_internal_forces();
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.positions());
+  auto f = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.internal_forces());
+  Eigen::Vector3d total = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
+  double magnitude = 0.0, moment_magnitude = 0.0;
+  for (int n = 0; n < cells.num_nodes(); ++n) {
+    const Eigen::Vector3d fn(f(n, 0), f(n, 1), f(n, 2)), xn(x(n, 0), x(n, 1), x(n, 2));
+    total += fn;
+    moment += xn.cross(fn);
+    magnitude += fn.norm();
+    moment_magnitude += xn.norm() * fn.norm();
+  }
+  std::cout << "  Σ f = " << total.norm() << " pN (Σ|f| = " << magnitude << "), Σ x × f = " << moment.norm()
+            << " pN·μm (Σ|x||f| = " << moment_magnitude << ")\n";
+  EXPECT_LT(total.norm(), 1e-13 * magnitude);
+  EXPECT_LT(moment.norm(), 1e-13 * moment_magnitude);
+}
+
+TEST(NeoHookeanForces, MatchAPlainSerialReference) {
+  // The reference: per element F = D_s D_m⁻¹ with Eigen, P = F S from the S route,
+  // f_a = −V0 P ∇N_a summed in a plain loop.
+  const CellMesh mesh = testing::tetrahedral_box(3, 3.0);
+  HostPopulation cells(one_cell(mesh));
+  deform_randomly(cells, 19, 0.1);
+  const double energy = cells.compute_internal_forces_and_energy();
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.positions());
+  Kokkos::View<double* [3], Kokkos::HostSpace> expected("expected", cells.num_nodes());
+  double expected_energy = 0.0;
+  for (const auto& t : mesh.tetrahedra) {
+    Eigen::Matrix3d dm, ds;
+    for (int k = 0; k < 3; ++k)
+      for (int i = 0; i < 3; ++i) {
+        dm(i, k) = mesh.nodes[t[k + 1]][i] - mesh.nodes[t[0]][i];
+        ds(i, k) = x(t[k + 1], i) - x(t[0], i);
+      }
+    const Eigen::Matrix3d f = ds * dm.inverse();
+    const Eigen::Matrix3d p = reference_first_piola(f, material);
+    const double volume = dm.determinant() / 6.0;
+    Eigen::Matrix<double, 3, 4> gradients;  // columns ∇N_a
+    gradients.rightCols<3>() = dm.inverse().transpose();
+    gradients.col(0) = -gradients.rightCols<3>().rowwise().sum();
+    for (int a = 0; a < 4; ++a) {
+      const Eigen::Vector3d fa = -volume * p * gradients.col(a);
+      for (int i = 0; i < 3; ++i) expected(t[a], i) += fa[i];
+    }
+    const double j = f.determinant();
+    expected_energy += volume * (material.c1 * ((f.transpose() * f).trace() * std::pow(j, -2.0 / 3.0) - 3.0) +
+                                 0.5 * material.c2 * (j - 1.0) * (j - 1.0));
+  }
+  auto computed = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.internal_forces());
+  const double difference = testing::relativeDifference(flat(computed), flat(expected));
+  std::cout << "  kernel vs serial reference: forces " << difference << ", energy "
+            << std::fabs(energy / expected_energy - 1.0) << " (relative)\n";
+  EXPECT_LT(difference, 1e-12);
+  EXPECT_NEAR(energy / expected_energy, 1.0, 1e-12);
+}
+
+TEST(NeoHookeanForces, SerialAndThreadedRunsAgree) {
+  const CellMesh mesh = testing::tetrahedral_box(6, 3.0);
+  std::vector<PlacedCell> placed = one_cell(mesh);
+  placed.push_back(placed[0]);
+  placed[1].center = {4.0, 0.0, 0.0};
+  SerialPopulation serial(placed);
+  HostPopulation threaded(placed);
+  deform_randomly(serial, 23, 0.1);
+  deform_randomly(threaded, 23, 0.1);
+  const double serial_energy = serial.compute_internal_forces_and_energy();
+  const double threaded_energy = threaded.compute_internal_forces_and_energy();
+  const double difference =
+      testing::relativeDifference(flat(threaded.internal_forces()), flat(serial.internal_forces()));
+  std::cout << "  " << Kokkos::DefaultHostExecutionSpace::name() << " ("
+            << Kokkos::DefaultHostExecutionSpace().concurrency() << " threads) vs Serial: forces " << difference
+            << ", energy " << std::fabs(threaded_energy / serial_energy - 1.0) << " (relative)\n";
+  EXPECT_LT(difference, 1e-14);
+  EXPECT_NEAR(threaded_energy / serial_energy, 1.0, 1e-14);
+}
+
+// ---- surface measures
+
+TEST(CellMeasures, AreExactForABoxAnywhere) {
+  // The box [−1.5, 1.5]³ has V = 27 μm³, A = 54 μm², centroid at its centre, wherever it
+  // is placed and however it is rotated; the area weights add up to A.
+  const CellMesh mesh = testing::tetrahedral_box(3, 3.0);
+  std::vector<PlacedCell> placed = one_cell(mesh, {100.0, -50.0, 20.0});
+  const Eigen::Matrix3d r = rotation(0.7, Eigen::Vector3d(1, 1, 0));
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) placed[0].rotation[i][j] = r(i, j);
+  placed.push_back(one_cell(mesh, {-3.0, 0.0, 0.0})[0]);
+  HostPopulation cells(placed);
+  const std::vector<CellMeasures> m = cells.measures();
+  double weights = 0.0;
+  Kokkos::parallel_reduce(
+      "sum", Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, cells.num_nodes()),
+      [&](int n, double& s) { s += cells.surface_area_weights()(n); }, weights);
+  std::cout << "  box: V " << m[0].volume << " A " << m[0].area << " centroid (" << m[0].centroid[0] << ", "
+            << m[0].centroid[1] << ", " << m[0].centroid[2] << "); Σ w " << weights << "\n";
+  ASSERT_EQ(m.size(), 2u);
+  for (const CellMeasures& cell : m) {
+    EXPECT_NEAR(cell.volume, 27.0, 1e-11);
+    EXPECT_NEAR(cell.area, 54.0, 1e-11);
+  }
+  EXPECT_NEAR(m[0].centroid[0], 100.0, 1e-11);
+  EXPECT_NEAR(m[0].centroid[1], -50.0, 1e-11);
+  EXPECT_NEAR(m[0].centroid[2], 20.0, 1e-11);
+  EXPECT_NEAR(m[1].centroid[0], -3.0, 1e-12);
+  EXPECT_NEAR(weights, 2 * 54.0, 1e-10);
+  // A homogeneous stretch F scales the volume by det F.
+  const Eigen::Matrix3d f = Eigen::DiagonalMatrix<double, 3>(1.2, 0.9, 1.1);
+  deform(cells, [&](const Eigen::Vector3d& x) { return Eigen::Vector3d(f * x); });
+  EXPECT_NEAR(cells.measures()[1].volume, 27.0 * f.determinant(), 1e-11);
+}
+
+TEST(CellPopulation, RefusesInvertedElements) {
+  CellMesh mesh = testing::tetrahedral_box(2, 2.0);
+  std::swap(mesh.tetrahedra[3][1], mesh.tetrahedra[3][2]);
+  EXPECT_THROW(HostPopulation{one_cell(mesh)}, std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace rouleau

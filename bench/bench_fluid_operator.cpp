@@ -35,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_common.hpp"
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/fluid_operator.hpp"
 #include "fluid/fluid_solver.hpp"
@@ -47,8 +48,9 @@ using rouleau::FluidMesh;
 using rouleau::FluidOperator;
 using rouleau::Vector;
 
-constexpr double bytes_per_double = 8.0;
-constexpr double bytes_per_int = 4.0;
+using rouleau::bench::bytes_per_double;
+using rouleau::bench::bytes_per_int;
+using rouleau::bench::time_applications;
 constexpr double geometry_doubles_per_element = 8.0 * rouleau::geometry_entries;
 
 enum class Pass { jacobian_action, linear_action, residual };
@@ -132,8 +134,6 @@ OperatorProblem& problem(int n) {
   return *cached_problem;
 }
 
-double seconds_since(const Kokkos::Timer& timer) { return timer.seconds(); }
-
 void set_operator_counters(benchmark::State& state, const FluidMesh& mesh, Pass pass) {
   const double applications = static_cast<double>(state.iterations());
   state.counters["MDoF/s"] = benchmark::Counter(applications * mesh.num_unknowns() * 1e-6, benchmark::Counter::kIsRate);
@@ -142,21 +142,6 @@ void set_operator_counters(benchmark::State& state, const FluidMesh& mesh, Pass 
                                               benchmark::Counter::kIsRate);
   state.counters["unknowns"] = mesh.num_unknowns();
   state.counters["MB/application"] = operator_bytes(mesh, pass) * 1e-6;
-}
-
-// Times `apply` (after one warm-up call: first touch, allocations) with fences around
-// each timed application.
-template <class Apply>
-void time_applications(benchmark::State& state, const Apply& apply) {
-  apply();
-  Kokkos::fence();
-  for (auto _ : state) {
-    Kokkos::fence();
-    Kokkos::Timer timer;
-    apply();
-    Kokkos::fence();
-    state.SetIterationTime(seconds_since(timer));
-  }
 }
 
 void BM_JacobianAction(benchmark::State& state) {
@@ -183,35 +168,13 @@ void BM_Residual(benchmark::State& state) {
   set_operator_counters(state, p.mesh, Pass::residual);
 }
 
-// STREAM triad over the bytes BM_JacobianAction/n moves: three arrays of bytes/24 doubles.
+// STREAM triad over the bytes BM_JacobianAction/n moves.
 void BM_Triad(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const int nodes = (n + 1) * (n + 1) * (n + 1), elements = n * n * n;
-  const double bytes_target = (vectors_read(Pass::jacobian_action) + 1) * 4.0 * nodes * bytes_per_double +
-                              elements * ((geometry_doubles_per_element + 1.0) * bytes_per_double + 8 * bytes_per_int);
-  const auto length = static_cast<std::int64_t>(bytes_target / (3 * bytes_per_double));
-  Kokkos::View<double*> a("a", length), b("b", length), c("c", length);
-  Kokkos::deep_copy(b, 1.0);
-  Kokkos::deep_copy(c, 2.0);
-  const double s = 3.0;
-  using Policy = Kokkos::RangePolicy<Kokkos::DefaultExecutionSpace, Kokkos::IndexType<std::int64_t>>;
-  auto triad = [&]() {
-    Kokkos::parallel_for(
-        "bench::triad", Policy(0, length), KOKKOS_LAMBDA(const std::int64_t i) { a(i) = b(i) + s * c(i); });
-  };
-  triad();
-  Kokkos::fence();
-  for (auto _ : state) {
-    Kokkos::fence();
-    Kokkos::Timer timer;
-    triad();
-    Kokkos::fence();
-    state.SetIterationTime(seconds_since(timer));
-  }
-  const double bytes = 3.0 * bytes_per_double * static_cast<double>(length);
-  state.counters["GB/s"] = benchmark::Counter(static_cast<double>(state.iterations()) * bytes * 1e-9,
-                                              benchmark::Counter::kIsRate);
-  state.counters["MB/application"] = bytes * 1e-6;
+  rouleau::bench::triad(state, (vectors_read(Pass::jacobian_action) + 1) * 4.0 * nodes * bytes_per_double +
+                                   elements * ((geometry_doubles_per_element + 1.0) * bytes_per_double +
+                                               8 * bytes_per_int));
 }
 
 // The manufactured Stokes problem on the unit cube (k = π), divergence-free:
@@ -274,7 +237,7 @@ void BM_StokesSolve(benchmark::State& state) {
     Kokkos::Timer timer;
     report = solver.solve_steady();
     Kokkos::fence();
-    state.SetIterationTime(seconds_since(timer));
+    state.SetIterationTime(timer.seconds());
   }
   state.counters["converged"] = report.converged ? 1 : 0;
   // ‖R‖ after the solve over ‖R(U₀)‖ (the Krylov solve's reduction of the true residual).
@@ -321,12 +284,7 @@ int main(int argc, char** argv) {
   Kokkos::ScopeGuard kokkos(argc, argv);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  using Space = Kokkos::DefaultExecutionSpace;
-  benchmark::AddCustomContext("kokkos_execution_space", Space::name());
-  benchmark::AddCustomContext("kokkos_concurrency", std::to_string(Space().concurrency()));
-  benchmark::AddCustomContext("kokkos_version", std::to_string(KOKKOS_VERSION / 10000) + "." +
-                                                    std::to_string(KOKKOS_VERSION / 100 % 100) + "." +
-                                                    std::to_string(KOKKOS_VERSION % 100));
+  rouleau::bench::add_kokkos_context();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   cached_problem.reset();  // Kokkos Views must go before Kokkos::finalize

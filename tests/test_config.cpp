@@ -1,7 +1,8 @@
 // The case-file loader: converted values, every class of bad input, overrides, the derived
-// scales and the resolved-case round trip.
+// scales, the cell kinds and cells, and the resolved-case round trip.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "bad_case_files.hpp"
+#include "config/cell_kinds.hpp"
 #include "config/derived.hpp"
 #include "config/load_case.hpp"
 #include "config/resolved_case.hpp"
@@ -19,6 +21,7 @@ namespace {
 
 using rouleau::BoundaryType;
 using rouleau::CaseConfig;
+using rouleau::CellKindConfig;
 using rouleau::InputError;
 
 const std::string data_dir = ROULEAU_TEST_DATA_DIR;
@@ -91,6 +94,44 @@ void expect_identical_cases(const CaseConfig& a, const CaseConfig& b) {
   EXPECT_EQ(a.output.write_fields, b.output.write_fields);
   EXPECT_EQ(a.output.fields_every_steps, b.output.fields_every_steps);
   EXPECT_EQ(a.output.diagnostics_every_steps, b.output.diagnostics_every_steps);
+  ASSERT_EQ(a.cell_kinds.size(), b.cell_kinds.size());
+  for (std::size_t i = 0; i < a.cell_kinds.size(); ++i) {
+    const CellKindConfig &first = a.cell_kinds[i], &second = b.cell_kinds[i];
+    SCOPED_TRACE("cell kind " + first.name);
+    EXPECT_EQ(first.name, second.name);
+    EXPECT_EQ(first.shape, second.shape);
+    EXPECT_EQ(first.body, second.body);
+    EXPECT_EQ(first.diameter, second.diameter);
+    EXPECT_EQ(first.length, second.length);
+    EXPECT_EQ(first.width, second.width);
+    EXPECT_EQ(first.thickness, second.thickness);
+    EXPECT_EQ(first.arc_radius, second.arc_radius);
+    EXPECT_EQ(first.shell_thickness, second.shell_thickness);
+    EXPECT_EQ(first.resolution, second.resolution);
+    EXPECT_EQ(first.mesh_size, second.mesh_size);
+    EXPECT_EQ(first.shear_modulus, second.shear_modulus);
+    EXPECT_EQ(first.bulk_modulus, second.bulk_modulus);
+    EXPECT_EQ(first.poisson_ratio, second.poisson_ratio);
+    EXPECT_EQ(first.density, second.density);
+  }
+  ASSERT_EQ(a.cells.size(), b.cells.size());
+  for (std::size_t i = 0; i < a.cells.size(); ++i) {
+    SCOPED_TRACE("cell " + std::to_string(i));
+    EXPECT_EQ(a.cells[i].kind, b.cells[i].kind);
+    EXPECT_EQ(a.cells[i].center, b.cells[i].center);
+    EXPECT_EQ(a.cells[i].orientation, b.cells[i].orientation);
+  }
+}
+
+// The kind called `name` of a loaded case (fails the test when there is none).
+const CellKindConfig& kind_of(const CaseConfig& config, const std::string& name) {
+  const CellKindConfig* kind = rouleau::find_cell_kind(config, name);
+  if (!kind) {
+    ADD_FAILURE() << "no cell kind " << name;
+    static const CellKindConfig none;
+    return none;
+  }
+  return *kind;
 }
 
 TEST(ConfigLoad, GoodCaseHasTheConvertedValues) {
@@ -172,6 +213,35 @@ TEST(ConfigLoad, ReasonsSayWhatIsWrong) {
   EXPECT_NE(reason_of("key_of_other_boundary_type.toml").find("does not belong to boundary type \"inflow\""),
             std::string::npos);
   EXPECT_NE(reason_of("unpaired_periodic.toml").find("boundary.x_min is periodic"), std::string::npos);
+}
+
+TEST(ConfigLoad, CellErrorsSayWhatIsWrong) {
+  const auto reason_of = [](const std::string& bad_case) { return load_error(data_dir + "/bad_cases/" + bad_case).reason(); };
+  EXPECT_EQ(reason_of("negative_shear_modulus.toml"), "must be > 0, got -11.7");
+  EXPECT_EQ(reason_of("zero_bulk_modulus.toml"), "must be > 0, got 0");
+  EXPECT_EQ(reason_of("both_shear_moduli.toml"),
+            "give either shear_modulus_Pa or membrane_shear_modulus_pN_um, not both");
+  EXPECT_EQ(reason_of("membrane_modulus_on_filled_body.toml"),
+            "applies to body = \"shell\" only, and this kind's body is \"filled\" (give shear_modulus_Pa)");
+  EXPECT_EQ(reason_of("poisson_ratio_one_half.toml"), "must be > -1 and < 0.5, got 0.5");
+  EXPECT_EQ(reason_of("unknown_cell_shape.toml"),
+            "must be one of \"rbc\", \"sickle\", \"sphere\"; got \"rbd\"; did you mean \"rbc\"?");
+  EXPECT_EQ(reason_of("unknown_cell_kind.toml"),
+            "must be one of \"normal\", \"sickle\", \"capsule\"; got \"sickel\"; did you mean \"sickle\"?");
+  EXPECT_EQ(reason_of("cells_not_array_of_tables.toml"), "expected an array of tables ([[cells]] entries), got a table");
+  EXPECT_EQ(reason_of("cell_entry_not_a_table.toml"),
+            "expected a table (an entry of an array of tables ([[cells]] entries)), got an integer");
+  EXPECT_EQ(reason_of("cell_without_center.toml"), "missing required key");
+  // the limit is half the Evans–Fung disc's thickness on its axis: 0.1035 × 7.82 / 2 μm
+  EXPECT_EQ(reason_of("shell_thicker_than_rbc_centre.toml"),
+            "must be < 0.404685 μm, half the disc's thickness on its axis (0.1035 × diameter_um = 0.80937 μm), "
+            "got 0.45");
+  EXPECT_EQ(reason_of("sickle_arc_radius_too_small.toml"),
+            "must be > width_um / 2 = 2.1 μm (else the crescent's inner edge crosses its centre of curvature), "
+            "got 2");
+  EXPECT_EQ(reason_of("unknown_cell_kind_key.toml"), "unknown key; did you mean \"diameter_um\"?");
+  EXPECT_EQ(reason_of("size_key_of_other_shape.toml"), "does not belong to shape \"sphere\" (its size keys are diameter_um)");
+  EXPECT_EQ(reason_of("negative_cell_diameter.toml"), "must be > 0, got -7.82");
 }
 
 TEST(ConfigLoad, SyntaxErrorNamesLineAndColumn) {
@@ -285,6 +355,146 @@ TEST(ConfigDerived, VelocityFromPressureDropBodyForceOrDefault) {
   EXPECT_DOUBLE_EQ(given.velocity_scale, 3.0);
 }
 
+TEST(ConfigCells, BuiltInKindsHaveThePaperValues) {
+  const CaseConfig config = rouleau::load_case(write_case_file("fluid_only.toml", minimal_case));
+  ASSERT_EQ(config.cell_kinds.size(), 3u);
+  EXPECT_EQ(config.cell_kinds[0].name, "normal");
+  EXPECT_EQ(config.cell_kinds[1].name, "sickle");
+  EXPECT_EQ(config.cell_kinds[2].name, "capsule");
+  EXPECT_TRUE(config.cells.empty());
+
+  // the paper's membrane: G_s = 4.2e-3 dyn/cm = 4.2 pN/μm, κ = 1.8e-12 dyn·cm = 0.18 pN·μm
+  const double dyn_per_cm_in_pN_per_um = 1e-3 / 1e-6;   // [N/m] / [N/m]
+  const double dyn_cm_in_pN_um = 1e-7 / 1e-18;          // [J] / [J]
+  EXPECT_DOUBLE_EQ(4.2e-3 * dyn_per_cm_in_pN_per_um, rouleau::paper_membrane_shear_modulus);
+  EXPECT_DOUBLE_EQ(1.8e-12 * dyn_cm_in_pN_um, rouleau::paper_bending_modulus);
+  // h = sqrt(3κ/G_s) = 0.3586 μm, rounded to 0.36 μm
+  EXPECT_NEAR(std::sqrt(3.0 * rouleau::paper_bending_modulus / rouleau::paper_membrane_shear_modulus), 0.36, 0.005);
+
+  const CellKindConfig& normal = kind_of(config, "normal");
+  EXPECT_EQ(normal.shape, rouleau::CellShape::rbc);
+  EXPECT_EQ(normal.body, rouleau::CellBody::shell);
+  EXPECT_EQ(normal.resolution, rouleau::MeshResolution::paper);
+  EXPECT_DOUBLE_EQ(normal.diameter, 7.82);
+  EXPECT_DOUBLE_EQ(normal.shell_thickness, 0.36);
+  EXPECT_NEAR(normal.shear_modulus, 11.67, 0.005);  // G = G_s / h [Pa]
+  EXPECT_DOUBLE_EQ(normal.shear_modulus, 4.2 / 0.36);
+  EXPECT_DOUBLE_EQ(normal.poisson_ratio, 0.45);
+  EXPECT_DOUBLE_EQ(normal.bulk_modulus, 2.0 * normal.shear_modulus * 1.45 / (3.0 * 0.1));  // 112.8 Pa
+  EXPECT_DOUBLE_EQ(normal.density, 1.1e-9);  // 1100 kg/m³
+
+  const CellKindConfig& sickle = kind_of(config, "sickle");
+  EXPECT_EQ(sickle.shape, rouleau::CellShape::sickle);
+  EXPECT_EQ(sickle.body, rouleau::CellBody::shell);
+  EXPECT_DOUBLE_EQ(sickle.shear_modulus, 10.0 * normal.shear_modulus);
+  EXPECT_DOUBLE_EQ(sickle.bulk_modulus, 10.0 * normal.bulk_modulus);  // same ν
+  EXPECT_DOUBLE_EQ(sickle.length, 14.0);
+  EXPECT_DOUBLE_EQ(sickle.width, 4.2);
+  EXPECT_DOUBLE_EQ(sickle.thickness, 3.0);
+  EXPECT_DOUBLE_EQ(sickle.arc_radius, 8.0);
+  EXPECT_DOUBLE_EQ(sickle.shell_thickness, normal.shell_thickness);
+  EXPECT_DOUBLE_EQ(sickle.density, 1.1e-9);
+
+  const CellKindConfig& capsule = kind_of(config, "capsule");
+  EXPECT_EQ(capsule.shape, rouleau::CellShape::sphere);
+  EXPECT_DOUBLE_EQ(capsule.diameter, 5.64);
+  EXPECT_NEAR(M_PI / 6.0 * std::pow(capsule.diameter, 3), 94.1, 0.5);  // the normal RBC's volume [μm³]
+  EXPECT_DOUBLE_EQ(capsule.shear_modulus, normal.shear_modulus);
+  EXPECT_DOUBLE_EQ(capsule.bulk_modulus, normal.bulk_modulus);
+
+  EXPECT_EQ(rouleau::find_cell_kind(config, "no_such_kind"), nullptr);
+  EXPECT_EQ(rouleau::builtin_cell_kinds().size(), 3u);
+}
+
+TEST(ConfigCells, PoissonRatioAndBulkModulusAreInverse) {
+  for (const double nu : {-0.5, 0.0, 0.3, 0.45, 0.49}) {
+    const double bulk = rouleau::bulk_modulus_from_poisson(11.67, nu);
+    EXPECT_NEAR(rouleau::poisson_from_bulk_modulus(11.67, bulk), nu, 1e-14) << nu;
+  }
+  EXPECT_DOUBLE_EQ(rouleau::bulk_modulus_from_poisson(3.0, 0.25), 5.0);  // K = 2·3·1.25 / (3·0.5)
+  EXPECT_DOUBLE_EQ(rouleau::bulk_modulus_from_poisson(3.0, 0.0), 2.0);   // K = 2G/3
+}
+
+TEST(ConfigCells, ModuliFromEitherKeyOfEachPair) {
+  const std::string path = write_case_file(
+      "moduli.toml", minimal_case +
+                         "[cell_kinds.normal]\nshell_thickness_um = 0.3\nmembrane_shear_modulus_pN_um = 8.4\n"
+                         "[cell_kinds.capsule]\nshear_modulus_Pa = 20\nbulk_modulus_Pa = 100\n"
+                         "[cell_kinds.sickle]\nshear_modulus_Pa = 50\n"
+                         "[cell_kinds.stiff]\npoisson_ratio = 0.3\nbody = \"filled\"\nshear_modulus_Pa = 1000\n");
+  const CaseConfig config = rouleau::load_case(path);
+  // membrane modulus: G = G_s / h = 8.4 pN/μm / 0.3 μm = 28 Pa; K follows G through ν = 0.45
+  const CellKindConfig& normal = kind_of(config, "normal");
+  EXPECT_DOUBLE_EQ(normal.shear_modulus, 28.0);
+  EXPECT_DOUBLE_EQ(normal.poisson_ratio, 0.45);
+  EXPECT_DOUBLE_EQ(normal.bulk_modulus, rouleau::bulk_modulus_from_poisson(28.0, 0.45));
+  // K given: ν = (3K − 2G) / (2(3K + G)) is recorded
+  const CellKindConfig& capsule = kind_of(config, "capsule");
+  EXPECT_DOUBLE_EQ(capsule.bulk_modulus, 100.0);
+  EXPECT_DOUBLE_EQ(capsule.poisson_ratio, (300.0 - 40.0) / (2.0 * (300.0 + 20.0)));
+  // G changed alone: K recomputed from the kind's ν
+  const CellKindConfig& sickle = kind_of(config, "sickle");
+  EXPECT_DOUBLE_EQ(sickle.shear_modulus, 50.0);
+  EXPECT_DOUBLE_EQ(sickle.bulk_modulus, rouleau::bulk_modulus_from_poisson(50.0, 0.45));
+  // an added kind: ν given
+  const CellKindConfig& stiff = kind_of(config, "stiff");
+  EXPECT_DOUBLE_EQ(stiff.bulk_modulus, 2.0 * 1000.0 * 1.3 / (3.0 * 0.4));
+}
+
+TEST(ConfigCells, AddedKindsStartFromTheBuiltInNormalCellAndFollowTheBuiltIns) {
+  const std::string path = write_case_file(
+      "kinds.toml", minimal_case +
+                        "[cell_kinds.normal]\ndiameter_um = 8.0\n"
+                        "[cell_kinds.big]\ndiameter_um = 9.5\nresolution = \"fine\"\nmesh_size_um = 0.4\n"
+                        "[cell_kinds.arc]\nshape = \"sickle\"\narc_radius_um = 6\ndensity_kg_m3 = 1150\n");
+  const CaseConfig config = rouleau::load_case(path);
+  ASSERT_EQ(config.cell_kinds.size(), 5u);
+  const std::vector<std::string> names{"normal", "sickle", "capsule", "arc", "big"};
+  for (std::size_t i = 0; i < names.size(); ++i) EXPECT_EQ(config.cell_kinds[i].name, names[i]);
+  EXPECT_DOUBLE_EQ(kind_of(config, "normal").diameter, 8.0);
+  const CellKindConfig& big = kind_of(config, "big");
+  const CellKindConfig builtin_normal = rouleau::builtin_cell_kinds().front();
+  EXPECT_EQ(big.shape, rouleau::CellShape::rbc);
+  EXPECT_DOUBLE_EQ(big.diameter, 9.5);
+  EXPECT_EQ(big.resolution, rouleau::MeshResolution::fine);
+  EXPECT_DOUBLE_EQ(big.mesh_size, 0.4);
+  EXPECT_DOUBLE_EQ(big.shear_modulus, builtin_normal.shear_modulus);
+  const CellKindConfig& arc = kind_of(config, "arc");
+  EXPECT_EQ(arc.shape, rouleau::CellShape::sickle);
+  EXPECT_DOUBLE_EQ(arc.arc_radius, 6.0);
+  EXPECT_DOUBLE_EQ(arc.density, 1.15e-9);
+  EXPECT_DOUBLE_EQ(arc.shear_modulus, builtin_normal.shear_modulus);  // the normal cell's, not the sickle's
+}
+
+TEST(ConfigCells, CellsTakeTheirKindCentreAndOrientation) {
+  const std::string path = write_case_file(
+      "cells.toml", minimal_case + "[cell_kinds.stiff]\nshear_modulus_Pa = 100\n"
+                                   "[[cells]]\ncenter_um = [5, 10, 15]\n"
+                                   "[[cells]]\nkind = \"stiff\"\ncenter_um = [5, 10, 5.5]\norientation_deg = [0, 90, -45]\n");
+  const CaseConfig config = rouleau::load_case(path);
+  ASSERT_EQ(config.cells.size(), 2u);
+  EXPECT_EQ(config.cells[0].kind, "normal");
+  EXPECT_EQ(config.cells[0].center, (std::array<double, 3>{5, 10, 15}));
+  EXPECT_EQ(config.cells[0].orientation, (std::array<double, 3>{0, 0, 0}));
+  EXPECT_EQ(config.cells[1].kind, "stiff");
+  EXPECT_EQ(config.cells[1].center, (std::array<double, 3>{5, 10, 5.5}));
+  EXPECT_EQ(config.cells[1].orientation, (std::array<double, 3>{0, 90, -45}));
+}
+
+TEST(ConfigCells, OverridesReachKindsAndCells) {
+  const CaseConfig config = rouleau::load_case(
+      good_case, {"cell_kinds.sickle.shear_modulus_Pa=100", "cells=[{kind=\"capsule\", center_um=[20, 0, 10]}]"});
+  EXPECT_DOUBLE_EQ(kind_of(config, "sickle").shear_modulus, 100.0);
+  ASSERT_EQ(config.cells.size(), 1u);
+  EXPECT_EQ(config.cells[0].kind, "capsule");
+  const InputError error = load_error(good_case, {"cell_kinds.normal.poisson_ratio=0.7"});
+  EXPECT_EQ(error.file(), "--set");
+  EXPECT_EQ(error.key(), "cell_kinds.normal.poisson_ratio");
+  const InputError entry_error = load_error(good_case, {"cells=[{center_um=[1, 2, 3]}, {kind=\"nromal\", center_um=[0, 0, 0]}]"});
+  EXPECT_EQ(entry_error.file(), "--set");
+  EXPECT_EQ(entry_error.key(), "cells[1].kind");
+}
+
 TEST(ConfigResolved, RoundTripGivesAnIdenticalCase) {
   const std::vector<std::vector<std::string>> variants{
       {},
@@ -292,11 +502,21 @@ TEST(ConfigResolved, RoundTripGivesAnIdenticalCase) {
        "boundary.x_max={type=\"traction\", pressure_Pa=0.37}", "boundary.z_min.type=wall",
        "boundary.z_max.type=wall", "fluid.density_kg_m3=1099.7", "fluid.viscosity_Pa_s=3.3e-3",
        "case.description=\"quote \\\" and\\nnewline\"", "time.mode=steady", "solver.stokes=off"},
+      // cells, a changed and added kinds, each modulus given either way
+      {"cell_kinds.normal.diameter_um=7.5", "cell_kinds.normal.shell_thickness_um=0.31",
+       "cell_kinds.sickle.membrane_shear_modulus_pN_um=37.1", "cell_kinds.capsule.poisson_ratio=0.49",
+       "cell_kinds.capsule.resolution=coarse", "cell_kinds.capsule.density_kg_m3=1093.3",
+       "cell_kinds.stiff-1={body=\"filled\", shape=\"sickle\", shear_modulus_Pa=51.3, bulk_modulus_Pa=903.7}",
+       "cell_kinds.ball={shape=\"sphere\", diameter_um=4.1, mesh_size_um=0.35, bulk_modulus_Pa=77.7}",
+       "cells=[{kind=\"sickle\", center_um=[10.1, 0, 10], orientation_deg=[0, 0, 33.3]},"
+       " {center_um=[30, 0.7, 10]}, {kind=\"stiff-1\", center_um=[20, -3, 10]}, {kind=\"ball\", center_um=[1, 2, 3]}]"},
   };
   for (const auto& overrides : variants) {
     const CaseConfig original = rouleau::load_case(good_case, overrides);
     const std::string text = rouleau::resolved_case_toml(original, rouleau::derive_quantities(original));
     EXPECT_NE(text.find("\n[derived]\n"), std::string::npos);
+    EXPECT_NE(text.find("\n[cell_kinds.capsule]\n"), std::string::npos);
+    EXPECT_EQ(text.find("\n[[cells]]\n") != std::string::npos, !original.cells.empty());
     const CaseConfig reloaded = rouleau::load_case(write_case_file("resolved.toml", text));
     expect_identical_cases(original, reloaded);
     // and the second generation writes the same text (source_file comment aside)

@@ -96,8 +96,8 @@ enum class CellBody { shell, filled };
 enum class MeshResolution { coarse, paper, fine };
 
 // A kind of cell: shape, size, mesh and material. Built-in kinds "normal", "sickle" and
-// "capsule" have defaults (cell_kind_defaults()); a case may change them or add its own
-// under [cell_kinds.NAME].
+// "capsule" have defaults (builtin_cell_kinds(), config/cell_kinds.hpp); a case may
+// change them or add its own under [cell_kinds.NAME].
 struct CellKindConfig {
   std::string name;
   CellShape shape = CellShape::rbc;  // key shape = "rbc" | "sickle" | "sphere"

@@ -16,6 +16,7 @@
 #include <toml++/toml.h>
 #include <utility>
 
+#include "config/cell_kinds.hpp"
 #include "util/errors.hpp"
 
 namespace rouleau {
@@ -74,6 +75,14 @@ std::string suggestion(std::string_view given, const std::vector<std::string_vie
   return best.empty() ? std::string() : "; did you mean \"" + std::string(best) + "\"?";
 }
 
+// The names separated by ", ", each in double quotes when `quoted`.
+std::string joined(const std::vector<std::string_view>& names, bool quoted) {
+  const std::string quote = quoted ? "\"" : "";
+  std::string text;
+  for (const auto name : names) text += (text.empty() ? "" : ", ") + quote + std::string(name) + quote;
+  return text;
+}
+
 // An allowed interval of values; describe() gives "> 0", "≥ 1 and ≤ 4096", ...
 struct Range {
   double lower = -std::numeric_limits<double>::infinity();
@@ -119,7 +128,7 @@ class ErrorSource {
     const auto related = [&](const std::string& overridden) {
       const auto is_prefix = [](const std::string& prefix, const std::string& text) {
         return text.size() > prefix.size() && text.compare(0, prefix.size(), prefix) == 0 &&
-               text[prefix.size()] == '.';
+               (text[prefix.size()] == '.' || text[prefix.size()] == '[');  // a sub-key or an array entry
       };
       return key == overridden || is_prefix(overridden, key) || is_prefix(key, overridden);
     };
@@ -167,6 +176,34 @@ class TableReader {
     if (found && !found->is_table()) expected(key, "a table", *found);
     return TableReader(found ? found->as_table() : nullptr, path_of(key), errors_, std::move(allowed_keys));
   }
+  // A sub-table whose keys are names the file chooses (such as [cell_kinds.NAME]); every
+  // key is allowed. An absent table reads as empty.
+  TableReader table_of_names(std::string_view key) const {
+    const toml::node* found = node(key);
+    if (found && !found->is_table()) expected(key, "a table", *found);
+    std::vector<std::string_view> names;
+    if (found)
+      for (const auto& [name, value] : *found->as_table()) names.push_back(name.str());
+    return TableReader(found ? found->as_table() : nullptr, path_of(key), errors_, std::move(names));
+  }
+  // The entries of an array of tables ([[key]]), each with its own `allowed_keys` and the
+  // dotted key "key[I]" (I from 0). An absent array reads as empty.
+  std::vector<TableReader> array_of_tables(std::string_view key, const std::vector<std::string_view>& allowed_keys) const {
+    const toml::node* found = node(key);
+    if (!found) return {};
+    const std::string what = "an array of tables ([[" + path_of(key) + "]] entries)";
+    if (!found->is_array()) expected(key, what, *found);
+    const toml::array& elements = *found->as_array();
+    std::vector<TableReader> entries;
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+      const std::string entry_key = std::string(key) + "[" + std::to_string(i) + "]";
+      if (!elements.get(i)->is_table()) expected(entry_key, "a table (an entry of " + what + ")", *elements.get(i));
+      entries.emplace_back(elements.get(i)->as_table(), path_of(entry_key), errors_, allowed_keys);
+    }
+    return entries;
+  }
+  // Whether the file gives `key`.
+  bool has(std::string_view key) const { return node(key) != nullptr; }
 
   // A finite number (integers accepted) in `range`.
   std::optional<double> number(std::string_view key, const Range& range = Range::any()) const {
@@ -218,9 +255,7 @@ class TableReader {
       if (choice_name == *name) return value;
       names.push_back(choice_name);
     }
-    std::string listed;
-    for (const auto choice_name : names) listed += (listed.empty() ? "\"" : ", \"") + std::string(choice_name) + "\"";
-    fail(key, "must be one of " + listed + "; got \"" + *name + "\"" + suggestion(*name, names));
+    fail(key, "must be one of " + joined(names, true) + "; got \"" + *name + "\"" + suggestion(*name, names));
   }
 
  private:
@@ -304,6 +339,17 @@ Value require(const TableReader& table, std::string_view key, const std::optiona
   return *value;
 }
 
+bool contains(const std::vector<std::string_view>& names, std::string_view name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+// The key density_kg_m3 of a section (> 0), converted to pN·s²/μm⁴.
+std::optional<double> read_density(const TableReader& section) {
+  const auto density = section.number("density_kg_m3", Range::above(0));
+  if (!density) return std::nullopt;
+  return *density * density_kg_m3_to_internal;
+}
+
 // Reads the file and parses it; I/O and syntax errors become InputError.
 toml::table parse_case_file(const std::string& path) {
   std::error_code status;
@@ -359,11 +405,7 @@ std::vector<std::string> apply_overrides(toml::table& document, const std::vecto
       if (dot == std::string::npos) break;
       start = dot + 1;
     }
-    const bool bare_key_parts = std::all_of(parts.begin(), parts.end(), [](const std::string& part) {
-      return !part.empty() && std::all_of(part.begin(), part.end(), [](unsigned char c) {
-        return std::isalnum(c) || c == '_' || c == '-';
-      });
-    });
+    const bool bare_key_parts = std::all_of(parts.begin(), parts.end(), is_bare_toml_key);
     if (!bare_key_parts)
       throw InputError(override_source_name, key_text, "not a dotted key (letters, digits, '_' and '-' between dots)");
 
@@ -393,8 +435,7 @@ void read_case_section(const TableReader& root, const std::string& path, CaseCon
 
 void read_fluid(const TableReader& root, FluidConfig& fluid) {
   const TableReader section = root.table("fluid", {"density_kg_m3", "viscosity_Pa_s", "body_force_Pa_um"});
-  if (const auto density = section.number("density_kg_m3", Range::above(0)))
-    fluid.density = *density * density_kg_m3_to_internal;
+  assign(fluid.density, read_density(section));
   assign(fluid.viscosity, section.number("viscosity_Pa_s", Range::above(0)));
   assign(fluid.body_force, section.number3("body_force_Pa_um"));
 }
@@ -435,11 +476,9 @@ void read_boundaries(const TableReader& root, DomainConfig& domain) {
                                                                  BoundaryType::inflow, BoundaryType::traction})));
     const std::vector<std::string_view> allowed = boundary_keys_of(boundary.type);
     for (const std::string& key : reader.present_keys()) {
-      if (key == "type" || std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
-      std::string takes;
-      for (const auto name : allowed) takes += (takes.empty() ? "" : ", ") + std::string(name);
+      if (key == "type" || contains(allowed, key)) continue;
       reader.fail(key, "does not belong to boundary type \"" + std::string(toml_name(boundary.type)) + "\" (it takes " +
-                           (takes.empty() ? std::string("no key besides type") : takes) + ")");
+                           (allowed.empty() ? std::string("no key besides type") : joined(allowed, false)) + ")");
     }
     const int axis = side / 2;
     assign(boundary.velocity, reader.number3("velocity_um_s"));
@@ -519,7 +558,163 @@ void read_output(const TableReader& root, OutputConfig& output) {
   assign(output.diagnostics_every_steps, section.integer("diagnostics_every_steps", step_count));
 }
 
+// ---- cells
+
+// Every key a [cell_kinds.NAME] table may hold; which apply depends on its shape and body.
+const std::vector<std::string_view> cell_kind_keys{
+    "shape", "body", "diameter_um", "length_um", "width_um", "thickness_um", "arc_radius_um",
+    "shell_thickness_um", "resolution", "mesh_size_um", "shear_modulus_Pa", "membrane_shear_modulus_pN_um",
+    "bulk_modulus_Pa", "poisson_ratio", "density_kg_m3"};
+// The keys that apply to a shell body only.
+const std::vector<std::string_view> shell_body_keys{"shell_thickness_um", "membrane_shear_modulus_pN_um"};
+
+constexpr std::array<CellShape, 3> all_cell_shapes{CellShape::rbc, CellShape::sickle, CellShape::sphere};
+
+// The size keys of each shape.
+std::vector<std::string_view> size_keys_of(CellShape shape) {
+  switch (shape) {
+    case CellShape::rbc:
+    case CellShape::sphere: return {"diameter_um"};
+    case CellShape::sickle: return {"length_um", "width_um", "thickness_um", "arc_radius_um"};
+  }
+  return {};
+}
+
+// Rejects size keys of another shape and shell keys on a filled body.
+void check_keys_apply_to_shape_and_body(const TableReader& reader, const CellKindConfig& kind) {
+  const std::vector<std::string_view> own_size_keys = size_keys_of(kind.shape);
+  for (const std::string& key : reader.present_keys()) {
+    const bool size_key = std::any_of(all_cell_shapes.begin(), all_cell_shapes.end(),
+                                      [&](CellShape shape) { return contains(size_keys_of(shape), key); });
+    if (size_key && !contains(own_size_keys, key))
+      reader.fail(key, "does not belong to shape \"" + std::string(toml_name(kind.shape)) + "\" (its size keys are " +
+                           joined(own_size_keys, false) + ")");
+    if (kind.body == CellBody::filled && contains(shell_body_keys, key))
+      reader.fail(key, std::string("applies to body = \"shell\" only, and this kind's body is \"filled\"") +
+                           (key == "membrane_shear_modulus_pN_um" ? " (give shear_modulus_Pa)" : ""));
+  }
+}
+
+// Fails when the file gives both of two keys that set the same quantity.
+void check_not_both(const TableReader& reader, std::string_view first, std::string_view second) {
+  if (reader.has(first) && reader.has(second))
+    reader.fail(second, "give either " + std::string(first) + " or " + std::string(second) + ", not both");
+}
+
+// Shear modulus G [Pa] from shear_modulus_Pa or membrane_shear_modulus_pN_um (G = G_s / h),
+// bulk modulus K [Pa] from bulk_modulus_Pa or poisson_ratio. K follows G through ν unless
+// bulk_modulus_Pa is given; then ν is the one K and G imply.
+void read_cell_moduli(const TableReader& reader, CellKindConfig& kind) {
+  check_not_both(reader, "shear_modulus_Pa", "membrane_shear_modulus_pN_um");
+  check_not_both(reader, "bulk_modulus_Pa", "poisson_ratio");
+  const Range positive = Range::above(0);
+  assign(kind.shear_modulus, reader.number("shear_modulus_Pa", positive));
+  if (const auto membrane_shear_modulus = reader.number("membrane_shear_modulus_pN_um", positive))
+    kind.shear_modulus = *membrane_shear_modulus / kind.shell_thickness;  // [pN/μm / μm = Pa]
+  if (const auto bulk_modulus = reader.number("bulk_modulus_Pa", positive)) {
+    kind.bulk_modulus = *bulk_modulus;
+    kind.poisson_ratio = poisson_from_bulk_modulus(kind.shear_modulus, kind.bulk_modulus);
+  } else {
+    assign(kind.poisson_ratio, reader.number("poisson_ratio", Range::open(-1, 0.5)));
+    kind.bulk_modulus = bulk_modulus_from_poisson(kind.shear_modulus, kind.poisson_ratio);
+  }
+}
+
+// The smallest half-dimension of a body [μm] (a shell must be thinner) and what it is.
+struct HalfDimension {
+  double value;
+  std::string what;
+};
+HalfDimension smallest_half_dimension(const CellKindConfig& kind) {
+  switch (kind.shape) {
+    case CellShape::rbc: {
+      const double centre_thickness = rbc_centre_thickness_per_diameter * kind.diameter;
+      return {0.5 * centre_thickness, "half the disc's thickness on its axis (" +
+                                          format_number(rbc_centre_thickness_per_diameter) +
+                                          " × diameter_um = " + format_number(centre_thickness) + " μm)"};
+    }
+    case CellShape::sphere: return {0.5 * kind.diameter, "the radius (diameter_um / 2)"};
+    case CellShape::sickle: {
+      HalfDimension smallest{0.5 * kind.length, "length_um / 2"};
+      if (0.5 * kind.width < smallest.value) smallest = {0.5 * kind.width, "width_um / 2"};
+      if (0.5 * kind.thickness < smallest.value) smallest = {0.5 * kind.thickness, "thickness_um / 2"};
+      return smallest;
+    }
+  }
+  return {0.0, "?"};
+}
+
+// Checks that the sizes of a kind make a body: a sickle's arc wider than its half-width,
+// a shell thinner than the body's smallest half-dimension.
+void check_cell_body(const TableReader& reader, const CellKindConfig& kind) {
+  if (kind.shape == CellShape::sickle && !(kind.arc_radius > 0.5 * kind.width))
+    reader.fail("arc_radius_um", "must be > width_um / 2 = " + format_number(0.5 * kind.width) +
+                                     " μm (else the crescent's inner edge crosses its centre of curvature), got " +
+                                     format_number(kind.arc_radius));
+  if (kind.body != CellBody::shell) return;
+  const HalfDimension limit = smallest_half_dimension(kind);
+  if (!(kind.shell_thickness < limit.value))
+    reader.fail("shell_thickness_um", "must be < " + format_number(limit.value) + " μm, " + limit.what + ", got " +
+                                          format_number(kind.shell_thickness));
+}
+
+// One [cell_kinds.NAME] table, applied over `kind` (the built-in kind or the starting values).
+void read_cell_kind(const TableReader& reader, CellKindConfig& kind) {
+  assign(kind.shape, reader.choice("shape", choices_of({CellShape::rbc, CellShape::sickle, CellShape::sphere})));
+  assign(kind.body, reader.choice("body", choices_of({CellBody::shell, CellBody::filled})));
+  check_keys_apply_to_shape_and_body(reader, kind);
+  const Range length = Range::above(0);
+  assign(kind.diameter, reader.number("diameter_um", length));
+  assign(kind.length, reader.number("length_um", length));
+  assign(kind.width, reader.number("width_um", length));
+  assign(kind.thickness, reader.number("thickness_um", length));
+  assign(kind.arc_radius, reader.number("arc_radius_um", length));
+  assign(kind.shell_thickness, reader.number("shell_thickness_um", length));
+  assign(kind.resolution,
+         reader.choice("resolution", choices_of({MeshResolution::coarse, MeshResolution::paper, MeshResolution::fine})));
+  assign(kind.mesh_size, reader.number("mesh_size_um", Range::at_least(0)));
+  read_cell_moduli(reader, kind);
+  assign(kind.density, read_density(reader));
+  check_cell_body(reader, kind);
+}
+
+// [cell_kinds.NAME]: the built-in kinds, changed by tables of their name, then the kinds
+// the file adds (in name order), each starting from the built-in "normal" cell.
+void read_cell_kinds(const TableReader& root, std::vector<CellKindConfig>& kinds) {
+  kinds = builtin_cell_kinds();
+  const CellKindConfig builtin_normal = kinds.front();
+  const TableReader section = root.table_of_names("cell_kinds");
+  for (const std::string& name : section.present_keys()) {
+    if (!is_bare_toml_key(name)) section.fail(name, "a cell kind's name is letters, digits, '_' and '-'");
+    const auto builtin = std::find_if(kinds.begin(), kinds.end(), [&](const CellKindConfig& kind) { return kind.name == name; });
+    CellKindConfig kind = builtin != kinds.end() ? *builtin : builtin_normal;
+    kind.name = name;
+    read_cell_kind(section.table(name, cell_kind_keys), kind);
+    if (builtin != kinds.end()) *builtin = kind;
+    else kinds.push_back(kind);
+  }
+}
+
+// [[cells]]: the cells placed in the domain (placement itself is checked in src/geometry).
+void read_cells(const TableReader& root, CaseConfig& config) {
+  std::vector<std::pair<std::string_view, std::string>> kind_names;
+  for (const CellKindConfig& kind : config.cell_kinds) kind_names.emplace_back(kind.name, kind.name);
+  for (const TableReader& entry : root.array_of_tables("cells", {"kind", "center_um", "orientation_deg"})) {
+    CellPlacement cell;
+    assign(cell.kind, entry.choice("kind", kind_names));
+    cell.center = require(entry, "center_um", entry.number3("center_um"));
+    assign(cell.orientation, entry.number3("orientation_deg"));
+    config.cells.push_back(cell);
+  }
+}
+
 }  // namespace
+
+bool is_bare_toml_key(std::string_view key) {
+  return !key.empty() && std::all_of(key.begin(), key.end(), [](unsigned char c) {
+    return std::isalnum(c) || c == '_' || c == '-';
+  });
+}
 
 const char* toml_name(BoundaryType type) {
   switch (type) {
@@ -551,13 +746,31 @@ const char* toml_name(PreconditionerType type) {
   }
   return "none";
 }
+const char* toml_name(CellShape shape) {
+  switch (shape) {
+    case CellShape::rbc: return "rbc";
+    case CellShape::sickle: return "sickle";
+    case CellShape::sphere: return "sphere";
+  }
+  return "?";
+}
+const char* toml_name(CellBody body) { return body == CellBody::shell ? "shell" : "filled"; }
+const char* toml_name(MeshResolution resolution) {
+  switch (resolution) {
+    case MeshResolution::coarse: return "coarse";
+    case MeshResolution::paper: return "paper";
+    case MeshResolution::fine: return "fine";
+  }
+  return "?";
+}
 
 CaseConfig load_case(const std::string& path, const std::vector<std::string>& overrides) {
   toml::table document = parse_case_file(path);
   const ErrorSource errors(path, apply_overrides(document, overrides));
   // [derived] is written by resolved_case_toml() for the reader; it is output-only.
   const TableReader root(&document, "", errors,
-                         {"case", "fluid", "domain", "boundary", "time", "solver", "scales", "output", "derived"});
+                         {"case", "fluid", "domain", "boundary", "time", "solver", "scales", "output",
+                          "cell_kinds", "cells", "derived"});
   CaseConfig config;
   config.source_file = path;
   read_case_section(root, path, config);
@@ -568,6 +781,8 @@ CaseConfig load_case(const std::string& path, const std::vector<std::string>& ov
   read_solver(root, config.solver);
   read_scales(root, config.scales);
   read_output(root, config.output);
+  read_cell_kinds(root, config.cell_kinds);
+  read_cells(root, config);
   return config;
 }
 

@@ -2,6 +2,7 @@
 // Reading a case file (TOML) into a CaseConfig, converting to internal units once.
 // Host-only: includes no Kokkos header.
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "config/case_config.hpp"
@@ -22,6 +23,11 @@ inline constexpr const char* override_source_name = "--set";
 // the file "--set". A missing/unreadable file is InputError(path, "(file)", reason); a TOML
 // syntax error is InputError(path, "line L, column C", reason). The [derived] table written
 // by resolved_case_toml() is accepted and ignored.
+// Cells: config.cell_kinds holds the built-in kinds (builtin_cell_kinds(), changed by
+// [cell_kinds.NAME] tables of their name) and then the kinds the file adds, which start from
+// the built-in "normal" cell; errors name cell_kinds.NAME.KEY. config.cells holds the
+// [[cells]] entries; errors name cells[I].KEY (I from 0). Placement (inside the domain, no
+// overlap) is checked by check_cell_placement() in src/geometry, not here.
 CaseConfig load_case(const std::string& path, const std::vector<std::string>& overrides = {});
 
 // The case-file spelling of each choice ("periodic", "bdf2", "auto", ...), as load_case()
@@ -32,5 +38,11 @@ const char* toml_name(TimeMode mode);
 const char* toml_name(TimeScheme scheme);
 const char* toml_name(StokesChoice choice);
 const char* toml_name(PreconditionerType type);
+const char* toml_name(CellShape shape);
+const char* toml_name(CellBody body);
+const char* toml_name(MeshResolution resolution);
+
+// Whether `key` can be written as a bare TOML key (letters, digits, '_' and '-'; not empty).
+bool is_bare_toml_key(std::string_view key);
 
 }  // namespace rouleau

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <toml++/toml.h>
 
+#include "config/cell_kinds.hpp"
 #include "config/load_case.hpp"
 
 namespace rouleau {
@@ -42,9 +43,16 @@ class TomlWriter {
     if (!comment.empty()) out_ << "# " << comment << "\n";
     out_ << "[" << name << "]\n";
   }
+  // An entry of an array of tables: [[name]].
+  void array_table_entry(const std::string& name) {
+    if (out_.tellp() > 0) out_ << "\n";
+    out_ << "[[" << name << "]]\n";
+  }
   template <class Value>
-  void key(const std::string& name, const Value& value) {
-    out_ << name << " = " << toml_text(value) << "\n";
+  void key(const std::string& name, const Value& value, const std::string& comment = "") {
+    out_ << name << " = " << toml_text(value);
+    if (!comment.empty()) out_ << "  # " << comment;
+    out_ << "\n";
   }
   void comment(const std::string& text) { out_ << "# " << text << "\n"; }
   std::string text() const { return out_.str(); }
@@ -65,6 +73,41 @@ double density_in_file_units(double internal) {
     below = std::nextafter(below, -HUGE_VAL);
   }
   return quotient;
+}
+
+// A table or key name as TOML writes it: bare when it can be, else quoted.
+std::string toml_key(const std::string& name) { return is_bare_toml_key(name) ? name : toml_text(name); }
+
+// One [cell_kinds.NAME] table: the keys that apply to its shape and body. Of the two ways
+// to give each modulus, the one that reloads to the identical values is written, the other
+// is a comment: shear_modulus_Pa (G_s = G h beside it for a shell), and poisson_ratio when
+// K is the one ν gives, else bulk_modulus_Pa (the exact K, with ν beside it).
+void write_cell_kind(TomlWriter& toml_file, const CellKindConfig& kind) {
+  toml_file.table("cell_kinds." + toml_key(kind.name));
+  toml_file.key("shape", toml_name(kind.shape));
+  toml_file.key("body", toml_name(kind.body));
+  switch (kind.shape) {
+    case CellShape::rbc:
+    case CellShape::sphere: toml_file.key("diameter_um", kind.diameter); break;
+    case CellShape::sickle:
+      toml_file.key("length_um", kind.length);
+      toml_file.key("width_um", kind.width);
+      toml_file.key("thickness_um", kind.thickness);
+      toml_file.key("arc_radius_um", kind.arc_radius);
+      break;
+  }
+  const bool shell = kind.body == CellBody::shell;
+  if (shell) toml_file.key("shell_thickness_um", kind.shell_thickness);
+  toml_file.key("resolution", toml_name(kind.resolution));
+  toml_file.key("mesh_size_um", kind.mesh_size, "0 = the resolution's preset");
+  toml_file.key("shear_modulus_Pa", kind.shear_modulus,
+                shell ? "membrane G_s = G × shell_thickness = " + toml_float(kind.shear_modulus * kind.shell_thickness) + " pN/μm"
+                      : std::string());
+  if (bulk_modulus_from_poisson(kind.shear_modulus, kind.poisson_ratio) == kind.bulk_modulus)
+    toml_file.key("poisson_ratio", kind.poisson_ratio, "K = 2G(1+ν)/(3(1−2ν)) = " + toml_float(kind.bulk_modulus) + " Pa");
+  else
+    toml_file.key("bulk_modulus_Pa", kind.bulk_modulus, "ν = (3K−2G)/(2(3K+G)) = " + toml_float(kind.poisson_ratio));
+  toml_file.key("density_kg_m3", density_in_file_units(kind.density));
 }
 
 }  // namespace
@@ -139,6 +182,14 @@ std::string resolved_case_toml(const CaseConfig& config, const DerivedQuantities
   toml_file.key("fields", config.output.write_fields);
   toml_file.key("fields_every_steps", config.output.fields_every_steps);
   toml_file.key("diagnostics_every_steps", config.output.diagnostics_every_steps);
+
+  for (const CellKindConfig& kind : config.cell_kinds) write_cell_kind(toml_file, kind);
+  for (const CellPlacement& cell : config.cells) {
+    toml_file.array_table_entry("cells");
+    toml_file.key("kind", cell.kind);
+    toml_file.key("center_um", cell.center);
+    toml_file.key("orientation_deg", cell.orientation);
+  }
 
   toml_file.table("derived", "Output only: derived from the keys above; ignored when this file is loaded.");
   toml_file.key("length_scale_um", derived.length_scale);

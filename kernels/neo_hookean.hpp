@@ -26,27 +26,33 @@ struct NeoHookeanMaterial {
     return {0.5 * shear_modulus, bulk_modulus};
   }
 
-  // W(F) [Pa = pN·μm/μm³]
-  KOKKOS_INLINE_FUNCTION double energy_density(const Mat3& f) const {
+  // The invariants W and P are built from: J = det F, I1 = F : F, J^(−2/3).
+  struct Invariants {
+    double j, i1, j_minus_two_thirds;
+  };
+  KOKKOS_INLINE_FUNCTION static Invariants invariants(const Mat3& f) {
     const double j = determinant(f);
-    const double i1 = frobenius_product(f, f);
-    const double j_minus_two_thirds = 1.0 / (cbrt(j) * cbrt(j));
-    return c1 * (i1 * j_minus_two_thirds - 3.0) + 0.5 * c2 * (j - 1.0) * (j - 1.0);
+    const double cube_root = cbrt(j);
+    return {j, frobenius_product(f, f), 1.0 / (cube_root * cube_root)};
   }
 
+  // W(F) [Pa = pN·μm/μm³]
+  KOKKOS_INLINE_FUNCTION double energy_density(const Invariants& v) const {
+    return c1 * (v.i1 * v.j_minus_two_thirds - 3.0) + 0.5 * c2 * (v.j - 1.0) * (v.j - 1.0);
+  }
+  KOKKOS_INLINE_FUNCTION double energy_density(const Mat3& f) const { return energy_density(invariants(f)); }
+
   // P(F) = ∂W/∂F [Pa]
-  KOKKOS_INLINE_FUNCTION Mat3 first_piola(const Mat3& f) const {
+  KOKKOS_INLINE_FUNCTION Mat3 first_piola(const Mat3& f, const Invariants& v) const {
     const Mat3 cof = cofactor(f);
-    const double j = determinant(f);
-    const double i1 = frobenius_product(f, f);
-    const double j_minus_two_thirds = 1.0 / (cbrt(j) * cbrt(j));
-    const double deviatoric = 2.0 * c1 * j_minus_two_thirds;
-    const double volumetric = -(2.0 / 3.0) * c1 * i1 * j_minus_two_thirds / j + c2 * (j - 1.0);
+    const double deviatoric = 2.0 * c1 * v.j_minus_two_thirds;
+    const double volumetric = -(2.0 / 3.0) * c1 * v.i1 * v.j_minus_two_thirds / v.j + c2 * (v.j - 1.0);
     Mat3 p;
     for (int i = 0; i < 3; ++i)
       for (int k = 0; k < 3; ++k) p.m[i][k] = deviatoric * f.m[i][k] + volumetric * cof.m[i][k];
     return p;
   }
+  KOKKOS_INLINE_FUNCTION Mat3 first_piola(const Mat3& f) const { return first_piola(f, invariants(f)); }
 
   // Cauchy stress σ = J⁻¹ P Fᵀ [Pa]
   KOKKOS_INLINE_FUNCTION Mat3 cauchy_stress(const Mat3& f) const {
@@ -76,7 +82,8 @@ struct NeoHookeanForceFunctor {
   Kokkos::View<const NeoHookeanMaterial*> materials;
   Scatter forces;                                           // f (node, 3) [pN]
 
-  // Forces of element e; returns its strain energy V0 W.
+  // Forces of element e; with `with_energy`, returns its strain energy V0 W (else 0).
+  template <bool with_energy>
   KOKKOS_INLINE_FUNCTION double element_forces(const int e) const {
     double x[4][3];
     for (int a = 0; a < 4; ++a)
@@ -88,7 +95,8 @@ struct NeoHookeanForceFunctor {
     Tet4::shape_gradients(inverse, gradient);
     const Mat3 f = Tet4::deformation_gradient(x, inverse);
     const NeoHookeanMaterial material = materials(element_material(e));
-    const Mat3 p = material.first_piola(f);
+    const NeoHookeanMaterial::Invariants invariants = NeoHookeanMaterial::invariants(f);
+    const Mat3 p = material.first_piola(f, invariants);
     const double volume = reference_volume(e);
     auto access = forces.access();
     for (int a = 0; a < 4; ++a) {
@@ -100,12 +108,12 @@ struct NeoHookeanForceFunctor {
         access(node, i) += f_ai;
       }
     }
-    return volume * material.energy_density(f);
+    return with_energy ? volume * material.energy_density(invariants) : 0.0;
   }
 
-  KOKKOS_INLINE_FUNCTION void operator()(ForcesOnly, const int e) const { element_forces(e); }
+  KOKKOS_INLINE_FUNCTION void operator()(ForcesOnly, const int e) const { element_forces<false>(e); }
   KOKKOS_INLINE_FUNCTION void operator()(ForcesAndEnergy, const int e, double& energy) const {
-    energy += element_forces(e);
+    energy += element_forces<true>(e);
   }
 };
 

@@ -509,7 +509,7 @@ TEST(ConfigResolved, RoundTripGivesAnIdenticalCase) {
        "cell_kinds.stiff-1={body=\"filled\", shape=\"sickle\", shear_modulus_Pa=51.3, bulk_modulus_Pa=903.7}",
        "cell_kinds.ball={shape=\"sphere\", diameter_um=4.1, mesh_size_um=0.35, bulk_modulus_Pa=77.7}",
        "cells=[{kind=\"sickle\", center_um=[10.1, 0, 10], orientation_deg=[0, 0, 33.3]},"
-       " {center_um=[30, 0.7, 10]}, {kind=\"stiff-1\", center_um=[20, -3, 10]}, {kind=\"ball\", center_um=[1, 2, 3]}]"},
+       " {center_um=[30, 0.7, 10]}, {kind=\"stiff-1\", center_um=[20, -3, 10]}, {kind=\"ball\", center_um=[3, 2, 3]}]"},
   };
   for (const auto& overrides : variants) {
     const CaseConfig original = rouleau::load_case(good_case, overrides);

@@ -3,10 +3,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
 
 #include "io/diagnostics_reader.hpp"
 #include "mesh/fluid_mesh.hpp"
+#include "hdf5_reading.hpp"
 #include "run_rouleau.hpp"
 
 namespace {
@@ -41,8 +46,63 @@ TEST(RunCase, ShearFlowOfPlasmaHasRelativeViscosityOne) {
   EXPECT_NEAR(last.at("relative_apparent_viscosity"), 1.0, 1e-6);
   EXPECT_NEAR(last.at("wall_shear_stress_y_max_Pa"), 1.2e-3 * 0.5, 1e-9);
   EXPECT_NEAR(last.at("time_s"), 0.2, 1e-12);
-  for (const char* file : {"fluid.xdmf", "fluid_mesh.h5", "fluid_000004.h5", "case.resolved.toml"})
+  for (const char* file : {"fields.xdmf", "fields_mesh.h5", "fields_000004.h5", "case.resolved.toml"})
     EXPECT_TRUE(std::filesystem::exists(out + "/" + file)) << file;
+}
+
+TEST(RunCase, CellsAreWrittenInPlaceBesideTheFluid) {
+  // The cell gallery at the coarse preset for two steps: the output holds a second mesh,
+  // "cells", with every cell's nodes, moving coordinates, the nodal fields and the cell
+  // ids; each cell's node cloud sits around its placement's centre, within its size.
+  const std::string out = fresh_output_dir("cells");
+  const std::string cache = out + "_mesh_cache";
+  ::setenv("ROULEAU_MESH_CACHE", cache.c_str(), 1);
+  std::string coarse;
+  for (const char* kind : {"normal", "normal_filled", "sickle", "capsule"})
+    coarse += std::string(" --set cell_kinds.") + kind + ".resolution=coarse";
+  const Outcome o = run_rouleau("run " + cases_dir + "/cell_gallery/case.toml --no-progress --out " + out + coarse);
+  ::unsetenv("ROULEAU_MESH_CACHE");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const std::string xdmf = file_contents(out + "/fields.xdmf");
+  EXPECT_NE(xdmf.find("Name=\"cells\""), std::string::npos);
+  EXPECT_NE(xdmf.find("internal_force_pN"), std::string::npos);
+  const Dataset ids = read_dataset(out + "/fields_000002.h5", "/cells/cell_id", false);
+  const Dataset x = read_dataset(out + "/fields_000002.h5", "/cells/coordinates", false);
+  const Dataset tets = read_dataset(out + "/fields_mesh.h5", "/cells/connectivity", true);
+  ASSERT_EQ(x.doubles.size(), 3 * ids.doubles.size());
+  ASSERT_EQ(tets.dimensions.size(), 2u);
+  EXPECT_EQ(tets.dimensions[1], 4u);
+  const double centers[4][3] = {{-21, 0, 0}, {-8, 0, 0}, {7, -1, 0}, {22, 0, 0}};
+  double lower[4][3], upper[4][3];
+  for (auto& bound : lower) std::fill(bound, bound + 3, 1e300);
+  for (auto& bound : upper) std::fill(bound, bound + 3, -1e300);
+  std::set<int> seen;
+  for (std::size_t n = 0; n < ids.doubles.size(); ++n) {
+    const int cell = static_cast<int>(ids.doubles[n]);
+    ASSERT_TRUE(cell >= 0 && cell < 4) << cell;
+    seen.insert(cell);
+    for (int i = 0; i < 3; ++i) {
+      lower[cell][i] = std::min(lower[cell][i], x.doubles[3 * n + i]);
+      upper[cell][i] = std::max(upper[cell][i], x.doubles[3 * n + i]);
+    }
+  }
+  EXPECT_EQ(seen.size(), 4u);
+  // Each body's bounding box contains its centre and is no larger than 15 μm (the sickle).
+  for (int c = 0; c < 4; ++c)
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_LT(lower[c][i], centers[c][i]) << "cell " << c << " axis " << i;
+      EXPECT_GT(upper[c][i], centers[c][i]) << "cell " << c << " axis " << i;
+      EXPECT_LT(upper[c][i] - lower[c][i], 15.0) << "cell " << c << " axis " << i;
+    }
+  // The normal cell lies flat (axis z, thin along z), the filled one on its edge (thin along y).
+  std::printf("normal cell extent %.3f x %.3f x %.3f um; turned filled cell %.3f x %.3f x %.3f um\n",
+              upper[0][0] - lower[0][0], upper[0][1] - lower[0][1], upper[0][2] - lower[0][2],
+              upper[1][0] - lower[1][0], upper[1][1] - lower[1][1], upper[1][2] - lower[1][2]);
+  EXPECT_NEAR(upper[0][2] - lower[0][2], 2.57, 0.1);
+  EXPECT_NEAR(upper[0][0] - lower[0][0], 7.82, 0.1);
+  EXPECT_NEAR(upper[1][1] - lower[1][1], 2.57, 0.1);
+  EXPECT_NEAR(upper[1][2] - lower[1][2], 7.82, 0.1);
+  std::filesystem::remove_all(cache);
 }
 
 TEST(RunCase, ChannelFlowRateMatchesHagenPoiseuille) {

@@ -92,7 +92,7 @@ enum class CellShape {
 // What of the body is solid: its whole volume, or a membrane layer of given thickness
 // enclosing fluid that belongs to the Eulerian mesh.
 enum class CellBody { shell, filled };
-// Mesh resolution presets (element sizes per shape in src/geometry/cell_geometry.hpp).
+// Mesh resolution presets (element sizes per shape: cell_element_size(), src/geometry/cell_mesh.hpp).
 enum class MeshResolution { coarse, paper, fine };
 
 // A kind of cell: shape, size, mesh and material. Built-in kinds "normal", "sickle" and
@@ -127,8 +127,9 @@ struct CellPlacement {
   std::string kind = "normal";                 // key kind: a [cell_kinds] name
   std::array<double, 3> center{0.0, 0.0, 0.0};  // [μm] the body's centroid   key center_um
   // Rotation of the body from its local frame (RBC and sphere axis along z; sickle
-  // centre line in the x–y plane, bent toward +y): rotations about the fixed x, then y,
-  // then z axes, in degrees.                                 key orientation_deg
+  // centre line an arc in the x–y plane about a centre on the −y axis, so its tips point
+  // toward −y): rotations about the fixed x, then y, then z axes, in degrees.
+  //                                                          key orientation_deg
   std::array<double, 3> orientation{0.0, 0.0, 0.0};
 };
 

@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "config/cell_kinds.hpp"
+#include "geometry/cell_shapes.hpp"
 #include "util/errors.hpp"
 
 namespace rouleau {
@@ -783,6 +784,8 @@ CaseConfig load_case(const std::string& path, const std::vector<std::string>& ov
   read_output(root, config.output);
   read_cell_kinds(root, config.cell_kinds);
   read_cells(root, config);
+  // The cells against the domain and each other (exact shapes, before any meshing).
+  check_cell_placement(config);
   return config;
 }
 

@@ -22,7 +22,8 @@ inline constexpr const char* override_source_name = "--set";
 // values throw InputError(file, dotted.key, reason); errors about an overridden key name
 // the file "--set". A missing/unreadable file is InputError(path, "(file)", reason); a TOML
 // syntax error is InputError(path, "line L, column C", reason). The [derived] table written
-// by resolved_case_toml() is accepted and ignored.
+// by resolved_case_toml() is accepted and ignored. Cells are checked last, on their exact
+// shapes (check_cell_placement): each inside the domain and overlapping no other cell.
 // Cells: config.cell_kinds holds the built-in kinds (builtin_cell_kinds(), changed by
 // [cell_kinds.NAME] tables of their name) and then the kinds the file adds, which start from
 // the built-in "normal" cell; errors name cell_kinds.NAME.KEY. config.cells holds the

@@ -33,6 +33,8 @@ std::array<std::array<double, 3>, 3> placement_rotation(const CellPlacement& pla
 // fluid domain (every surface point inside the box), and it does not overlap any other
 // cell (no surface point of one inside the other). Throws InputError(config.source_file,
 // "cells[I].center_um" / "cells[I].kind", reason naming the other cell) on the first fault.
+// (A kind whose sizes make no body is reported with the key "cell_kinds.NAME". Surface
+// samples 0.15 μm apart: cells 0.3 μm apart pass, overlaps deeper than about 0.01 μm fail.)
 void check_cell_placement(const CaseConfig& config);
 
 }  // namespace rouleau

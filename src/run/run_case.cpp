@@ -9,11 +9,13 @@
 #include <map>
 #include <sstream>
 
+#include "cells/cells_from_case.hpp"
 #include "cli/progress.hpp"
 #include "config/derived.hpp"
 #include "config/load_case.hpp"
 #include "config/resolved_case.hpp"
 #include "fluid/fluid_solver.hpp"
+#include "geometry/cell_mesh.hpp"
 #include "io/atomic_file.hpp"
 #include "io/diagnostics_table.hpp"
 #include "io/provenance.hpp"
@@ -168,26 +170,44 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
     return std::make_unique<FluidSolver>(mesh, config.fluid, domain.boundary, config.solver, scales, derived.stokes);
   });
 
-  const MeshDescription fluid_mesh = describe_fluid_mesh(mesh);
-  const Provenance provenance = build_provenance(
-      {{"case", config.name},
-       {"execution_space", Kokkos::DefaultExecutionSpace::name()},
-       {"threads", std::to_string(Kokkos::DefaultHostExecutionSpace().concurrency())},
-       {"fluid_mesh_hash", hash_mesh(fluid_mesh.coordinates.data(), fluid_mesh.coordinates.size(),
-                                     fluid_mesh.connectivity.data(), fluid_mesh.connectivity.size())}});
+  const CaseCells cells =
+      times.time("cell meshes", [&] { return make_case_cells(config, default_mesh_cache_dir()); });
+
+  std::vector<MeshDescription> output_meshes{describe_fluid_mesh(mesh)};
+  const MeshDescription& fluid_mesh = output_meshes.front();
+  std::vector<std::pair<std::string, std::string>> provenance_entries{
+      {"case", config.name},
+      {"execution_space", Kokkos::DefaultExecutionSpace::name()},
+      {"threads", std::to_string(Kokkos::DefaultHostExecutionSpace().concurrency())},
+      {"fluid_mesh_hash", hash_mesh(fluid_mesh.coordinates.data(), fluid_mesh.coordinates.size(),
+                                    fluid_mesh.connectivity.data(), fluid_mesh.connectivity.size())}};
+  for (const auto& [kind, cell_mesh] : cells.meshes) provenance_entries.emplace_back("cell_mesh_hash_" + kind, cell_mesh.hash);
+  if (cells.population) output_meshes.push_back(cells.population->mesh_description());
+  const Provenance provenance = build_provenance(provenance_entries);
   std::unique_ptr<XdmfTimeSeries> fields;
-  if (config.output.write_fields) fields = std::make_unique<XdmfTimeSeries>(out, "fluid", std::vector{fluid_mesh}, provenance);
+  if (config.output.write_fields) fields = std::make_unique<XdmfTimeSeries>(out, "fields", output_meshes, provenance);
   FluidDiagnostics diagnostics;
   DiagnosticsTable table(out + "/diagnostics.csv", diagnostics.columns());
 
   std::vector<double> velocity, pressure;
+  CellPopulation::HostFields cell_fields;
   auto write_fields = [&](int step) {
     if (!fields) return;
     times.time("output", [&] {
       solver->velocity_and_pressure(velocity, pressure);
-      fields->write_step(step, solver->time(), {{FieldView{"velocity_um_s", 3, velocity.data()},
-                                                 FieldView{"pressure_Pa", 1, pressure.data()}}},
-                         {});
+      std::vector<std::vector<FieldView>> nodal{
+          {FieldView{"velocity_um_s", 3, velocity.data()}, FieldView{"pressure_Pa", 1, pressure.data()}}};
+      std::vector<const double*> moved{nullptr};
+      if (cells.population) {
+        cells.population->compute_internal_forces();
+        cells.population->copy_fields_to_host(cell_fields);
+        nodal.push_back({FieldView{"displacement_um", 3, cell_fields.displacement.data()},
+                         FieldView{"velocity_um_s", 3, cell_fields.velocity.data()},
+                         FieldView{"internal_force_pN", 3, cell_fields.internal_force.data()},
+                         FieldView{"cell_id", 1, cell_fields.cell_id.data()}});
+        moved.push_back(cell_fields.positions.data());
+      }
+      fields->write_step(step, solver->time(), nodal, {}, moved);
       return 0;
     });
   };
@@ -227,7 +247,7 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
   }
   table.flush();
   times.print(std::cerr);
-  std::cerr << "wrote " << out << "/" << (fields ? "fluid.xdmf, " : "") << "diagnostics.csv, case.resolved.toml\n";
+  std::cerr << "wrote " << out << "/" << (fields ? "fields.xdmf, " : "") << "diagnostics.csv, case.resolved.toml\n";
   return static_cast<int>(ExitCode::done);
 }
 

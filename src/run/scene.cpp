@@ -1,5 +1,6 @@
 #include "run/scene.hpp"
 
+#include <map>
 #include <sstream>
 
 namespace rouleau {
@@ -29,11 +30,33 @@ std::vector<Stage> plan_stages(const CaseConfig& config, const DerivedQuantities
       break;
   }
   stages.push_back({"preconditioner", true, preconditioner});
-  const char* no_cells = "skipped: the scene has no cells";
-  stages.push_back({"neo-Hookean cell forces", false, no_cells});
-  stages.push_back({"Morse cell-cell forces", false, no_cells});
-  stages.push_back({"inertia/buoyancy", false, no_cells});
-  stages.push_back({"RKPM interpolate/spread", false, no_cells});
+  if (config.cells.empty()) {
+    const char* no_cells = "skipped: the scene has no cells";
+    stages.push_back({"cells", false, no_cells});
+    stages.push_back({"neo-Hookean cell forces", false, no_cells});
+    stages.push_back({"Morse cell-cell forces", false, no_cells});
+    stages.push_back({"inertia/buoyancy", false, no_cells});
+    stages.push_back({"RKPM interpolate/spread", false, no_cells});
+  } else {
+    std::map<std::string, int> count_per_kind;
+    for (const CellPlacement& cell : config.cells) ++count_per_kind[cell.kind];
+    std::ostringstream cells;
+    cells << config.cells.size() << (config.cells.size() == 1 ? " cell" : " cells") << " (";
+    bool first = true;
+    for (const auto& [kind, count] : count_per_kind) {
+      cells << (first ? "" : ", ") << count << " " << kind;
+      first = false;
+    }
+    cells << "), 4-node tetrahedra meshed with Gmsh once per kind and cached; written with the fields. "
+             "They stay in place: the fluid-structure coupling is not implemented yet";
+    stages.push_back({"cells", true, cells.str()});
+    stages.push_back({"neo-Hookean cell forces", true,
+                      "total-Lagrangian tetrahedra, computed for the output steps (zero while the cells are at rest)"});
+    const char* not_yet = "skipped: not implemented yet";
+    stages.push_back({"Morse cell-cell forces", false, not_yet});
+    stages.push_back({"inertia/buoyancy", false, not_yet});
+    stages.push_back({"RKPM interpolate/spread", false, not_yet});
+  }
   stages.push_back({"output", config.output.write_fields,
                     config.output.write_fields ? "XDMF+HDF5 fields every " +
                                                      std::to_string(config.output.fields_every_steps) +

@@ -1,0 +1,802 @@
+// Tetrahedral meshes of the cell bodies, made with Gmsh's OpenCASCADE kernel, checked,
+// and cached on disk.
+//
+// Constructions (body frame, centroid at the origin):
+//   rbc     the Evans–Fung profile (cell_shape_details.hpp) in the x–z half plane x ≥ 0 as a
+//           spline from the top of the axis over the rim to the bottom, closed by the axis
+//           (filled) or by the inner profile, the outer one offset inward along its normal
+//           by h, and two short pieces of the axis (shell); the face is revolved by 2π
+//           about z.
+//   sphere  an OpenCASCADE sphere; the shell is the sphere of radius R minus the one of
+//           radius R − h.
+//   sickle  the unbent ellipsoid (an OpenCASCADE unit sphere, its poles turned onto the x
+//           axis, scaled by a, b, c; the shell minus the one with a − h, b − h, c − h) is
+//           meshed with element sizes from the exact curvature, then every node is moved by
+//           the bend map and centroid shift of cell_shapes.cpp. Its surface nodes lie on the
+//           exact bent surface; the element edges are straight, as in any linear mesh.
+// Element sizes: a size field from the exact curvature (ElementSizeField), surfaces by
+// Frontal-Delaunay, volumes by Delaunay (deterministic), Gmsh's default optimizer.
+// Then every tetrahedron is oriented positively (an inconsistently oriented or degenerate
+// one, 6√2V/l³ < 1e-3, is an error), put in a canonical order, flat boundary caps are
+// removed (peel_boundary_slivers), only nodes used by tetrahedra are kept, and the
+// boundary faces (faces of one tetrahedron only) are oriented out of the solid and split
+// into connected surfaces: the outer surface encloses the largest volume; a shell has one
+// more, the cavity wall. Exactly one (filled) or two (shell) surfaces, or an error.
+//
+// Cache file (text), cache_dir/cellmesh-<hash>.txt, <hash> = 16 hex digits of the 64-bit
+// FNV-1a hash of the "parameters" line:
+//   rouleau-cell-mesh 1
+//   hash <hash>
+//   parameters <canonical text of everything that made the mesh, one line>
+//   nodes <N>              then N lines "x y z" [μm], 17 significant digits
+//   tetrahedra <T>         then T lines "i j k l", 0-based node indices
+//   outer_surface <F>      then F lines "i j k"
+//   inner_surface <G>      then G lines "i j k" (G = 0 for a filled body)
+//   end
+#include "geometry/cell_mesh.hpp"
+
+#include <gmsh.h>
+#include <spdlog/spdlog.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+
+#include "geometry/cell_shape_details.hpp"
+#include "geometry/cell_shapes.hpp"
+#include "geometry/gmsh_session.hpp"
+#include "io/atomic_file.hpp"
+
+namespace rouleau {
+
+using namespace geometry_detail;
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+// Changes whenever this file would make a different mesh from the same parameters; it
+// enters the hash, so old cache files are not reused.
+constexpr int geometry_code_version = 1;
+constexpr const char* cache_header = "rouleau-cell-mesh 1";
+
+using Node = std::array<double, 3>;
+using Tetrahedron = std::array<int, 4>;
+using Triangle = std::array<int, 3>;
+
+// ---- element size presets
+//
+// Element sizes for a cell of the normal RBC's volume (D = 7.82 μm, 94.1 μm³); other
+// cells are scaled by the cube root of their volume ratio (cell_element_size()), so that
+// a cell of any size gets about the same number of nodes. Measured with Gmsh 4.8.4 for the
+// normal RBC (nodes / tetrahedra, filled | shell h = 0.36 μm; smallest 6√2V/l³):
+//   coarse  h = 1.0 μm    210 / 598     |  346 / 1060    (CI; faceting: V −4.7 %, A −2.6 %)
+//   paper   h = 0.5 μm    1039 / 4014   |  1238 / 3767   (the paper: 1043 / 4567 filled;
+//                                                         V −1.2 %, A −0.7 %)
+//   fine    h = 0.25 μm   5983 / 28611  |  4831 / 14630  (V −0.3 %, A −0.2 %)
+// Meshing takes 0.07 / 0.14 / 0.7 s (filled), 0.12 / 0.28 / 1.1 s (shell) on one core.
+// The volume and area errors are those of any mesh of straight-edged elements with its
+// nodes on a curved surface (the facets cut inside it): second order in h. Shells mesh
+// fine with the element size well above the shell thickness (checked from 0.3 to 1.2 μm
+// for h = 0.36 μm): Gmsh then puts one element across the layer.
+double reference_cell_volume() {
+  CellKindConfig normal;
+  normal.shape = CellShape::rbc;
+  normal.body = CellBody::filled;
+  normal.diameter = 7.82;
+  static const double volume = exact_cell_volume(normal);  // 94.06 μm³
+  return volume;
+}
+double reference_element_size(MeshResolution resolution) {
+  switch (resolution) {
+    case MeshResolution::coarse: return 1.0;
+    case MeshResolution::paper: return 0.5;
+    case MeshResolution::fine: return 0.25;
+  }
+  return 0.5;
+}
+// Elements per circle of the local curvature radius (ElementSizeField below): refines the
+// sickle's tips and edges and, at the coarse preset, the RBC's rim, where the element size
+// alone would cut corners.
+int elements_per_curvature_circle(MeshResolution resolution) {
+  switch (resolution) {
+    case MeshResolution::coarse: return 6;
+    case MeshResolution::paper: return 10;
+    case MeshResolution::fine: return 20;
+  }
+  return 10;
+}
+
+// ---- geometry in Gmsh (OpenCASCADE kernel); call within a GmshSession
+
+// A spline through the points (r, z) of the x–z half plane y = 0; returns its tag and the
+// tags of its end points.
+struct SplineTags {
+  int curve, first, last;
+};
+SplineTags add_profile_spline(const std::vector<std::array<double, 2>>& profile) {
+  std::vector<int> points;
+  points.reserve(profile.size());
+  for (const auto& p : profile) points.push_back(gmsh::model::occ::addPoint(p[0], 0.0, p[1]));
+  return {gmsh::model::occ::addSpline(points), points.front(), points.back()};
+}
+
+void add_rbc(const CellKindConfig& kind) {
+  // Spline points every π/96 in θ: the interpolating spline is then within ~1e-6 R of
+  // the profile.
+  const int intervals = 96;
+  const double radius = 0.5 * kind.diameter;
+  std::vector<std::array<double, 2>> outer(intervals + 1);
+  for (int k = 0; k <= intervals; ++k) outer[k] = rbc_profile_point(pi * k / intervals, radius);
+  outer.front()[0] = outer.back()[0] = 0.0;
+  const SplineTags outer_spline = add_profile_spline(outer);
+  std::vector<int> loop;
+  if (kind.body == CellBody::filled) {
+    const int axis = gmsh::model::occ::addLine(outer_spline.last, outer_spline.first);
+    loop = {outer_spline.curve, axis};
+  } else {
+    const SplineTags inner_spline = add_profile_spline(rbc_inner_profile(kind, intervals));
+    const int bottom_axis = gmsh::model::occ::addLine(outer_spline.last, inner_spline.last);
+    const int top_axis = gmsh::model::occ::addLine(inner_spline.first, outer_spline.first);
+    loop = {outer_spline.curve, bottom_axis, inner_spline.curve, top_axis};
+  }
+  const int face = gmsh::model::occ::addPlaneSurface({gmsh::model::occ::addCurveLoop(loop)});
+  gmsh::vectorpair revolved;
+  gmsh::model::occ::revolve({{2, face}}, 0, 0, 0, 0, 0, 1, 2.0 * pi, revolved);
+  gmsh::model::occ::remove({{2, face}}, /*recursive=*/true);
+}
+
+void add_sphere(const CellKindConfig& kind) {
+  const double radius = 0.5 * kind.diameter;
+  const int outer = gmsh::model::occ::addSphere(0, 0, 0, radius);
+  if (kind.body == CellBody::shell) {
+    const int cavity = gmsh::model::occ::addSphere(0, 0, 0, radius - kind.shell_thickness);
+    gmsh::vectorpair result;
+    std::vector<gmsh::vectorpair> result_map;
+    gmsh::model::occ::cut({{3, outer}}, {{3, cavity}}, result, result_map);
+  }
+}
+
+// The unbent ellipsoid (shell: minus its cavity); the nodes are bent after meshing.
+void add_unbent_sickle(const CellKindConfig& kind) {
+  const SickleBend bend = sickle_bend(kind);
+  const auto add_ellipsoid = [](double a, double b, double c) {
+    // The unit sphere's poles turned onto the x axis before scaling, so that they become
+    // the tips: with the poles on the flat sides, Gmsh 4.8's surface mesher fails on the
+    // scaled (B-spline) surface.
+    const int tag = gmsh::model::occ::addSphere(0, 0, 0, 1.0);
+    gmsh::model::occ::rotate({{3, tag}}, 0, 0, 0, 0, 1, 0, pi / 2);
+    gmsh::model::occ::dilate({{3, tag}}, 0, 0, 0, a, b, c);
+    return tag;
+  };
+  const int outer = add_ellipsoid(bend.semi_length, bend.semi_width, bend.semi_thickness);
+  if (kind.body == CellBody::shell) {
+    const double h = kind.shell_thickness;
+    const int cavity = add_ellipsoid(bend.semi_length - h, bend.semi_width - h, bend.semi_thickness - h);
+    gmsh::vectorpair result;
+    std::vector<gmsh::vectorpair> result_map;
+    gmsh::model::occ::cut({{3, outer}}, {{3, cavity}}, result, result_map);
+  }
+}
+
+// ---- the element size field
+//
+// Element size at a point: s = min(h, max(h/4, 2π ρ / N)), with h the element size of the
+// kind, ρ the smallest principal curvature radius of the exact outer surface near the
+// point and N elements per curvature circle (per preset). Linear elements cut corners by
+// about s²/(8ρ): this keeps that sag a fixed fraction of ρ where the surface is curved
+// (the RBC's rim and dimple, the sickle's edges and tips) without refining flat parts.
+// From the exact shape, not Gmsh's curvature estimate (which is noisy at the poles of
+// surfaces of revolution and there made the surface mesher fall back to a far slower
+// algorithm).
+class ElementSizeField {
+ public:
+  ElementSizeField(const CellKindConfig& kind, double element_size, int elements_per_circle)
+      : kind_(kind), largest_(element_size), smallest_(0.25 * element_size),
+        per_radius_(2.0 * pi / elements_per_circle) {
+    if (kind.shape == CellShape::rbc) tabulate_rbc();
+    if (kind.shape == CellShape::sickle) bend_ = sickle_bend(kind);
+  }
+
+  // Size at a point of the frame Gmsh meshes in (the sickle's unbent frame).
+  double operator()(double x, double y, double z) const {
+    return std::min(largest_, std::max(smallest_, per_radius_ * curvature_radius(x, y, z)));
+  }
+
+ private:
+  double curvature_radius(double x, double y, double z) const {
+    (void)z;
+    switch (kind_.shape) {
+      case CellShape::rbc: {
+        // Linear in r between the tabulated radii.
+        const double r = std::hypot(x, y);
+        const auto above = std::lower_bound(radius_.begin(), radius_.end(), r);
+        if (above == radius_.begin()) return radius_of_curvature_.front();
+        if (above == radius_.end()) return radius_of_curvature_.back();
+        const std::size_t k = above - radius_.begin();
+        const double t = (r - radius_[k - 1]) / (radius_[k] - radius_[k - 1]);
+        return radius_of_curvature_[k - 1] + t * (radius_of_curvature_[k] - radius_of_curvature_[k - 1]);
+      }
+      case CellShape::sphere: return 0.5 * kind_.diameter;
+      case CellShape::sickle: {
+        // Unbent ellipsoid: the cross-section at x is an ellipse with semi-axes b s, c s,
+        // s = √(1 − x²/a²), whose smallest curvature radius is m² s / M (m, M the smaller
+        // and larger of b, c); at the tips the meridians' is m²/a. The bend changes these
+        // by at most the factor ρ/(ρ − b) on the inner side, covered by the preset's N.
+        const double a = bend_.semi_length, m = std::min(bend_.semi_width, bend_.semi_thickness),
+                     big = std::max(bend_.semi_width, bend_.semi_thickness);
+        const double s = std::sqrt(std::max(0.0, 1.0 - (x / a) * (x / a)));
+        return std::max(m * m * s / big, m * m / a);
+      }
+    }
+    return largest_;
+  }
+
+  // Smallest principal curvature radius of the Evans–Fung surface against r, from the
+  // profile's θ ∈ [0, π/2]: meridional κ_m = |r'z'' − z'r''| / |t|³ (t = (r', z'), its
+  // derivative by central differences of the exact tangent), circumferential
+  // κ_c = |z'| / (|t| r) (→ κ_m on the axis).
+  void tabulate_rbc() {
+    const int intervals = 400;
+    const double radius = 0.5 * kind_.diameter, step = 1e-6;
+    for (int k = 0; k <= intervals; ++k) {
+      const double theta = 0.5 * pi * k / intervals;
+      const auto t = rbc_profile_tangent(theta, radius);
+      const auto t_after = rbc_profile_tangent(theta + step, radius), t_before = rbc_profile_tangent(theta - step, radius);
+      const double r2 = (t_after[0] - t_before[0]) / (2 * step), z2 = (t_after[1] - t_before[1]) / (2 * step);
+      const double speed = std::hypot(t[0], t[1]);
+      const double meridional = std::abs(t[0] * z2 - t[1] * r2) / (speed * speed * speed);
+      const double r = rbc_profile_point(theta, radius)[0];
+      const double circumferential = k == 0 ? meridional : std::abs(t[1]) / (speed * r);
+      radius_.push_back(r);
+      radius_of_curvature_.push_back(1.0 / std::max({meridional, circumferential, 1e-12}));
+    }
+  }
+
+  CellKindConfig kind_;
+  double largest_, smallest_, per_radius_;
+  std::vector<double> radius_, radius_of_curvature_;  // rbc table
+  SickleBend bend_{};
+};
+
+struct RawMesh {
+  std::vector<Node> nodes;
+  std::vector<Tetrahedron> tetrahedra;
+};
+
+RawMesh mesh_with_gmsh(const CellKindConfig& kind, double element_size) {
+  GmshSession session;
+  gmsh::model::add("cell");
+  switch (kind.shape) {
+    case CellShape::rbc: add_rbc(kind); break;
+    case CellShape::sphere: add_sphere(kind); break;
+    case CellShape::sickle: add_unbent_sickle(kind); break;
+  }
+  gmsh::model::occ::synchronize();
+  gmsh::option::setNumber("Mesh.MeshSizeMax", element_size);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0.0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+  const ElementSizeField size_field(kind, element_size, elements_per_curvature_circle(kind.resolution));
+  gmsh::model::mesh::setSizeCallback(
+      [&size_field](int, int, double x, double y, double z) { return size_field(x, y, z); });
+  struct RemoveSizeCallback {  // before size_field goes, whatever happens
+    ~RemoveSizeCallback() {
+      try {
+        gmsh::model::mesh::removeSizeCallback();
+      } catch (...) {
+      }
+    }
+  } remove_size_callback;
+  gmsh::option::setNumber("Mesh.Algorithm", 6);    // Frontal-Delaunay surfaces
+  // Delaunay volumes: the same mesh every run (HXT, of better quality, is not: it returns
+  // different tetrahedra from run to run even on one thread).
+  gmsh::option::setNumber("Mesh.Algorithm3D", 1);
+  gmsh::option::setNumber("Mesh.Optimize", 1);
+  gmsh::option::setNumber("Mesh.ElementOrder", 1);
+  gmsh::model::mesh::generate(3);
+
+  std::vector<std::size_t> node_tags;
+  std::vector<double> coordinates, parametric;
+  gmsh::model::mesh::getNodes(node_tags, coordinates, parametric);
+  std::vector<std::size_t> element_tags, element_nodes;
+  const int linear_tetrahedron = 4;  // Gmsh element type
+  gmsh::model::mesh::getElementsByType(linear_tetrahedron, element_tags, element_nodes);
+
+  // Keep the nodes the tetrahedra use, numbered in Gmsh's tag order.
+  const std::size_t largest_tag = node_tags.empty() ? 0 : *std::max_element(node_tags.begin(), node_tags.end());
+  std::vector<long> index_of_tag(largest_tag + 1, -1);
+  std::vector<std::size_t> position_of_tag(largest_tag + 1, 0);
+  std::vector<char> known(largest_tag + 1, 0), used(largest_tag + 1, 0);
+  for (std::size_t i = 0; i < node_tags.size(); ++i) position_of_tag[node_tags[i]] = i, known[node_tags[i]] = 1;
+  for (std::size_t tag : element_nodes) {
+    if (tag > largest_tag || !known[tag]) throw std::runtime_error("Gmsh returned a tetrahedron with an unknown node");
+    used[tag] = 1;
+  }
+  RawMesh mesh;
+  for (std::size_t tag = 0; tag <= largest_tag; ++tag) {
+    if (!used[tag]) continue;
+    index_of_tag[tag] = static_cast<long>(mesh.nodes.size());
+    const std::size_t i = position_of_tag[tag];
+    mesh.nodes.push_back({coordinates[3 * i], coordinates[3 * i + 1], coordinates[3 * i + 2]});
+  }
+  mesh.tetrahedra.resize(element_tags.size());
+  for (std::size_t e = 0; e < element_tags.size(); ++e)
+    for (int v = 0; v < 4; ++v) mesh.tetrahedra[e][v] = static_cast<int>(index_of_tag[element_nodes[4 * e + v]]);
+  return mesh;
+}
+
+// ---- checks and surfaces
+
+double signed_volume6(const Node& x0, const Node& x1, const Node& x2, const Node& x3) {
+  // 6 V = (x1 − x0) · ((x2 − x0) × (x3 − x0))
+  const double a[3] = {x1[0] - x0[0], x1[1] - x0[1], x1[2] - x0[2]};
+  const double b[3] = {x2[0] - x0[0], x2[1] - x0[1], x2[2] - x0[2]};
+  const double c[3] = {x3[0] - x0[0], x3[1] - x0[1], x3[2] - x0[2]};
+  return a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+}
+
+// 6√2 V / l_max³: 1 for the regular tetrahedron, → 0 for a flat one.
+double tetrahedron_quality(const std::vector<Node>& nodes, const Tetrahedron& t) {
+  double longest_squared = 0.0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) {
+      double squared = 0.0;
+      for (int d = 0; d < 3; ++d) squared += (nodes[t[i]][d] - nodes[t[j]][d]) * (nodes[t[i]][d] - nodes[t[j]][d]);
+      longest_squared = std::max(longest_squared, squared);
+    }
+  const double volume6 = signed_volume6(nodes[t[0]], nodes[t[1]], nodes[t[2]], nodes[t[3]]);
+  return std::sqrt(2.0) * volume6 / (longest_squared * std::sqrt(longest_squared));
+}
+
+// Below this quality a tetrahedron counts as degenerate.
+constexpr double degenerate_quality = 1e-3;
+
+void orient_and_check_tetrahedra(const CellKindConfig& kind, const std::vector<Node>& nodes,
+                                 std::vector<Tetrahedron>& tetrahedra) {
+  // A mesh is oriented consistently: all volumes of one sign. Flip to positive if they are
+  // all negative; any of the other sign is an inverted element.
+  std::size_t negative = 0;
+  for (const auto& t : tetrahedra)
+    if (signed_volume6(nodes[t[0]], nodes[t[1]], nodes[t[2]], nodes[t[3]]) < 0.0) ++negative;
+  const bool flip = 2 * negative > tetrahedra.size();
+  std::size_t inverted = 0, degenerate = 0;
+  double worst = INFINITY;
+  for (auto& t : tetrahedra) {
+    if (flip) std::swap(t[2], t[3]);
+    const double quality = tetrahedron_quality(nodes, t);
+    worst = std::min(worst, quality);
+    if (quality < 0.0) ++inverted;
+    else if (!(quality >= degenerate_quality)) ++degenerate;
+  }
+  if (inverted > 0 || degenerate > 0)
+    throw std::runtime_error(describe_kind(kind) + ": the mesh has " + std::to_string(inverted) + " inverted and " +
+                             std::to_string(degenerate) + " degenerate tetrahedra (worst quality 6√2V/l³ = " +
+                             std::to_string(worst) + ")");
+}
+
+// Gmsh's HXT mesher returns the same tetrahedra run after run but not in the same order
+// nor with the same first vertex. Canonical form: each tetrahedron's vertices ascending up
+// to an even permutation (the last two swapped when sorting took an odd number of swaps,
+// so the orientation stays), the tetrahedra sorted. Then the mesh, its surfaces and the
+// cache file are the same every time.
+void canonicalize_tetrahedra(std::vector<Tetrahedron>& tetrahedra) {
+  for (auto& t : tetrahedra) {
+    int inversions = 0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) inversions += t[i] > t[j];
+    std::sort(t.begin(), t.end());
+    if (inversions % 2 == 1) std::swap(t[2], t[3]);
+  }
+  std::sort(tetrahedra.begin(), tetrahedra.end());
+}
+
+// A triangle turned (cyclically, keeping its orientation) to start at its smallest index.
+Triangle starting_at_smallest(const Triangle& f) {
+  if (f[1] < f[0] && f[1] < f[2]) return {f[1], f[2], f[0]};
+  if (f[2] < f[0] && f[2] < f[1]) return {f[2], f[0], f[1]};
+  return f;
+}
+
+// Boundary slivers. Gmsh's Delaunay mesher sometimes leaves a flat tetrahedron on the
+// surface with two of its faces there (on a slightly curved patch, above the boundary
+// edge they share; mostly at the poles of the revolved and spherical surfaces). Removing
+// it swaps that boundary edge for the opposite one, an edge flip of the surface
+// triangulation whose four nodes all stay on the exact surface; the volume changes by
+// the sliver's (tiny) volume. Done when the opposite edge is not already a boundary edge
+// (the surface stays manifold), one sliver per node per pass. Returns how many.
+constexpr double sliver_quality = 0.1;
+std::size_t peel_boundary_slivers(const std::vector<Node>& nodes, std::vector<Tetrahedron>& tetrahedra) {
+  static constexpr int faces_of[4][3] = {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}};
+  const auto sorted_face = [](int a, int b, int c) {
+    Triangle f{a, b, c};
+    std::sort(f.begin(), f.end());
+    return f;
+  };
+  std::size_t peeled = 0;
+  for (int pass = 0; pass < 10; ++pass) {
+    std::vector<Triangle> all_faces;
+    all_faces.reserve(4 * tetrahedra.size());
+    for (const auto& t : tetrahedra)
+      for (const auto& f : faces_of) all_faces.push_back(sorted_face(t[f[0]], t[f[1]], t[f[2]]));
+    std::sort(all_faces.begin(), all_faces.end());
+    std::vector<Triangle> boundary;
+    std::vector<std::pair<int, int>> boundary_edges;
+    for (std::size_t i = 0; i < all_faces.size();) {
+      std::size_t j = i + 1;
+      while (j < all_faces.size() && all_faces[j] == all_faces[i]) ++j;
+      if (j - i == 1) {
+        const Triangle& f = all_faces[i];
+        boundary.push_back(f);
+        boundary_edges.insert(boundary_edges.end(), {{f[0], f[1]}, {f[0], f[2]}, {f[1], f[2]}});
+      }
+      i = j;
+    }
+    std::sort(boundary_edges.begin(), boundary_edges.end());
+    const auto on_boundary = [&](const Triangle& f) { return std::binary_search(boundary.begin(), boundary.end(), f); };
+    std::vector<char> remove(tetrahedra.size(), 0), touched(nodes.size(), 0);
+    std::size_t removed_this_pass = 0;
+    for (std::size_t e = 0; e < tetrahedra.size(); ++e) {
+      const auto& t = tetrahedra[e];
+      if (touched[t[0]] || touched[t[1]] || touched[t[2]] || touched[t[3]]) continue;
+      if (tetrahedron_quality(nodes, t) >= sliver_quality) continue;
+      int boundary_faces = 0;
+      std::array<int, 4> uses{0, 0, 0, 0};  // how many boundary faces each corner is on
+      for (const auto& f : faces_of)
+        if (on_boundary(sorted_face(t[f[0]], t[f[1]], t[f[2]]))) {
+          ++boundary_faces;
+          for (int k : f) ++uses[k];
+        }
+      if (boundary_faces != 2) continue;
+      // The corners on one boundary face only span the edge that becomes a boundary edge.
+      std::array<int, 2> opposite{-1, -1};
+      int found = 0;
+      for (int k = 0; k < 4; ++k)
+        if (uses[k] == 1 && found < 2) opposite[found++] = t[k];
+      if (found != 2) continue;
+      const std::pair<int, int> new_edge{std::min(opposite[0], opposite[1]), std::max(opposite[0], opposite[1])};
+      if (std::binary_search(boundary_edges.begin(), boundary_edges.end(), new_edge)) continue;
+      remove[e] = 1;
+      for (int v : t) touched[v] = 1;
+      ++removed_this_pass;
+    }
+    if (removed_this_pass == 0) break;
+    std::size_t kept = 0;
+    for (std::size_t e = 0; e < tetrahedra.size(); ++e)
+      if (!remove[e]) tetrahedra[kept++] = tetrahedra[e];
+    tetrahedra.resize(kept);
+    peeled += removed_this_pass;
+  }
+  return peeled;
+}
+
+// Keeps only the nodes some tetrahedron uses, in their order.
+void drop_unused_nodes(std::vector<Node>& nodes, std::vector<Tetrahedron>& tetrahedra) {
+  std::vector<int> new_index(nodes.size(), -1);
+  for (const auto& t : tetrahedra)
+    for (int v : t) new_index[v] = 0;
+  int count = 0;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    if (new_index[i] == 0) {
+      new_index[i] = count;
+      nodes[count++] = nodes[i];
+    }
+  nodes.resize(count);
+  for (auto& t : tetrahedra)
+    for (int& v : t) v = new_index[v];
+}
+
+struct Surfaces {
+  std::vector<Triangle> outer, inner;
+};
+
+// The boundary faces (used by one tetrahedron), oriented out of the solid, split into
+// connected surfaces (sharing nodes). For a positive tetrahedron (0, 1, 2, 3) the faces
+// seen from outside, counter-clockwise, are (0, 2, 1), (0, 1, 3), (1, 2, 3), (0, 3, 2).
+Surfaces boundary_surfaces(const CellKindConfig& kind, const std::vector<Node>& nodes,
+                           const std::vector<Tetrahedron>& tetrahedra) {
+  static constexpr int face_corners[4][3] = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+  struct Face {
+    Triangle sorted, oriented;
+  };
+  std::vector<Face> faces;
+  faces.reserve(4 * tetrahedra.size());
+  for (const auto& t : tetrahedra)
+    for (const auto& corners : face_corners) {
+      Face face;
+      face.oriented = {t[corners[0]], t[corners[1]], t[corners[2]]};
+      face.sorted = face.oriented;
+      std::sort(face.sorted.begin(), face.sorted.end());
+      faces.push_back(face);
+    }
+  std::sort(faces.begin(), faces.end(), [](const Face& l, const Face& r) {
+    return l.sorted < r.sorted || (l.sorted == r.sorted && l.oriented < r.oriented);
+  });
+  std::vector<Triangle> boundary;
+  for (std::size_t i = 0; i < faces.size();) {
+    std::size_t j = i + 1;
+    while (j < faces.size() && faces[j].sorted == faces[i].sorted) ++j;
+    if (j - i == 1) boundary.push_back(starting_at_smallest(faces[i].oriented));
+    else if (j - i > 2)
+      throw std::runtime_error(describe_kind(kind) + ": a face of the mesh is shared by " + std::to_string(j - i) +
+                               " tetrahedra");
+    i = j;
+  }
+
+  // Connected surfaces: union–find over the nodes of the boundary faces.
+  std::vector<int> parent(nodes.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto root = [&](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (const auto& f : boundary) {
+    parent[root(f[1])] = root(f[0]);
+    parent[root(f[2])] = root(f[0]);
+  }
+  std::vector<int> roots;
+  std::vector<std::vector<Triangle>> components;
+  for (const auto& f : boundary) {
+    const int r = root(f[0]);
+    const auto found = std::find(roots.begin(), roots.end(), r);
+    if (found == roots.end()) {
+      roots.push_back(r);
+      components.push_back({f});
+    } else {
+      components[found - roots.begin()].push_back(f);
+    }
+  }
+  // The volume each encloses, by the divergence theorem: V = (1/6) Σ x0 · (x1 × x2) over
+  // its faces (positive for normals pointing away from the enclosed region).
+  std::vector<double> enclosed(components.size(), 0.0);
+  for (std::size_t c = 0; c < components.size(); ++c)
+    for (const auto& f : components[c]) enclosed[c] += signed_volume6({0, 0, 0}, nodes[f[0]], nodes[f[1]], nodes[f[2]]) / 6.0;
+  const std::size_t expected = kind.body == CellBody::shell ? 2 : 1;
+  if (components.size() != expected)
+    throw std::runtime_error(describe_kind(kind) + ": the mesh has " + std::to_string(components.size()) +
+                             " boundary surfaces, expected " + std::to_string(expected));
+  std::size_t outer = 0;
+  for (std::size_t c = 1; c < components.size(); ++c)
+    if (std::abs(enclosed[c]) > std::abs(enclosed[outer])) outer = c;
+  Surfaces surfaces;
+  surfaces.outer = components[outer];
+  if (!(enclosed[outer] > 0.0))
+    throw std::runtime_error(describe_kind(kind) + ": the outer surface of the mesh encloses a negative volume");
+  if (expected == 2) {
+    const std::size_t inner = 1 - outer;
+    surfaces.inner = components[inner];
+    // Normals into the cavity, i.e. pointing toward the region it encloses: negative.
+    if (!(enclosed[inner] < 0.0))
+      throw std::runtime_error(describe_kind(kind) + ": the cavity wall of the mesh is not inside the solid");
+  }
+  return surfaces;
+}
+
+// ---- hashing and the cache
+
+// The text every mesh-changing parameter goes into, one line, numbers to 17 digits.
+std::string canonical_parameters(const CellKindConfig& kind, double element_size) {
+  std::ostringstream text;
+  text.precision(17);
+  text << "geometry_code=" << geometry_code_version << " gmsh=" << GmshSession::library_version();
+  switch (kind.shape) {
+    case CellShape::rbc: text << " shape=rbc diameter=" << kind.diameter; break;
+    case CellShape::sphere: text << " shape=sphere diameter=" << kind.diameter; break;
+    case CellShape::sickle:
+      text << " shape=sickle length=" << kind.length << " width=" << kind.width << " thickness=" << kind.thickness
+           << " arc_radius=" << kind.arc_radius;
+      break;
+  }
+  if (kind.body == CellBody::shell) text << " body=shell shell_thickness=" << kind.shell_thickness;
+  else text << " body=filled";
+  text << " element_size=" << element_size
+       << " curvature_elements=" << elements_per_curvature_circle(kind.resolution);
+  return text.str();
+}
+
+// FNV-1a, 64 bits: h ← (h XOR byte) × 1099511628211 from h = 14695981039346656037.
+std::string fnv1a_hex(const std::string& text) {
+  std::uint64_t hash = 14695981039346656037ull;
+  for (unsigned char byte : text) {
+    hash ^= byte;
+    hash *= 1099511628211ull;
+  }
+  char digits[17];
+  std::snprintf(digits, sizeof digits, "%016" PRIx64, hash);
+  return digits;
+}
+
+std::string cache_file_name(const std::string& hash) { return "cellmesh-" + hash + ".txt"; }
+
+std::string serialize(const CellMesh& mesh, const std::string& parameters) {
+  std::string text;
+  text.reserve(80 * mesh.nodes.size() + 40 * mesh.tetrahedra.size());
+  char line[160];
+  text += std::string(cache_header) + "\nhash " + mesh.hash + "\nparameters " + parameters + "\n";
+  text += "nodes " + std::to_string(mesh.nodes.size()) + "\n";
+  for (const auto& x : mesh.nodes) {
+    std::snprintf(line, sizeof line, "%.17g %.17g %.17g\n", x[0], x[1], x[2]);
+    text += line;
+  }
+  text += "tetrahedra " + std::to_string(mesh.tetrahedra.size()) + "\n";
+  for (const auto& t : mesh.tetrahedra) {
+    std::snprintf(line, sizeof line, "%d %d %d %d\n", t[0], t[1], t[2], t[3]);
+    text += line;
+  }
+  for (const auto* surface : {&mesh.outer_surface, &mesh.inner_surface}) {
+    text += (surface == &mesh.outer_surface ? "outer_surface " : "inner_surface ") + std::to_string(surface->size()) + "\n";
+    for (const auto& f : *surface) {
+      std::snprintf(line, sizeof line, "%d %d %d\n", f[0], f[1], f[2]);
+      text += line;
+    }
+  }
+  text += "end\n";
+  return text;
+}
+
+// Reads a cache file; throws std::runtime_error with the reason when anything is off.
+CellMesh read_cache_file(const std::string& path, const std::string& expected_hash, const std::string& parameters,
+                         bool shell) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open it");
+  std::string line;
+  const auto expect_line = [&](const std::string& wanted, const char* what) {
+    if (!std::getline(in, line) || line != wanted) throw std::runtime_error(std::string("wrong ") + what + " line");
+  };
+  expect_line(cache_header, "header");
+  expect_line("hash " + expected_hash, "hash");
+  expect_line("parameters " + parameters, "parameters");
+  const auto read_count = [&](const char* keyword, std::size_t minimum) {
+    std::string word;
+    long long count = -1;
+    if (!(in >> word >> count) || word != keyword || count < static_cast<long long>(minimum) || count > 100000000)
+      throw std::runtime_error(std::string("bad \"") + keyword + "\" count");
+    return static_cast<std::size_t>(count);
+  };
+  CellMesh mesh;
+  mesh.hash = expected_hash;
+  mesh.nodes.resize(read_count("nodes", 4));
+  for (auto& x : mesh.nodes)
+    if (!(in >> x[0] >> x[1] >> x[2]) || !std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+      throw std::runtime_error("a node's coordinates are missing or not finite");
+  const int node_count = static_cast<int>(mesh.nodes.size());
+  const auto valid_index = [&](int i) { return i >= 0 && i < node_count; };
+  mesh.tetrahedra.resize(read_count("tetrahedra", 1));
+  for (auto& t : mesh.tetrahedra) {
+    if (!(in >> t[0] >> t[1] >> t[2] >> t[3]) || !valid_index(t[0]) || !valid_index(t[1]) || !valid_index(t[2]) ||
+        !valid_index(t[3]))
+      throw std::runtime_error("a tetrahedron's node indices are missing or out of range");
+    if (!(signed_volume6(mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]], mesh.nodes[t[3]]) > 0.0))
+      throw std::runtime_error("a tetrahedron has no positive volume");
+  }
+  for (auto* surface : {&mesh.outer_surface, &mesh.inner_surface}) {
+    const bool outer = surface == &mesh.outer_surface;
+    surface->resize(read_count(outer ? "outer_surface" : "inner_surface", outer || shell ? 4 : 0));
+    for (auto& f : *surface)
+      if (!(in >> f[0] >> f[1] >> f[2]) || !valid_index(f[0]) || !valid_index(f[1]) || !valid_index(f[2]))
+        throw std::runtime_error("a surface triangle's node indices are missing or out of range");
+  }
+  if (!shell && !mesh.inner_surface.empty()) throw std::runtime_error("a filled body with a cavity wall");
+  std::string word;
+  if (!(in >> word) || word != "end") throw std::runtime_error("no \"end\" line (truncated?)");
+  if (in >> word) throw std::runtime_error("text after \"end\"");
+  return mesh;
+}
+
+void write_cache_file(const std::string& directory, const CellMesh& mesh, const std::string& parameters) {
+  namespace fs = std::filesystem;
+  fs::create_directories(directory);
+  const fs::path path = fs::path(directory) / cache_file_name(mesh.hash);
+  // A temporary name of this process and call, so that two processes meshing the same
+  // cell at once do not write into one file; rename is atomic within the directory.
+  static std::atomic<unsigned> calls{0};
+  const std::string temporary =
+      path.string() + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(calls.fetch_add(1));
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out << serialize(mesh, parameters);
+    out.close();
+    if (!out) {
+      std::error_code ignored;
+      fs::remove(temporary, ignored);
+      throw std::runtime_error("cannot write " + temporary);
+    }
+  }
+  try {
+    commit_temporary_file(temporary, path.string());
+  } catch (...) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    throw;
+  }
+}
+
+CellMesh make_cell_mesh_with_parameters(const CellKindConfig& kind, double element_size, const std::string& parameters) {
+  validate_cell_kind(kind);
+  if (!(element_size > 0.0 && std::isfinite(element_size)))
+    throw std::runtime_error(describe_kind(kind) + ": the element size must be positive, not " + std::to_string(element_size));
+  RawMesh raw;
+  try {
+    raw = mesh_with_gmsh(kind, element_size);
+  } catch (...) {  // Gmsh 4.8 throws its error message as a std::string
+    throw std::runtime_error(describe_kind(kind) + ": Gmsh could not mesh it (element size " +
+                             std::to_string(element_size) + " μm): " + current_gmsh_error());
+  }
+  if (raw.tetrahedra.empty())
+    throw std::runtime_error(describe_kind(kind) + ": Gmsh made no tetrahedra (element size " +
+                             std::to_string(element_size) + " μm)");
+  if (kind.shape == CellShape::sickle) {
+    const SickleBend bend = sickle_bend(kind);
+    for (auto& x : raw.nodes) x = bend_sickle_point(bend, x);
+  }
+  CellMesh mesh;
+  mesh.nodes = std::move(raw.nodes);
+  mesh.tetrahedra = std::move(raw.tetrahedra);
+  orient_and_check_tetrahedra(kind, mesh.nodes, mesh.tetrahedra);
+  canonicalize_tetrahedra(mesh.tetrahedra);
+  if (peel_boundary_slivers(mesh.nodes, mesh.tetrahedra) > 0) {
+    drop_unused_nodes(mesh.nodes, mesh.tetrahedra);
+    canonicalize_tetrahedra(mesh.tetrahedra);
+  }
+  Surfaces surfaces = boundary_surfaces(kind, mesh.nodes, mesh.tetrahedra);
+  mesh.outer_surface = std::move(surfaces.outer);
+  mesh.inner_surface = std::move(surfaces.inner);
+  mesh.hash = fnv1a_hex(parameters);
+  return mesh;
+}
+
+}  // namespace
+
+double cell_element_size(const CellKindConfig& kind) {
+  if (kind.mesh_size > 0.0) return kind.mesh_size;
+  // h = h_ref(resolution) · (V / V_ref)^{1/3}: similar node counts for any cell size.
+  return reference_element_size(kind.resolution) * std::cbrt(exact_cell_volume(kind) / reference_cell_volume());
+}
+
+CellMesh make_cell_mesh(const CellKindConfig& kind) {
+  const double element_size = cell_element_size(kind);
+  return make_cell_mesh_with_parameters(kind, element_size, canonical_parameters(kind, element_size));
+}
+
+CellMesh cell_mesh(const CellKindConfig& kind, const std::string& cache_dir) {
+  const double element_size = cell_element_size(kind);
+  const std::string parameters = canonical_parameters(kind, element_size);
+  const std::string hash = fnv1a_hex(parameters);
+  const std::string path = (std::filesystem::path(cache_dir) / cache_file_name(hash)).string();
+  std::error_code error;
+  if (std::filesystem::exists(path, error)) {
+    try {
+      return read_cache_file(path, hash, parameters, kind.body == CellBody::shell);
+    } catch (const std::exception& bad) {
+      spdlog::warn("mesh cache file {} of {} is unusable ({}); meshing again", path, describe_kind(kind), bad.what());
+    }
+  }
+  CellMesh mesh = make_cell_mesh_with_parameters(kind, element_size, parameters);
+  try {
+    write_cache_file(cache_dir, mesh, parameters);
+  } catch (const std::exception& failure) {
+    spdlog::warn("could not store the mesh of {} in the cache {}: {}", describe_kind(kind), cache_dir, failure.what());
+  }
+  return mesh;
+}
+
+std::string default_mesh_cache_dir() {
+  const auto non_empty = [](const char* name) {
+    const char* value = std::getenv(name);
+    return value && *value ? std::string(value) : std::string();
+  };
+  if (auto dir = non_empty("ROULEAU_MESH_CACHE"); !dir.empty()) return dir;
+  if (auto dir = non_empty("XDG_CACHE_HOME"); !dir.empty()) return dir + "/rouleau/meshes";
+  if (auto dir = non_empty("HOME"); !dir.empty()) return dir + "/.cache/rouleau/meshes";
+  return "./.rouleau-mesh-cache";
+}
+
+}  // namespace rouleau

@@ -1,0 +1,618 @@
+// The exact cell shapes: the Evans–Fung RBC, the sphere and the sickle crescent, their
+// volumes and areas by quadrature, inside tests, surface samples and the placement check.
+//
+// Sickle construction (cited by the README). Start from the ellipsoid
+//   (x/a)² + (y/b)² + (z/c)² ≤ 1,  a = length/2, b = width/2, c = thickness/2,
+// with its long axis along x, and bend it along a circular arc of radius ρ = arc_radius in
+// the x–y plane with the map
+//   B(x, y, z) = ((ρ + y) sin(x/ρ), (ρ + y) cos(x/ρ) − ρ, z):
+// the centre line y = z = 0 goes onto the circle of radius ρ about (0, −ρ, 0), a point at
+// signed distance y from the centre line goes onto the circle of radius ρ + y, and the
+// plane cross-section at x goes rigidly onto the radial plane at angle x/ρ. Hence the
+// bent body's cross-sections in the radial planes are exactly the ellipses of the unbent
+// one, and the arc length along the centre line is x. The Jacobian of B is
+// det ∂B/∂(x, y, z) = (ρ + y)/ρ = 1 + y/ρ, so
+//   V_bent = ∫_E (1 + y/ρ) dV = V_E + (1/ρ) ∫_E y dV = V_E = (4/3)π a b c,
+// because the ellipsoid is symmetric in y: the bend keeps the volume exactly (the outer
+// half grows by as much as the inner half shrinks). B is one-to-one and orientation-
+// preserving on the body when ρ > b (the inner side stays on the arc-centre's far side)
+// and a < πρ (the two tips do not meet around the circle). Finally the body is shifted
+// along y by −Ȳ so that the centroid of the volume it encloses is at the origin (x̄ = 0
+// by the x → −x symmetry). In the body frame the convex side faces +y and the tips point
+// toward −y. The shell body's inner surface is the ellipsoid with semi-axes a − h, b − h,
+// c − h bent by the same map and shifted by the same Ȳ: an approximation of the true
+// inward offset by h (exact on the centre line's cross-section at x = 0 along y and z,
+// thinner than h near the tips).
+#include "geometry/cell_shapes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "geometry/cell_shape_details.hpp"
+#include "util/errors.hpp"
+
+namespace rouleau {
+
+namespace {
+constexpr double pi = 3.14159265358979323846;
+}  // namespace
+
+namespace geometry_detail {
+
+namespace {
+// Evans–Fung coefficients (paper eq. 1, with the sign of a2 corrected).
+constexpr double evans_fung_a0 = 0.207;
+constexpr double evans_fung_a1 = 2.002;
+constexpr double evans_fung_a2 = -1.122;
+
+const char* shape_name(CellShape shape) {
+  switch (shape) {
+    case CellShape::rbc: return "rbc";
+    case CellShape::sickle: return "sickle";
+    case CellShape::sphere: return "sphere";
+  }
+  return "unknown shape";
+}
+
+std::string format_length(double value) {
+  std::ostringstream out;
+  out.precision(4);
+  out << value << " μm";
+  return out.str();
+}
+
+[[noreturn]] void fail(const CellKindConfig& kind, const std::string& reason) {
+  throw std::runtime_error(describe_kind(kind) + ": " + reason);
+}
+
+void require_positive(const CellKindConfig& kind, double value, const char* what) {
+  if (!(std::isfinite(value) && value > 0.0))
+    fail(kind, std::string(what) + " must be a positive number of μm, not " + std::to_string(value));
+}
+
+// Whether the open segments p0–p1 and q0–q1 cross (proper intersection or touching).
+double orientation(const std::array<double, 2>& a, const std::array<double, 2>& b, const std::array<double, 2>& c) {
+  return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+bool segments_meet(const std::array<double, 2>& p0, const std::array<double, 2>& p1,
+                   const std::array<double, 2>& q0, const std::array<double, 2>& q1) {
+  const double d1 = orientation(q0, q1, p0), d2 = orientation(q0, q1, p1);
+  const double d3 = orientation(p0, p1, q0), d4 = orientation(p0, p1, q1);
+  return ((d1 > 0) != (d2 > 0) || d1 == 0 || d2 == 0) && ((d3 > 0) != (d4 > 0) || d3 == 0 || d4 == 0) &&
+         std::min(p0[0], p1[0]) <= std::max(q0[0], q1[0]) && std::min(q0[0], q1[0]) <= std::max(p0[0], p1[0]) &&
+         std::min(p0[1], p1[1]) <= std::max(q0[1], q1[1]) && std::min(q0[1], q1[1]) <= std::max(p0[1], p1[1]);
+}
+}  // namespace
+
+std::string describe_kind(const CellKindConfig& kind) {
+  return "cell kind \"" + kind.name + "\" (" + shape_name(kind.shape) + " " +
+         (kind.body == CellBody::shell ? "shell" : "filled") + ")";
+}
+
+QuadratureRule gauss_legendre(int n) {
+  // Nodes are the roots of the Legendre polynomial P_n, found by Newton's method from
+  // the estimate cos(π(i − ¼)/(n + ½)); weights w = 2 / ((1 − x²) P_n'(x)²). P_n and
+  // P_n' from the three-term recurrence k P_k = (2k − 1) x P_{k−1} − (k − 1) P_{k−2}
+  // and P_n' = n (x P_n − P_{n−1}) / (x² − 1).
+  QuadratureRule rule;
+  rule.nodes.resize(n);
+  rule.weights.resize(n);
+  for (int i = 0; i < (n + 1) / 2; ++i) {
+    double x = std::cos(pi * (i + 0.75) / (n + 0.5));
+    double derivative = 0.0;
+    for (int iteration = 0; iteration < 100; ++iteration) {
+      double p_previous = 1.0, p = x;
+      for (int k = 2; k <= n; ++k) {
+        const double p_next = ((2.0 * k - 1.0) * x * p - (k - 1.0) * p_previous) / k;
+        p_previous = p;
+        p = p_next;
+      }
+      derivative = n * (x * p - p_previous) / (x * x - 1.0);
+      const double step = p / derivative;
+      x -= step;
+      if (std::abs(step) < 1e-16) break;
+    }
+    const double weight = 2.0 / ((1.0 - x * x) * derivative * derivative);
+    rule.nodes[i] = -x;
+    rule.nodes[n - 1 - i] = x;
+    rule.weights[i] = rule.weights[n - 1 - i] = weight;
+  }
+  return rule;
+}
+
+std::array<double, 2> rbc_profile_point(double theta, double cell_radius) {
+  // r = R sin θ, z = R · ½ cos θ (a0 + a1 sin²θ + a2 sin⁴θ)
+  const double s = std::sin(theta), c = std::cos(theta), s2 = s * s;
+  const double polynomial = evans_fung_a0 + evans_fung_a1 * s2 + evans_fung_a2 * s2 * s2;
+  return {cell_radius * s, cell_radius * 0.5 * c * polynomial};
+}
+
+std::array<double, 2> rbc_profile_tangent(double theta, double cell_radius) {
+  // r' = R cos θ;  z' = ½R (−sin θ P + cos θ dP/dθ),  dP/dθ = (2 a1 s + 4 a2 s³) cos θ
+  const double s = std::sin(theta), c = std::cos(theta), s2 = s * s;
+  const double polynomial = evans_fung_a0 + evans_fung_a1 * s2 + evans_fung_a2 * s2 * s2;
+  const double polynomial_derivative = (2.0 * evans_fung_a1 * s + 4.0 * evans_fung_a2 * s2 * s) * c;
+  return {cell_radius * c, 0.5 * cell_radius * (-s * polynomial + c * polynomial_derivative)};
+}
+
+std::array<double, 2> rbc_profile_normal(double theta, double cell_radius) {
+  const auto t = rbc_profile_tangent(theta, cell_radius);
+  const double length = std::hypot(t[0], t[1]);
+  return {-t[1] / length, t[0] / length};
+}
+
+std::vector<std::array<double, 2>> rbc_inner_profile(const CellKindConfig& kind, int intervals) {
+  const double radius = 0.5 * kind.diameter, h = kind.shell_thickness;
+  // The cavity at the axis: the centre half-thickness z(0) = ½ a0 R minus h.
+  const double centre_half_thickness = rbc_profile_point(0.0, radius)[1];
+  if (centre_half_thickness - h <= 0.0)
+    fail(kind, "the shell thickness " + format_length(h) + " leaves no cavity at the axis: the centre thickness is " +
+                   format_length(2.0 * centre_half_thickness) + " < 2h");
+  std::vector<std::array<double, 2>> inner(intervals + 1), outer(intervals + 1);
+  for (int k = 0; k <= intervals; ++k) {
+    const double theta = pi * k / intervals;
+    outer[k] = rbc_profile_point(theta, radius);
+    const auto normal = rbc_profile_normal(theta, radius);
+    inner[k] = {outer[k][0] - h * normal[0], outer[k][1] - h * normal[1]};
+  }
+  inner.front()[0] = inner.back()[0] = 0.0;  // exactly on the axis (the normal is ±z there)
+  for (int k = 1; k < intervals; ++k) {
+    if (!(inner[k][0] > 0.0))
+      fail(kind, "the inner surface of the shell (offset inward by h = " + format_length(h) +
+                     ") crosses the axis; the shell is too thick for this diameter");
+    // Where the offset of a convex part folds back (curvature radius < h) the offset
+    // curve runs against the outer one.
+    const double along = (inner[k + 1][0] - inner[k][0]) * (outer[k + 1][0] - outer[k][0]) +
+                         (inner[k + 1][1] - inner[k][1]) * (outer[k + 1][1] - outer[k][1]);
+    if (!(along > 0.0))
+      fail(kind, "the inner surface of the shell (offset inward by h = " + format_length(h) +
+                     ") folds back near r = " + format_length(outer[k][0]) +
+                     ": the profile's curvature radius there is smaller than h");
+  }
+  for (int i = 0; i < intervals; ++i)
+    for (int j = i + 2; j < intervals; ++j)
+      if (segments_meet(inner[i], inner[i + 1], inner[j], inner[j + 1]))
+        fail(kind, "the inner surface of the shell (offset inward by h = " + format_length(h) +
+                       ") crosses itself near r = " + format_length(inner[i][0]) + ", z = " + format_length(inner[i][1]) +
+                       "; the shell is too thick for this profile");
+  return inner;
+}
+
+SickleBend sickle_bend(const CellKindConfig& kind) {
+  SickleBend bend{0.5 * kind.length, 0.5 * kind.width, 0.5 * kind.thickness, kind.arc_radius, 0.0};
+  const double a = bend.semi_length, b = bend.semi_width, c = bend.semi_thickness, rho = bend.arc_radius;
+  // Ȳ = (1/V) ∫_E Y(x, y) (1 + y/ρ) dV with Y = (ρ + y) cos(x/ρ) − ρ. Over the elliptic
+  // cross-section at x (semi-axes b s, c s, s² = 1 − x²/a², area A = π b c s²,
+  // ∫ y dA = 0, ∫ y² dA = π (b s)³ (c s)/4) the integrand Y (1 + y/ρ) =
+  // cos(x/ρ)(ρ + y)²/ρ − ρ − y integrates to cos(x/ρ)(ρ² A + ∫y² dA)/ρ − ρ A.
+  const QuadratureRule rule = gauss_legendre(64);
+  double moment = 0.0;
+  for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
+    const double x = a * rule.nodes[q];
+    const double s2 = 1.0 - (x / a) * (x / a);
+    const double area = pi * b * c * s2;
+    const double second_moment = pi * b * b * b * c * s2 * s2 / 4.0;
+    moment += a * rule.weights[q] * (std::cos(x / rho) * (rho * rho * area + second_moment) / rho - rho * area);
+  }
+  bend.centroid_y = moment / (4.0 / 3.0 * pi * a * b * c);
+  return bend;
+}
+
+std::array<double, 3> bend_sickle_point(const SickleBend& bend, const std::array<double, 3>& unbent) {
+  // B(x, y, z) − (0, Ȳ, 0) = ((ρ+y) sin(x/ρ), (ρ+y) cos(x/ρ) − ρ − Ȳ, z)
+  const double rho = bend.arc_radius, angle = unbent[0] / rho, radius = rho + unbent[1];
+  return {radius * std::sin(angle), radius * std::cos(angle) - rho - bend.centroid_y, unbent[2]};
+}
+
+std::array<double, 3> unbend_sickle_point(const SickleBend& bend, const std::array<double, 3>& body) {
+  // About the arc centre (0, −ρ − Ȳ): ρ' = distance in the x–y plane, y = ρ' − ρ,
+  // x = ρ · (angle from the +y direction) = ρ atan2(X, Y + ρ + Ȳ).
+  const double rho = bend.arc_radius;
+  const double from_centre_x = body[0], from_centre_y = body[1] + bend.centroid_y + rho;
+  return {rho * std::atan2(from_centre_x, from_centre_y), std::hypot(from_centre_x, from_centre_y) - rho, body[2]};
+}
+
+void validate_cell_kind(const CellKindConfig& kind) {
+  const bool shell = kind.body == CellBody::shell;
+  switch (kind.shape) {
+    case CellShape::rbc:
+      require_positive(kind, kind.diameter, "diameter");
+      if (shell) {
+        require_positive(kind, kind.shell_thickness, "shell thickness");
+        rbc_inner_profile(kind, 512);
+      }
+      break;
+    case CellShape::sphere:
+      require_positive(kind, kind.diameter, "diameter");
+      if (shell) {
+        require_positive(kind, kind.shell_thickness, "shell thickness");
+        if (kind.shell_thickness >= 0.5 * kind.diameter)
+          fail(kind, "the shell thickness " + format_length(kind.shell_thickness) +
+                         " is not smaller than the radius " + format_length(0.5 * kind.diameter));
+      }
+      break;
+    case CellShape::sickle: {
+      require_positive(kind, kind.length, "length");
+      require_positive(kind, kind.width, "width");
+      require_positive(kind, kind.thickness, "thickness");
+      require_positive(kind, kind.arc_radius, "arc radius");
+      if (kind.arc_radius <= 0.5 * kind.width)
+        fail(kind, "the arc radius " + format_length(kind.arc_radius) + " must exceed half the width (" +
+                       format_length(0.5 * kind.width) + "): the inner side would fold over the arc centre");
+      if (0.5 * kind.length >= pi * kind.arc_radius)
+        fail(kind, "the length " + format_length(kind.length) + " must be shorter than 2π × arc radius (" +
+                       format_length(2.0 * pi * kind.arc_radius) + "): the tips would meet");
+      if (shell) {
+        require_positive(kind, kind.shell_thickness, "shell thickness");
+        const double smallest_semi_axis = 0.5 * std::min({kind.length, kind.width, kind.thickness});
+        if (kind.shell_thickness >= smallest_semi_axis)
+          fail(kind, "the shell thickness " + format_length(kind.shell_thickness) +
+                         " is not smaller than the smallest semi-axis " + format_length(smallest_semi_axis));
+      }
+      break;
+    }
+  }
+}
+
+}  // namespace geometry_detail
+
+using namespace geometry_detail;
+
+namespace {
+using Vector3 = std::array<double, 3>;
+using Matrix3 = std::array<std::array<double, 3>, 3>;
+
+Vector3 multiply(const Matrix3& m, const Vector3& v) {
+  return {m[0][0] * v[0] + m[0][1] * v[1] + m[0][2] * v[2], m[1][0] * v[0] + m[1][1] * v[1] + m[1][2] * v[2],
+          m[2][0] * v[0] + m[2][1] * v[1] + m[2][2] * v[2]};
+}
+Vector3 multiply_transposed(const Matrix3& m, const Vector3& v) {
+  return {m[0][0] * v[0] + m[1][0] * v[1] + m[2][0] * v[2], m[0][1] * v[0] + m[1][1] * v[1] + m[2][1] * v[2],
+          m[0][2] * v[0] + m[1][2] * v[1] + m[2][2] * v[2]};
+}
+Matrix3 product(const Matrix3& a, const Matrix3& b) {
+  Matrix3 c{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) c[i][j] += a[i][k] * b[k][j];
+  return c;
+}
+
+std::string format_point(const Vector3& p) {
+  std::ostringstream out;
+  out.precision(4);
+  out << "[" << p[0] << ", " << p[1] << ", " << p[2] << "]";
+  return out.str();
+}
+std::string format_number(double value) {
+  std::ostringstream out;
+  out.precision(4);
+  out << value;
+  return out.str();
+}
+
+// Area of the bent ellipsoid's surface. On the ellipsoid P(θ, ψ) = (a cos θ,
+// b sin θ cos ψ, c sin θ sin ψ); in the local frame (along the arc, radial, z) the bend's
+// Jacobian is diag(λ, 1, 1) with λ = (ρ + y)/ρ, so the bent surface element is
+// |(λ P_θx, P_θy, P_θz) × (λ P_ψx, P_ψy, P_ψz)| dθ dψ (P_ψx = 0). Gauss–Legendre in θ
+// (the integrand is smooth, ∝ sin θ at the tips), the trapezoidal rule in ψ (periodic).
+double bent_ellipsoid_area(double a, double b, double c, double rho) {
+  const QuadratureRule rule = gauss_legendre(160);
+  const int azimuths = 256;
+  double area = 0.0;
+  for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
+    const double theta = 0.5 * pi * (rule.nodes[q] + 1.0), weight = 0.5 * pi * rule.weights[q];
+    const double st = std::sin(theta), ct = std::cos(theta);
+    double ring = 0.0;
+    for (int k = 0; k < azimuths; ++k) {
+      const double psi = 2.0 * pi * k / azimuths, sp = std::sin(psi), cp = std::cos(psi);
+      const double stretch = (rho + b * st * cp) / rho;
+      const Vector3 along_theta{-stretch * a * st, b * ct * cp, c * ct * sp};
+      const Vector3 along_psi{0.0, -b * st * sp, c * st * cp};
+      const Vector3 normal{along_theta[1] * along_psi[2] - along_theta[2] * along_psi[1],
+                           along_theta[2] * along_psi[0] - along_theta[0] * along_psi[2],
+                           along_theta[0] * along_psi[1] - along_theta[1] * along_psi[0]};
+      ring += std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+    }
+    area += weight * ring * (2.0 * pi / azimuths);
+  }
+  return area;
+}
+
+std::vector<Vector3> rbc_surface_samples(double radius, double spacing) {
+  // Points equally spaced in arc length along the profile θ ∈ [0, π] (from a dense
+  // table), each revolved into ⌈2πr/spacing⌉ points around the axis.
+  const int table_intervals = 4096;
+  std::vector<std::array<double, 2>> table(table_intervals + 1);
+  std::vector<double> arc_length(table_intervals + 1, 0.0);
+  for (int k = 0; k <= table_intervals; ++k) {
+    table[k] = rbc_profile_point(pi * k / table_intervals, radius);
+    if (k > 0)
+      arc_length[k] = arc_length[k - 1] + std::hypot(table[k][0] - table[k - 1][0], table[k][1] - table[k - 1][1]);
+  }
+  const double total = arc_length.back();
+  const int stations = std::max(2, static_cast<int>(std::ceil(total / spacing)));
+  std::vector<Vector3> samples;
+  std::size_t segment = 0;
+  for (int k = 0; k <= stations; ++k) {
+    const double target = total * k / stations;
+    while (segment + 1 < static_cast<std::size_t>(table_intervals) && arc_length[segment + 1] < target) ++segment;
+    const double span = arc_length[segment + 1] - arc_length[segment];
+    const double t = span > 0.0 ? std::clamp((target - arc_length[segment]) / span, 0.0, 1.0) : 0.0;
+    double r = table[segment][0] + t * (table[segment + 1][0] - table[segment][0]);
+    const double z = table[segment][1] + t * (table[segment + 1][1] - table[segment][1]);
+    if (k == 0 || k == stations) r = 0.0;
+    const int around = std::max(1, static_cast<int>(std::ceil(2.0 * pi * r / spacing)));
+    for (int j = 0; j < around; ++j) {
+      const double phi = 2.0 * pi * (j + 0.5 * (k % 2)) / around;
+      samples.push_back({r * std::cos(phi), r * std::sin(phi), z});
+    }
+  }
+  return samples;
+}
+
+std::vector<Vector3> sphere_surface_samples(double radius, double spacing) {
+  // Fibonacci lattice: N ≈ 4πR²/spacing² points, z uniform in (−R, R), azimuth advancing
+  // by the golden angle π(3 − √5).
+  const int count = std::max(8, static_cast<int>(std::ceil(4.0 * pi * radius * radius / (spacing * spacing))));
+  const double golden_angle = pi * (3.0 - std::sqrt(5.0));
+  std::vector<Vector3> samples(count);
+  for (int i = 0; i < count; ++i) {
+    const double z = 1.0 - (2.0 * i + 1.0) / count, r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    samples[i] = {radius * r * std::cos(golden_angle * i), radius * r * std::sin(golden_angle * i), radius * z};
+  }
+  return samples;
+}
+
+std::vector<Vector3> sickle_surface_samples(const SickleBend& bend, double spacing) {
+  // Rings of the unbent ellipsoid at x = a cos θ (semi-axes b sin θ, c sin θ), bent. The θ
+  // step keeps the bent meridians at most `spacing` apart (their speed is at most
+  // √((λ_max a)² + max(b, c)²), λ_max = (ρ + b)/ρ); points around a ring ≈ its perimeter
+  // (Ramanujan's approximation) / spacing.
+  const double a = bend.semi_length, b = bend.semi_width, c = bend.semi_thickness, rho = bend.arc_radius;
+  const double max_speed = std::hypot((rho + b) / rho * a, std::max(b, c));
+  const int rings = std::max(2, static_cast<int>(std::ceil(pi * max_speed / spacing)));
+  std::vector<Vector3> samples;
+  for (int k = 0; k <= rings; ++k) {
+    const double theta = pi * k / rings, st = (k == 0 || k == rings) ? 0.0 : std::sin(theta);
+    const double x = a * std::cos(theta), p = b * st, q = c * st;
+    const double perimeter = pi * (3.0 * (p + q) - std::sqrt((3.0 * p + q) * (p + 3.0 * q)));
+    const int around = st == 0.0 ? 1 : std::max(3, static_cast<int>(std::ceil(perimeter / spacing)));
+    for (int j = 0; j < around; ++j) {
+      const double psi = 2.0 * pi * (j + 0.5 * (k % 2)) / around;
+      samples.push_back(bend_sickle_point(bend, {x, p * std::cos(psi), q * std::sin(psi)}));
+    }
+  }
+  return samples;
+}
+}  // namespace
+
+double evans_fung_half_thickness(double radius_from_axis, double cell_radius) {
+  // z = R y(x), x = r/R, y = ½ √(1 − x²)(a0 + a1 x² + a2 x⁴); zero on and beyond the rim.
+  const double x = radius_from_axis / cell_radius;
+  if (!(std::abs(x) < 1.0)) return 0.0;
+  const double x2 = x * x;
+  return cell_radius * 0.5 * std::sqrt(1.0 - x2) * (0.207 + 2.002 * x2 - 1.122 * x2 * x2);
+}
+
+double exact_cell_volume(const CellKindConfig& kind) {
+  validate_cell_kind(kind);
+  switch (kind.shape) {
+    case CellShape::rbc: {
+      // V = 2 ∫₀^R 2π r z(r) dr; with r = R sin θ, z = ½R cos θ P(sin²θ):
+      // V = 2π R³ ∫₀^{π/2} sin θ cos²θ P(sin²θ) dθ (smooth: no √ singularity left).
+      const double radius = 0.5 * kind.diameter;
+      const QuadratureRule rule = gauss_legendre(48);
+      double integral = 0.0;
+      for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
+        const double theta = 0.25 * pi * (rule.nodes[q] + 1.0);
+        const auto point = rbc_profile_point(theta, radius);
+        const double dr_dtheta = radius * std::cos(theta);
+        integral += 0.25 * pi * rule.weights[q] * 2.0 * pi * point[0] * point[1] * dr_dtheta;
+      }
+      return 2.0 * integral;
+    }
+    case CellShape::sphere: {
+      const double radius = 0.5 * kind.diameter;
+      return 4.0 / 3.0 * pi * radius * radius * radius;
+    }
+    case CellShape::sickle:
+      // The bend keeps the ellipsoid's volume (see the top of this file): V = (4/3)π a b c.
+      return 4.0 / 3.0 * pi * (0.5 * kind.length) * (0.5 * kind.width) * (0.5 * kind.thickness);
+  }
+  return 0.0;
+}
+
+double exact_cell_area(const CellKindConfig& kind) {
+  validate_cell_kind(kind);
+  switch (kind.shape) {
+    case CellShape::rbc: {
+      // A = 2 ∫₀^{π/2} 2π r(θ) |(r'(θ), z'(θ))| dθ (upper half, doubled).
+      const double radius = 0.5 * kind.diameter;
+      const QuadratureRule rule = gauss_legendre(64);
+      double integral = 0.0;
+      for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
+        const double theta = 0.25 * pi * (rule.nodes[q] + 1.0);
+        const auto point = rbc_profile_point(theta, radius);
+        const auto tangent = rbc_profile_tangent(theta, radius);
+        integral += 0.25 * pi * rule.weights[q] * 2.0 * pi * point[0] * std::hypot(tangent[0], tangent[1]);
+      }
+      return 2.0 * integral;
+    }
+    case CellShape::sphere: {
+      const double radius = 0.5 * kind.diameter;
+      return 4.0 * pi * radius * radius;
+    }
+    case CellShape::sickle: {
+      const SickleBend bend = sickle_bend(kind);
+      return bent_ellipsoid_area(bend.semi_length, bend.semi_width, bend.semi_thickness, bend.arc_radius);
+    }
+  }
+  return 0.0;
+}
+
+bool inside_cell(const CellKindConfig& kind, const std::array<double, 3>& p) {
+  switch (kind.shape) {
+    case CellShape::rbc: {
+      // Inside when r < R and |z| < R y(r/R).
+      const double radius = 0.5 * kind.diameter, r = std::hypot(p[0], p[1]);
+      return r < radius && std::abs(p[2]) < evans_fung_half_thickness(r, radius);
+    }
+    case CellShape::sphere: {
+      const double radius = 0.5 * kind.diameter;
+      return p[0] * p[0] + p[1] * p[1] + p[2] * p[2] < radius * radius;
+    }
+    case CellShape::sickle: {
+      // The bend (its centroid shift is a quadrature) of the last sickle asked about: the
+      // placement check asks about one kind many thousand times in a row.
+      thread_local std::array<double, 4> last_sizes{-1.0, -1.0, -1.0, -1.0};
+      thread_local SickleBend last_bend{};
+      const std::array<double, 4> sizes{kind.length, kind.width, kind.thickness, kind.arc_radius};
+      if (sizes != last_sizes) last_bend = sickle_bend(kind), last_sizes = sizes;
+      const SickleBend& bend = last_bend;
+      const auto q = unbend_sickle_point(bend, p);
+      const double x = q[0] / bend.semi_length, y = q[1] / bend.semi_width, z = q[2] / bend.semi_thickness;
+      return x * x + y * y + z * z < 1.0;
+    }
+  }
+  return false;
+}
+
+std::vector<std::array<double, 3>> cell_surface_samples(const CellKindConfig& kind, double spacing) {
+  validate_cell_kind(kind);
+  if (!(spacing > 0.0 && std::isfinite(spacing)))
+    throw std::invalid_argument("cell_surface_samples: the spacing must be positive, not " + std::to_string(spacing));
+  switch (kind.shape) {
+    case CellShape::rbc: return rbc_surface_samples(0.5 * kind.diameter, spacing);
+    case CellShape::sphere: return sphere_surface_samples(0.5 * kind.diameter, spacing);
+    case CellShape::sickle: return sickle_surface_samples(sickle_bend(kind), spacing);
+  }
+  return {};
+}
+
+std::array<std::array<double, 3>, 3> placement_rotation(const CellPlacement& placement) {
+  // R = Rz(γ) Ry(β) Rx(α): rotate about the fixed x axis first, then y, then z.
+  const double degree = pi / 180.0;
+  const double alpha = placement.orientation[0] * degree, beta = placement.orientation[1] * degree,
+               gamma = placement.orientation[2] * degree;
+  const Matrix3 rx{{{1, 0, 0}, {0, std::cos(alpha), -std::sin(alpha)}, {0, std::sin(alpha), std::cos(alpha)}}};
+  const Matrix3 ry{{{std::cos(beta), 0, std::sin(beta)}, {0, 1, 0}, {-std::sin(beta), 0, std::cos(beta)}}};
+  const Matrix3 rz{{{std::cos(gamma), -std::sin(gamma), 0}, {std::sin(gamma), std::cos(gamma), 0}, {0, 0, 1}}};
+  return product(rz, product(ry, rx));
+}
+
+void check_cell_placement(const CaseConfig& config) {
+  // Surface samples this far apart: two cells 0.3 μm apart are told from touching ones,
+  // and the surface between samples bulges by less than spacing²/(8 × curvature radius).
+  const double sample_spacing = 0.15;
+  const std::string& file = config.source_file;
+  const auto cell_key = [](std::size_t i, const char* field) {
+    return "cells[" + std::to_string(i) + "]." + field;
+  };
+
+  // Each cell's kind; each kind's samples once (body frame) and its bounding radius.
+  struct KindSamples {
+    std::vector<Vector3> samples;
+    double bounding_radius = 0.0;
+  };
+  std::map<std::size_t, KindSamples> samples_of_kind;
+  std::vector<std::size_t> kind_of_cell(config.cells.size());
+  for (std::size_t i = 0; i < config.cells.size(); ++i) {
+    const auto& name = config.cells[i].kind;
+    const auto found = std::find_if(config.cell_kinds.begin(), config.cell_kinds.end(),
+                                    [&](const CellKindConfig& kind) { return kind.name == name; });
+    if (found == config.cell_kinds.end()) {
+      std::string known;
+      for (const auto& kind : config.cell_kinds) known += (known.empty() ? "\"" : ", \"") + kind.name + "\"";
+      throw InputError(file, cell_key(i, "kind"),
+                       "unknown cell kind \"" + name + "\"; the kinds are " + (known.empty() ? "(none)" : known));
+    }
+    kind_of_cell[i] = static_cast<std::size_t>(found - config.cell_kinds.begin());
+    if (samples_of_kind.count(kind_of_cell[i])) continue;
+    KindSamples entry;
+    try {
+      entry.samples = cell_surface_samples(*found, sample_spacing);
+    } catch (const std::runtime_error& error) {
+      throw InputError(file, "cell_kinds." + found->name, error.what());
+    }
+    for (const auto& p : entry.samples)
+      entry.bounding_radius = std::max(entry.bounding_radius, std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]));
+    entry.bounding_radius += sample_spacing;  // the surface between samples
+    samples_of_kind.emplace(kind_of_cell[i], std::move(entry));
+  }
+
+  // Inside the domain: every sample, placed, within [lower, upper] along each axis.
+  std::vector<Matrix3> rotation(config.cells.size());
+  const char* axis_names[3] = {"x", "y", "z"};
+  for (std::size_t i = 0; i < config.cells.size(); ++i) {
+    const auto& cell = config.cells[i];
+    rotation[i] = placement_rotation(cell);
+    Vector3 lowest{+INFINITY, +INFINITY, +INFINITY}, highest{-INFINITY, -INFINITY, -INFINITY};
+    for (const auto& p : samples_of_kind.at(kind_of_cell[i]).samples) {
+      const Vector3 rotated = multiply(rotation[i], p);
+      for (int axis = 0; axis < 3; ++axis) {
+        lowest[axis] = std::min(lowest[axis], cell.center[axis] + rotated[axis]);
+        highest[axis] = std::max(highest[axis], cell.center[axis] + rotated[axis]);
+      }
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+      const double lower = config.domain.lower[axis], upper = config.domain.upper[axis];
+      if (lowest[axis] < lower || highest[axis] > upper)
+        throw InputError(file, cell_key(i, "center_um"),
+                         "cell " + std::to_string(i) + " (" + cell.kind + ") reaches outside the fluid domain: its surface spans [" +
+                             format_number(lowest[axis]) + ", " + format_number(highest[axis]) + "] μm along " +
+                             axis_names[axis] + ", the domain [" + format_number(lower) + ", " + format_number(upper) +
+                             "] μm");
+    }
+  }
+
+  // Overlaps: only pairs whose bounding spheres meet, found by sweeping along x over the
+  // cells sorted by centre x; then no sample of either inside the other.
+  double largest_radius = 0.0;
+  for (const auto& entry : samples_of_kind) largest_radius = std::max(largest_radius, entry.second.bounding_radius);
+  std::vector<std::size_t> by_x(config.cells.size());
+  for (std::size_t i = 0; i < by_x.size(); ++i) by_x[i] = i;
+  std::sort(by_x.begin(), by_x.end(), [&](std::size_t l, std::size_t r) {
+    return config.cells[l].center[0] < config.cells[r].center[0] || (config.cells[l].center[0] == config.cells[r].center[0] && l < r);
+  });
+  std::vector<std::pair<std::size_t, std::size_t>> near_pairs;  // (later cell j, earlier cell i)
+  for (std::size_t a = 0; a < by_x.size(); ++a) {
+    const std::size_t i = by_x[a];
+    const double radius_i = samples_of_kind.at(kind_of_cell[i]).bounding_radius;
+    for (std::size_t b = a + 1; b < by_x.size(); ++b) {
+      const std::size_t j = by_x[b];
+      if (config.cells[j].center[0] - config.cells[i].center[0] > radius_i + largest_radius) break;
+      const double radius_j = samples_of_kind.at(kind_of_cell[j]).bounding_radius;
+      double distance_squared = 0.0;
+      for (int axis = 0; axis < 3; ++axis) {
+        const double d = config.cells[j].center[axis] - config.cells[i].center[axis];
+        distance_squared += d * d;
+      }
+      if (distance_squared < (radius_i + radius_j) * (radius_i + radius_j))
+        near_pairs.emplace_back(std::max(i, j), std::min(i, j));
+    }
+  }
+  std::sort(near_pairs.begin(), near_pairs.end());  // report the first pair in file order
+  const auto any_sample_inside = [&](std::size_t from, std::size_t into) {
+    const auto& into_kind = config.cell_kinds[kind_of_cell[into]];
+    for (const auto& p : samples_of_kind.at(kind_of_cell[from]).samples) {
+      const Vector3 rotated = multiply(rotation[from], p);
+      Vector3 relative;
+      for (int axis = 0; axis < 3; ++axis)
+        relative[axis] = config.cells[from].center[axis] + rotated[axis] - config.cells[into].center[axis];
+      if (inside_cell(into_kind, multiply_transposed(rotation[into], relative))) return true;
+    }
+    return false;
+  };
+  for (const auto& [j, i] : near_pairs) {
+    if (any_sample_inside(j, i) || any_sample_inside(i, j))
+      throw InputError(file, cell_key(j, "center_um"),
+                       "cell " + std::to_string(j) + " (" + config.cells[j].kind + ") overlaps cells[" + std::to_string(i) +
+                           "] (" + config.cells[i].kind + " at " + format_point(config.cells[i].center) + " μm)");
+  }
+}
+
+}  // namespace rouleau

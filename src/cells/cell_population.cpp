@@ -2,6 +2,7 @@
 
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
 #include "kernels/cell_surface.hpp"
 #include "kernels/scatter_sum.hpp"
@@ -107,27 +108,30 @@ BasicCellPopulation<ExecSpace>::BasicCellPopulation(const std::vector<PlacedCell
 }
 
 template <class ExecSpace>
-void BasicCellPopulation<ExecSpace>::compute_internal_forces() {
+template <class Tag>
+double BasicCellPopulation<ExecSpace>::run_force_kernel(const char* label) {
   ProfilingRegion region("rouleau::CellPopulation::internal_forces");
   force_scatter_.reset();
-  NeoHookeanForceFunctor<Scatter> forces{positions_,       element_nodes_, inverse_edge_matrix_, reference_volume_,
-                                         element_cell_,    materials_,     force_scatter_};
-  Kokkos::parallel_for("rouleau::CellPopulation::internal_forces",
-                       Kokkos::RangePolicy<ExecSpace, ForcesOnly>(0, num_elements()), forces);
+  NeoHookeanForceFunctor<Scatter> forces{positions_,    element_nodes_, inverse_edge_matrix_, reference_volume_,
+                                         element_cell_, materials_,     force_scatter_};
+  const Kokkos::RangePolicy<ExecSpace, Tag> policy(0, num_elements());
+  double energy = 0.0;
+  if constexpr (std::is_same_v<Tag, ForcesAndEnergy>)
+    Kokkos::parallel_reduce(label, policy, forces, energy);
+  else
+    Kokkos::parallel_for(label, policy, forces);
   gather_into(internal_forces_, force_scatter_);
+  return energy;
+}
+
+template <class ExecSpace>
+void BasicCellPopulation<ExecSpace>::compute_internal_forces() {
+  run_force_kernel<ForcesOnly>("rouleau::CellPopulation::internal_forces");
 }
 
 template <class ExecSpace>
 double BasicCellPopulation<ExecSpace>::compute_internal_forces_and_energy() {
-  ProfilingRegion region("rouleau::CellPopulation::internal_forces");
-  force_scatter_.reset();
-  NeoHookeanForceFunctor<Scatter> forces{positions_,       element_nodes_, inverse_edge_matrix_, reference_volume_,
-                                         element_cell_,    materials_,     force_scatter_};
-  double energy = 0.0;
-  Kokkos::parallel_reduce("rouleau::CellPopulation::internal_forces_and_energy",
-                          Kokkos::RangePolicy<ExecSpace, ForcesAndEnergy>(0, num_elements()), forces, energy);
-  gather_into(internal_forces_, force_scatter_);
-  return energy;
+  return run_force_kernel<ForcesAndEnergy>("rouleau::CellPopulation::internal_forces_and_energy");
 }
 
 template <class ExecSpace>

@@ -90,6 +90,11 @@ class BasicCellPopulation {
   void copy_fields_to_host(HostFields& fields) const;
 
  private:
+  // The force kernel launched with tag ForcesOnly or ForcesAndEnergy; returns the energy
+  // (0 for ForcesOnly).
+  template <class Tag>
+  double run_force_kernel(const char* label);
+
   int num_cells_ = 0;
   NodeVectors reference_positions_, positions_, velocities_, internal_forces_;
   Kokkos::View<int* [4]> element_nodes_;

@@ -398,6 +398,18 @@ double evans_fung_half_thickness(double radius_from_axis, double cell_radius) {
   return cell_radius * 0.5 * std::sqrt(1.0 - x2) * (0.207 + 2.002 * x2 - 1.122 * x2 * x2);
 }
 
+namespace {
+// ∫₀^{π/2} g(θ) dθ by `points`-point Gauss–Legendre quadrature.
+template <class Integrand>
+double integrate_over_quarter_turn(int points, const Integrand& g) {
+  const QuadratureRule rule = gauss_legendre(points);
+  double integral = 0.0;
+  for (std::size_t q = 0; q < rule.nodes.size(); ++q)
+    integral += 0.25 * pi * rule.weights[q] * g(0.25 * pi * (rule.nodes[q] + 1.0));
+  return integral;
+}
+}  // namespace
+
 double exact_cell_volume(const CellKindConfig& kind) {
   validate_cell_kind(kind);
   switch (kind.shape) {
@@ -405,15 +417,11 @@ double exact_cell_volume(const CellKindConfig& kind) {
       // V = 2 ∫₀^R 2π r z(r) dr; with r = R sin θ, z = ½R cos θ P(sin²θ):
       // V = 2π R³ ∫₀^{π/2} sin θ cos²θ P(sin²θ) dθ (smooth: no √ singularity left).
       const double radius = 0.5 * kind.diameter;
-      const QuadratureRule rule = gauss_legendre(48);
-      double integral = 0.0;
-      for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
-        const double theta = 0.25 * pi * (rule.nodes[q] + 1.0);
+      return 2.0 * integrate_over_quarter_turn(48, [&](double theta) {
         const auto point = rbc_profile_point(theta, radius);
         const double dr_dtheta = radius * std::cos(theta);
-        integral += 0.25 * pi * rule.weights[q] * 2.0 * pi * point[0] * point[1] * dr_dtheta;
-      }
-      return 2.0 * integral;
+        return 2.0 * pi * point[0] * point[1] * dr_dtheta;
+      });
     }
     case CellShape::sphere: {
       const double radius = 0.5 * kind.diameter;
@@ -432,15 +440,11 @@ double exact_cell_area(const CellKindConfig& kind) {
     case CellShape::rbc: {
       // A = 2 ∫₀^{π/2} 2π r(θ) |(r'(θ), z'(θ))| dθ (upper half, doubled).
       const double radius = 0.5 * kind.diameter;
-      const QuadratureRule rule = gauss_legendre(64);
-      double integral = 0.0;
-      for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
-        const double theta = 0.25 * pi * (rule.nodes[q] + 1.0);
+      return 2.0 * integrate_over_quarter_turn(64, [&](double theta) {
         const auto point = rbc_profile_point(theta, radius);
         const auto tangent = rbc_profile_tangent(theta, radius);
-        integral += 0.25 * pi * rule.weights[q] * 2.0 * pi * point[0] * std::hypot(tangent[0], tangent[1]);
-      }
-      return 2.0 * integral;
+        return 2.0 * pi * point[0] * std::hypot(tangent[0], tangent[1]);
+      });
     }
     case CellShape::sphere: {
       const double radius = 0.5 * kind.diameter;

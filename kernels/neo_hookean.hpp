@@ -13,6 +13,7 @@
 #include <Kokkos_Core.hpp>
 #include <cmath>
 
+#include "kernels/launch_tags.hpp"
 #include "kernels/mat3.hpp"
 #include "kernels/tet4.hpp"
 
@@ -64,14 +65,8 @@ struct NeoHookeanMaterial {
   }
 };
 
-// Launch tags: the forces alone (parallel_for), or the forces and the total strain
-// energy Σ V0 W (parallel_reduce into a double), so the energy costs nothing when it is
-// not asked for.
-struct ForcesOnly {};
-struct ForcesAndEnergy {};
-
 // Internal forces of all tetrahedra of all cells, summed into the nodes through a
-// ScatterView.
+// ScatterView; with ForcesAndEnergy also the total strain energy Σ V0 W.
 template <class Scatter>
 struct NeoHookeanForceFunctor {
   Kokkos::View<const double* [3]> positions;                // x (node, 3) [μm]

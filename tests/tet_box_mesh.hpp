@@ -10,14 +10,16 @@
 
 namespace rouleau::testing {
 
-// The box [0, size]³ split into n³ cubes, centred at the origin.
-inline CellMesh tetrahedral_box(int n, double size) {
+// A block of size[0] × size[1] × size[2] split into n[0] × n[1] × n[2] hexahedral cells,
+// centred at the origin.
+inline CellMesh tetrahedral_block(std::array<int, 3> n, std::array<double, 3> size) {
   CellMesh mesh;
-  const double h = size / n;
-  auto id = [n](int i, int j, int k) { return (k * (n + 1) + j) * (n + 1) + i; };
-  for (int k = 0; k <= n; ++k)
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i) mesh.nodes.push_back({i * h - size / 2, j * h - size / 2, k * h - size / 2});
+  auto id = [n](int i, int j, int k) { return (k * (n[1] + 1) + j) * (n[0] + 1) + i; };
+  for (int k = 0; k <= n[2]; ++k)
+    for (int j = 0; j <= n[1]; ++j)
+      for (int i = 0; i <= n[0]; ++i)
+        mesh.nodes.push_back({i * size[0] / n[0] - size[0] / 2, j * size[1] / n[1] - size[1] / 2,
+                              k * size[2] / n[2] - size[2] / 2});
   const int axes_orders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
   auto signed_volume = [&](const std::array<int, 4>& t) {
     double d[3][3];
@@ -26,9 +28,9 @@ inline CellMesh tetrahedral_box(int n, double size) {
     return d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1]) - d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0]) +
            d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
   };
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i)
         for (const auto& order : axes_orders) {
           int step[3] = {i, j, k};
           std::array<int, 4> tet{};
@@ -65,5 +67,8 @@ inline CellMesh tetrahedral_box(int n, double size) {
   }
   return mesh;
 }
+
+// The cube [−size/2, size/2]³ split into n³ cubes.
+inline CellMesh tetrahedral_box(int n, double size) { return tetrahedral_block({n, n, n}, {size, size, size}); }
 
 }  // namespace rouleau::testing

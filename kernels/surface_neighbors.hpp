@@ -1,0 +1,66 @@
+#pragma once
+// Neighbour search between the surface nodes of different cells: a cell list (uniform
+// bins no smaller than the search radius) and a CSR list of the pairs within the radius.
+//
+// Points are binned by b = (i_x, i_y, i_z) = ⌊(x − lower)/bin_size⌋ (clamped to the grid)
+// and sorted by (bin, point index), so every list comes out the same on every run and
+// thread count. The neighbours of point i are the points j of the 27 bins around its own
+// with cell(j) ≠ cell(i) and |x_i − x_j| < radius: all of them (a full list, row i holds
+// each pair once from each side) or only j > i (a half list, each pair once). The lists
+// are built in two passes over the same loop: count, exclusive scan into offsets, fill.
+#include <Kokkos_Core.hpp>
+#include <type_traits>
+
+namespace rouleau {
+
+struct BinGrid {
+  double lower[3];    // [μm]
+  double bin_size;    // [μm], ≥ the search radius
+  int bins[3];        // per direction
+
+  KOKKOS_INLINE_FUNCTION int coordinate(const double x, const int d) const {
+    int i = static_cast<int>(floor((x - lower[d]) / bin_size));
+    return i < 0 ? 0 : (i >= bins[d] ? bins[d] - 1 : i);
+  }
+  KOKKOS_INLINE_FUNCTION int bin_of(const double x[3]) const {
+    return (coordinate(x[2], 2) * bins[1] + coordinate(x[1], 1)) * bins[0] + coordinate(x[0], 0);
+  }
+  int num_bins() const { return bins[0] * bins[1] * bins[2]; }
+};
+
+struct FullList {};
+struct HalfList {};
+
+// Visits the neighbours of point i (List: FullList or HalfList) in a fixed order: the
+// 27 bins around i's in z, y, x order, each bin's points in ascending index.
+template <class List, class PositionView, class PointView, class CellView, class BinView, class Visit>
+KOKKOS_INLINE_FUNCTION void for_each_neighbor(const int i, const BinGrid& grid, const double radius_squared,
+                                              const PositionView& positions, const PointView& point_node,
+                                              const CellView& point_cell, const BinView& bin_offsets,
+                                              const PointView& sorted_points, const Visit& visit) {
+  const int node_i = point_node(i);
+  const double x[3] = {positions(node_i, 0), positions(node_i, 1), positions(node_i, 2)};
+  const int home[3] = {grid.coordinate(x[0], 0), grid.coordinate(x[1], 1), grid.coordinate(x[2], 2)};
+  const int cell_i = point_cell(i);
+  for (int bz = home[2] - 1; bz <= home[2] + 1; ++bz) {
+    if (bz < 0 || bz >= grid.bins[2]) continue;
+    for (int by = home[1] - 1; by <= home[1] + 1; ++by) {
+      if (by < 0 || by >= grid.bins[1]) continue;
+      for (int bx = home[0] - 1; bx <= home[0] + 1; ++bx) {
+        if (bx < 0 || bx >= grid.bins[0]) continue;
+        const int bin = (bz * grid.bins[1] + by) * grid.bins[0] + bx;
+        for (int k = bin_offsets(bin); k < bin_offsets(bin + 1); ++k) {
+          const int j = sorted_points(k);
+          if (point_cell(j) == cell_i) continue;
+          if (std::is_same<List, HalfList>::value && j <= i) continue;
+          const int node_j = point_node(j);
+          const double d0 = x[0] - positions(node_j, 0), d1 = x[1] - positions(node_j, 1),
+                       d2 = x[2] - positions(node_j, 2);
+          if (d0 * d0 + d1 * d1 + d2 * d2 < radius_squared) visit(j);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace rouleau

@@ -1,0 +1,339 @@
+#include "cells/surface_interaction.hpp"
+
+#include <Kokkos_Sort.hpp>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <stdexcept>
+#include <type_traits>
+
+#include "kernels/morse_pairs.hpp"
+#include "kernels/scatter_sum.hpp"
+#include "run/profiling_region.hpp"
+
+namespace rouleau {
+
+template <class ExecSpace>
+BasicSurfaceInteraction<ExecSpace>::BasicSurfaceInteraction(const Population& cells,
+                                                            const std::vector<int>& cell_kind, int num_kinds,
+                                                            const std::vector<MorsePotential>& potentials,
+                                                            double skin, bool half_list)
+    : cells_(cells), num_kinds_(num_kinds), skin_(skin), half_list_(half_list) {
+  if (static_cast<int>(cell_kind.size()) != cells.num_cells())
+    throw std::invalid_argument("rouleau::SurfaceInteraction: one kind per cell expected");
+  if (static_cast<int>(potentials.size()) != num_kinds * num_kinds)
+    throw std::invalid_argument("rouleau::SurfaceInteraction: one potential per pair of kinds expected");
+  if (!(skin > 0.0)) throw std::invalid_argument("rouleau::SurfaceInteraction: the skin must be > 0");
+  ProfilingRegion region("rouleau::SurfaceInteraction::setup");
+  potentials_ = Kokkos::View<MorsePotential**>("rouleau::SurfaceInteraction::potentials", num_kinds, num_kinds);
+  auto host_potentials = Kokkos::create_mirror_view(potentials_);
+  max_cutoff_ = 0.0;
+  for (int a = 0; a < num_kinds; ++a)
+    for (int b = 0; b < num_kinds; ++b) {
+      host_potentials(a, b) = potentials[a * num_kinds + b];
+      max_cutoff_ = std::max(max_cutoff_, potentials[a * num_kinds + b].cutoff);
+    }
+  Kokkos::deep_copy(potentials_, host_potentials);
+  search_radius_ = max_cutoff_ + skin_;
+
+  // The surface points: nodes with an outer-surface area weight, in node order (so each
+  // cell's points are contiguous).
+  auto weights = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.surface_area_weights());
+  auto node_cell = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.node_cell());
+  std::vector<int> nodes;
+  cell_first_point_.assign(cells.num_cells() + 1, 0);
+  for (int n = 0; n < cells.num_nodes(); ++n)
+    if (weights(n) > 0.0) {
+      nodes.push_back(n);
+      ++cell_first_point_[node_cell(n) + 1];
+    }
+  std::partial_sum(cell_first_point_.begin(), cell_first_point_.end(), cell_first_point_.begin());
+  const int n_points = static_cast<int>(nodes.size());
+  point_node_ = Kokkos::View<int*>("rouleau::SurfaceInteraction::point_node", n_points);
+  point_cell_ = Kokkos::View<int*>("rouleau::SurfaceInteraction::point_cell", n_points);
+  point_kind_ = Kokkos::View<int*>("rouleau::SurfaceInteraction::point_kind", n_points);
+  point_weight_ = Kokkos::View<double*>("rouleau::SurfaceInteraction::point_weight", n_points);
+  auto h_node = Kokkos::create_mirror_view(point_node_);
+  auto h_cell = Kokkos::create_mirror_view(point_cell_);
+  auto h_kind = Kokkos::create_mirror_view(point_kind_);
+  auto h_weight = Kokkos::create_mirror_view(point_weight_);
+  for (int i = 0; i < n_points; ++i) {
+    h_node(i) = nodes[i];
+    h_cell(i) = node_cell(nodes[i]);
+    h_kind(i) = cell_kind[h_cell(i)];
+    if (h_kind(i) < 0 || h_kind(i) >= num_kinds)
+      throw std::invalid_argument("rouleau::SurfaceInteraction: a cell kind index out of range");
+    h_weight(i) = weights(nodes[i]);
+  }
+  Kokkos::deep_copy(point_node_, h_node);
+  Kokkos::deep_copy(point_cell_, h_cell);
+  Kokkos::deep_copy(point_kind_, h_kind);
+  Kokkos::deep_copy(point_weight_, h_weight);
+  cell_first_point_device_ = Kokkos::View<int*>("rouleau::SurfaceInteraction::cell_first_point", cells.num_cells() + 1);
+  auto h_first = Kokkos::create_mirror_view(cell_first_point_device_);
+  for (int c = 0; c <= cells.num_cells(); ++c) h_first(c) = cell_first_point_[c];
+  Kokkos::deep_copy(cell_first_point_device_, h_first);
+
+  forces_ = PointVectors("rouleau::SurfaceInteraction::forces", n_points);
+  positions_at_build_ = PointVectors("rouleau::SurfaceInteraction::positions_at_build", n_points);
+  cell_boxes_ = Kokkos::View<double* [6]>("rouleau::SurfaceInteraction::cell_boxes", cells.num_cells());
+  point_active_ = Kokkos::View<int*>("rouleau::SurfaceInteraction::point_active", n_points);
+  neighbor_offsets_ = Kokkos::View<int*>("rouleau::SurfaceInteraction::neighbor_offsets", n_points + 1);
+  neighbors_ = Kokkos::View<int*>("rouleau::SurfaceInteraction::neighbors", 0);
+  if (half_list_) force_scatter_ = Scatter("rouleau::SurfaceInteraction::force_scatter", n_points);
+}
+
+template <class ExecSpace>
+bool BasicSurfaceInteraction<ExecSpace>::list_is_stale() const {
+  if (!built_) return true;
+  // max_i |x_i − x_i(build)|² against (skin/2)²
+  auto positions = cells_.positions();
+  auto point_node = point_node_;
+  auto at_build = positions_at_build_;
+  double largest = 0.0;
+  Kokkos::parallel_reduce(
+      "rouleau::SurfaceInteraction::largest_displacement", Kokkos::RangePolicy<ExecSpace>(0, num_points()),
+      KOKKOS_LAMBDA(const int i, double& value) {
+        double d2 = 0.0;
+        for (int c = 0; c < 3; ++c) {
+          const double d = positions(point_node(i), c) - at_build(i, c);
+          d2 += d * d;
+        }
+        if (d2 > value) value = d2;
+      },
+      Kokkos::Max<double>(largest));
+  return largest > 0.25 * skin_ * skin_;
+}
+
+template <class ExecSpace>
+void BasicSurfaceInteraction<ExecSpace>::rebuild() {
+  ProfilingRegion region("rouleau::SurfaceInteraction::rebuild");
+  const int n_points = num_points();
+  const int n_cells = cells_.num_cells();
+  auto positions = cells_.positions();
+  auto point_node = point_node_;
+  auto point_cell = point_cell_;
+
+  // Broad phase: each cell's bounding box, then the pairs of cells whose boxes grown by
+  // the search radius meet, by sweep and prune along x (sorted by lower x; O(N log N + K)).
+  auto boxes = cell_boxes_;
+  auto first_point = cell_first_point_device_;
+  Kokkos::parallel_for(
+      "rouleau::SurfaceInteraction::cell_boxes", Kokkos::RangePolicy<ExecSpace>(0, n_cells),
+      KOKKOS_LAMBDA(const int c) {
+        double lower[3] = {1e300, 1e300, 1e300}, upper[3] = {-1e300, -1e300, -1e300};
+        for (int i = first_point(c); i < first_point(c + 1); ++i)
+          for (int d = 0; d < 3; ++d) {
+            const double x = positions(point_node(i), d);
+            lower[d] = x < lower[d] ? x : lower[d];
+            upper[d] = x > upper[d] ? x : upper[d];
+          }
+        for (int d = 0; d < 3; ++d) {
+          boxes(c, d) = lower[d];
+          boxes(c, 3 + d) = upper[d];
+        }
+      });
+  auto host_boxes = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cell_boxes_);
+  std::vector<int> order(n_cells);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return host_boxes(a, 0) < host_boxes(b, 0); });
+  std::vector<char> cell_active(n_cells, 0);
+  const double reach = search_radius_;
+  for (int a = 0; a < n_cells; ++a) {
+    const int p = order[a];
+    if (cell_first_point_[p + 1] == cell_first_point_[p]) continue;
+    for (int b = a + 1; b < n_cells; ++b) {
+      const int q = order[b];
+      if (host_boxes(q, 0) > host_boxes(p, 3) + reach) break;
+      bool meet = true;
+      for (int d = 1; d < 3; ++d)
+        meet = meet && host_boxes(q, d) <= host_boxes(p, 3 + d) + reach && host_boxes(p, d) <= host_boxes(q, 3 + d) + reach;
+      if (meet) cell_active[p] = cell_active[q] = 1;
+    }
+  }
+  Kokkos::View<int*> active_cells("rouleau::SurfaceInteraction::cell_active", n_cells);
+  auto host_active = Kokkos::create_mirror_view(active_cells);
+  double lower[3] = {1e300, 1e300, 1e300}, upper[3] = {-1e300, -1e300, -1e300};
+  active_cells_ = 0;
+  for (int c = 0; c < n_cells; ++c) {
+    host_active(c) = cell_active[c];
+    if (!cell_active[c]) continue;
+    ++active_cells_;
+    for (int d = 0; d < 3; ++d) {
+      lower[d] = std::min(lower[d], host_boxes(c, d));
+      upper[d] = std::max(upper[d], host_boxes(c, 3 + d));
+    }
+  }
+  Kokkos::deep_copy(active_cells, host_active);
+  auto point_active = point_active_;
+  Kokkos::parallel_for(
+      "rouleau::SurfaceInteraction::point_active", Kokkos::RangePolicy<ExecSpace>(0, n_points),
+      KOKKOS_LAMBDA(const int i) { point_active(i) = active_cells(point_cell(i)); });
+
+  // The bins: no smaller than the search radius, over the active cells' boxes, at most
+  // about 8 per point.
+  BinGrid grid{};
+  grid.bin_size = search_radius_;
+  if (active_cells_ == 0) {
+    for (int d = 0; d < 3; ++d) lower[d] = upper[d] = 0.0;
+  }
+  double bin_count = 1.0;
+  for (int d = 0; d < 3; ++d) bin_count *= std::max(1.0, std::ceil((upper[d] - lower[d]) / grid.bin_size));
+  const double most_bins = std::max(27.0, 8.0 * n_points);
+  if (bin_count > most_bins) grid.bin_size *= std::cbrt(bin_count / most_bins);
+  for (int d = 0; d < 3; ++d) {
+    grid.lower[d] = lower[d];
+    grid.bins[d] = std::max(1, static_cast<int>(std::ceil((upper[d] - lower[d]) / grid.bin_size)));
+  }
+  grid_ = grid;
+  const int n_bins = grid.num_bins();
+
+  // Active points sorted by (bin, index): key = bin · N + i.
+  Kokkos::View<std::int64_t*> keys("rouleau::SurfaceInteraction::keys", n_points);
+  int n_active = 0;
+  Kokkos::parallel_scan(
+      "rouleau::SurfaceInteraction::bin_keys", Kokkos::RangePolicy<ExecSpace>(0, n_points),
+      KOKKOS_LAMBDA(const int i, int& slot, const bool final) {
+        if (!point_active(i)) return;
+        if (final) {
+          const int node = point_node(i);
+          const double x[3] = {positions(node, 0), positions(node, 1), positions(node, 2)};
+          keys(slot) = static_cast<std::int64_t>(grid.bin_of(x)) * n_points + i;
+        }
+        ++slot;
+      },
+      n_active);
+  keys = Kokkos::subview(keys, std::make_pair(0, n_active));
+  Kokkos::sort(keys);
+  if (static_cast<int>(bin_offsets_.extent(0)) != n_bins + 1)
+    bin_offsets_ = Kokkos::View<int*>("rouleau::SurfaceInteraction::bin_offsets", n_bins + 1);
+  if (static_cast<int>(sorted_points_.extent(0)) < n_active)
+    sorted_points_ = Kokkos::View<int*>("rouleau::SurfaceInteraction::sorted_points", n_active);
+  auto bin_offsets = bin_offsets_;
+  auto sorted_points = sorted_points_;
+  Kokkos::deep_copy(bin_offsets, 0);
+  Kokkos::parallel_for(
+      "rouleau::SurfaceInteraction::bin_counts", Kokkos::RangePolicy<ExecSpace>(0, n_active),
+      KOKKOS_LAMBDA(const int k) {
+        sorted_points(k) = static_cast<int>(keys(k) % n_points);
+        Kokkos::atomic_increment(&bin_offsets(static_cast<int>(keys(k) / n_points) + 1));
+      });
+  Kokkos::parallel_scan(
+      "rouleau::SurfaceInteraction::bin_offsets", Kokkos::RangePolicy<ExecSpace>(0, n_bins + 1),
+      KOKKOS_LAMBDA(const int b, int& sum, const bool final) {
+        sum += bin_offsets(b);
+        if (final) bin_offsets(b) = sum;
+      });
+
+  // The list: count, scan, fill.
+  const double radius_squared = search_radius_ * search_radius_;
+  auto offsets = neighbor_offsets_;
+  const bool half = half_list_;
+  auto count_row = KOKKOS_LAMBDA(const int i, int& count) {
+    auto visit = [&](int) { ++count; };
+    if (half)
+      for_each_neighbor<HalfList>(i, grid, radius_squared, positions, point_node, point_cell, bin_offsets,
+                                  sorted_points, visit);
+    else
+      for_each_neighbor<FullList>(i, grid, radius_squared, positions, point_node, point_cell, bin_offsets,
+                                  sorted_points, visit);
+  };
+  Kokkos::parallel_for(
+      "rouleau::SurfaceInteraction::count_neighbors", Kokkos::RangePolicy<ExecSpace>(0, n_points + 1),
+      KOKKOS_LAMBDA(const int i) {
+        int count = 0;
+        if (i < n_points && point_active(i)) count_row(i, count);
+        offsets(i) = count;
+      });
+  int entries = 0;
+  Kokkos::parallel_scan(
+      "rouleau::SurfaceInteraction::neighbor_offsets", Kokkos::RangePolicy<ExecSpace>(0, n_points + 1),
+      KOKKOS_LAMBDA(const int i, int& sum, const bool final) {
+        const int count = offsets(i);
+        if (final) offsets(i) = sum;
+        sum += count;
+      },
+      entries);
+  list_entries_ = entries;
+  if (static_cast<int>(neighbors_.extent(0)) < entries)
+    neighbors_ = Kokkos::View<int*>("rouleau::SurfaceInteraction::neighbors", entries + entries / 5);
+  auto neighbors = neighbors_;
+  Kokkos::parallel_for(
+      "rouleau::SurfaceInteraction::fill_neighbors", Kokkos::RangePolicy<ExecSpace>(0, n_points),
+      KOKKOS_LAMBDA(const int i) {
+        if (!point_active(i)) return;
+        int slot = offsets(i);
+        auto visit = [&](int j) { neighbors(slot++) = j; };
+        if (half)
+          for_each_neighbor<HalfList>(i, grid, radius_squared, positions, point_node, point_cell, bin_offsets,
+                                      sorted_points, visit);
+        else
+          for_each_neighbor<FullList>(i, grid, radius_squared, positions, point_node, point_cell, bin_offsets,
+                                      sorted_points, visit);
+      });
+
+  auto at_build = positions_at_build_;
+  Kokkos::parallel_for(
+      "rouleau::SurfaceInteraction::positions_at_build", Kokkos::RangePolicy<ExecSpace>(0, n_points),
+      KOKKOS_LAMBDA(const int i) {
+        for (int c = 0; c < 3; ++c) at_build(i, c) = positions(point_node(i), c);
+      });
+  built_ = true;
+  ++rebuilds_;
+}
+
+template <class ExecSpace>
+template <class Tag>
+double BasicSurfaceInteraction<ExecSpace>::run_pair_kernel(const char* label) {
+  if (list_is_stale()) rebuild();
+  ProfilingRegion region("rouleau::SurfaceInteraction::pair_forces");
+  const Kokkos::RangePolicy<ExecSpace, Tag> policy(0, num_points());
+  double energy = 0.0;
+  auto launch = [&](const auto& pairs) {
+    if constexpr (std::is_same_v<Tag, ForcesAndEnergy>)
+      Kokkos::parallel_reduce(label, policy, pairs, energy);
+    else
+      Kokkos::parallel_for(label, policy, pairs);
+  };
+  if (half_list_) {
+    force_scatter_.reset();
+    launch(SurfacePairForceFunctor<HalfList, MorsePotential, Scatter>{
+        cells_.positions(), point_node_, point_weight_, point_kind_, potentials_, neighbor_offsets_, neighbors_,
+        forces_, force_scatter_});
+    gather_into(forces_, force_scatter_);
+  } else {
+    launch(SurfacePairForceFunctor<FullList, MorsePotential, Scatter>{
+        cells_.positions(), point_node_, point_weight_, point_kind_, potentials_, neighbor_offsets_, neighbors_,
+        forces_, force_scatter_});
+  }
+  return energy;
+}
+
+template <class ExecSpace>
+void BasicSurfaceInteraction<ExecSpace>::compute_forces() {
+  run_pair_kernel<ForcesOnly>("rouleau::SurfaceInteraction::pair_forces");
+}
+
+template <class ExecSpace>
+double BasicSurfaceInteraction<ExecSpace>::compute_forces_and_energy() {
+  return run_pair_kernel<ForcesAndEnergy>("rouleau::SurfaceInteraction::pair_forces_and_energy");
+}
+
+#if defined(KOKKOS_ENABLE_CUDA)
+template class BasicSurfaceInteraction<Kokkos::Cuda>;
+#elif defined(KOKKOS_ENABLE_HIP)
+template class BasicSurfaceInteraction<Kokkos::Experimental::HIP>;
+#else
+#if defined(KOKKOS_ENABLE_SERIAL)
+template class BasicSurfaceInteraction<Kokkos::Serial>;
+#endif
+#if defined(KOKKOS_ENABLE_OPENMP)
+template class BasicSurfaceInteraction<Kokkos::OpenMP>;
+#endif
+#if defined(KOKKOS_ENABLE_THREADS)
+template class BasicSurfaceInteraction<Kokkos::Threads>;
+#endif
+#endif
+
+}  // namespace rouleau

@@ -1,0 +1,89 @@
+#pragma once
+// The Morse interaction between the surfaces of different cells (paper eqs. 3, 4, 11) on
+// the device: the surface points (outer-surface nodes with their reference area
+// weights), a broad phase over the cells' bounding boxes, a cell list and a CSR
+// neighbour list with a skin, and the pair forces.
+//
+// The list holds the pairs of points of different cells closer than r_c + skin and is
+// rebuilt only when some point has moved more than skin/2 since the last build (then no
+// pair closer than r_c can be missing). Cells whose bounding boxes, grown by r_c + skin,
+// meet no other cell's are left out of the bins and do no pair work.
+#include <Kokkos_Core.hpp>
+#include <Kokkos_ScatterView.hpp>
+#include <vector>
+
+#include "cells/cell_population.hpp"
+#include "kernels/morse.hpp"
+#include "kernels/surface_neighbors.hpp"
+
+namespace rouleau {
+
+template <class ExecSpace>
+class BasicSurfaceInteraction {
+ public:
+  using Population = BasicCellPopulation<ExecSpace>;
+  using PointVectors = Kokkos::View<double* [3]>;
+
+  // `cell_kind[c]`: the kind index of cell c; `potentials[a * num_kinds + b]`: the law
+  // between kinds a and b (symmetric). `skin` [μm] > 0. `half_list` chooses the pair loop.
+  BasicSurfaceInteraction(const Population& cells, const std::vector<int>& cell_kind, int num_kinds,
+                          const std::vector<MorsePotential>& potentials, double skin, bool half_list = false);
+
+  // forces() = the interaction forces on the surface points at the cells' current
+  // positions (rebuilding the list first when it must).
+  void compute_forces();
+  // The same, returning the interaction energy Σ_pairs w_i w_j φ(r_ij) [pN·μm].
+  double compute_forces_and_energy();
+
+  int num_points() const { return static_cast<int>(point_node_.extent(0)); }
+  // Surface point → node of the population, its area weight, its forces [pN].
+  const Kokkos::View<int*>& point_node() const { return point_node_; }
+  const Kokkos::View<double*>& point_weight() const { return point_weight_; }
+  const PointVectors& forces() const { return forces_; }
+  // The list: CSR rows per surface point (columns are surface points).
+  const Kokkos::View<int*>& neighbor_offsets() const { return neighbor_offsets_; }
+  const Kokkos::View<int*>& neighbors() const { return neighbors_; }
+  int num_list_entries() const { return list_entries_; }
+  int rebuild_count() const { return rebuilds_; }
+  // Cells that take part in pair work after the last broad phase.
+  int active_cell_count() const { return active_cells_; }
+  double search_radius() const { return search_radius_; }
+
+  // Whether some point moved more than skin/2 since the last build (or none was made).
+  bool list_is_stale() const;
+  // Rebuilds the broad phase, the bins and the list at the current positions
+  // (compute_forces() calls it when the list is stale).
+  void rebuild();
+
+ private:
+  template <class Tag>
+  double run_pair_kernel(const char* label);
+
+  const Population& cells_;
+  int num_kinds_;
+  double skin_, max_cutoff_, search_radius_;
+  bool half_list_;
+  Kokkos::View<MorsePotential**> potentials_;
+  Kokkos::View<int*> point_node_, point_cell_, point_kind_;
+  Kokkos::View<double*> point_weight_;
+  std::vector<int> cell_first_point_;            // host: points of cell c are [first[c], first[c+1])
+  Kokkos::View<int*> cell_first_point_device_;
+  PointVectors forces_;
+  PointVectors positions_at_build_;              // (point, 3)
+  Kokkos::View<double* [6]> cell_boxes_;         // (cell, [lower xyz, upper xyz])
+  Kokkos::View<int*> point_active_;              // 1 when the point's cell has a partner
+  Kokkos::View<int*> bin_offsets_, sorted_points_;
+  Kokkos::View<int*> neighbor_offsets_, neighbors_;
+  BinGrid grid_{};
+  int list_entries_ = 0, rebuilds_ = 0, active_cells_ = 0;
+  bool built_ = false;
+  using Scatter = Kokkos::Experimental::ScatterView<double* [3], typename PointVectors::array_layout,
+                                                    typename ExecSpace::device_type>;
+  Scatter force_scatter_;
+};
+
+using SurfaceInteraction = BasicSurfaceInteraction<Kokkos::DefaultExecutionSpace>;
+
+extern template class BasicSurfaceInteraction<Kokkos::DefaultExecutionSpace>;
+
+}  // namespace rouleau

@@ -1,0 +1,326 @@
+// The Morse cell–cell surface interaction (paper eqs. 3, 4, 11): the law, the neighbour
+// list and the pair kernel against a brute-force double loop, Newton's third law, the
+// energy gradient, the plate–plate integral, the skin, and two rigid cells settling at
+// the Morse minimum.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <Kokkos_Core.hpp>
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <random>
+
+#include "cells/cell_population.hpp"
+#include "cells/surface_interaction.hpp"
+#include "kernels/morse.hpp"
+#include "test_helpers.hpp"
+#include "tet_box_mesh.hpp"
+
+namespace rouleau {
+namespace {
+
+// β = 4/μm > ln 2 / r0 (DESIGN: plates then balance at a positive gap).
+MorsePotential test_potential(double well_depth = 1.0) { return {well_depth, 4.0, 0.25, 3.0}; }
+
+template <class View>
+auto host_copy(const View& v) {
+  auto copy = Kokkos::create_mirror(Kokkos::HostSpace(), v);
+  Kokkos::deep_copy(copy, v);
+  return copy;
+}
+
+TEST(MorsePotential, Identities) {
+  // φ(r0) = −De, f(r0) = 0, the strongest attraction −f = βDe/2 at r0 + ln 2/β, f = −φ'.
+  const MorsePotential m{2.5, 4.0, 0.25, 3.0};
+  EXPECT_NEAR(m.energy(0.25), -2.5, 1e-15);
+  EXPECT_NEAR(m.force(0.25), 0.0, 1e-15);
+  const double r_star = 0.25 + std::log(2.0) / 4.0;
+  EXPECT_NEAR(m.force(r_star), -4.0 * 2.5 / 2.0, 1e-14);
+  EXPECT_NEAR((m.force(r_star + 1e-5) - m.force(r_star - 1e-5)) / 2e-5, 0.0, 1e-6);  // an extremum
+  double worst = 0.0;
+  for (double r = 0.05; r < 3.0; r += 0.137) {
+    const double derivative = (m.energy(r + 1e-6) - m.energy(r - 1e-6)) / 2e-6;
+    worst = std::max(worst, std::fabs(m.force(r) + derivative) / (std::fabs(m.force(r)) + 1e-3));
+  }
+  EXPECT_LT(worst, 1e-7);
+}
+
+// Cells made of tetrahedral cubes, placed and randomly turned and jittered.
+struct Scene {
+  std::vector<CellMesh> meshes;
+  std::unique_ptr<CellPopulation> cells;
+
+  Scene(const std::vector<Eigen::Vector3d>& centers, std::uint32_t seed, int n = 4, double size = 2.0) {
+    meshes.assign(centers.size(), testing::tetrahedral_box(n, size));
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> angle(-0.3, 0.3);
+    std::vector<PlacedCell> placed(centers.size());
+    for (std::size_t c = 0; c < centers.size(); ++c) {
+      const Eigen::Matrix3d r = (Eigen::AngleAxisd(angle(rng), Eigen::Vector3d::UnitX()) *
+                                 Eigen::AngleAxisd(angle(rng), Eigen::Vector3d::UnitY()))
+                                    .toRotationMatrix();
+      placed[c].mesh = &meshes[c];
+      for (int i = 0; i < 3; ++i) {
+        placed[c].center[i] = centers[c][i];
+        for (int j = 0; j < 3; ++j) placed[c].rotation[i][j] = r(i, j);
+      }
+    }
+    cells = std::make_unique<CellPopulation>(placed);
+  }
+  void jitter(std::uint32_t seed, double amplitude) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-amplitude, amplitude);
+    auto x = host_copy(cells->positions());
+    for (std::size_t n = 0; n < x.extent(0); ++n)
+      for (int i = 0; i < 3; ++i) x(n, i) += u(rng);
+    Kokkos::deep_copy(cells->positions(), x);
+  }
+};
+
+SurfaceInteraction make_interaction(const CellPopulation& cells, const MorsePotential& potential, double skin,
+                                    bool half_list) {
+  return SurfaceInteraction(cells, std::vector<int>(cells.num_cells(), 0), 1, {potential}, skin, half_list);
+}
+
+// The brute-force reference: every pair of surface points of different cells.
+struct Reference {
+  std::vector<Eigen::Vector3d> forces;
+  double energy = 0.0;
+};
+Reference brute_force(const CellPopulation& cells, const SurfaceInteraction& interaction,
+                      const MorsePotential& potential) {
+  const auto x = host_copy(cells.positions());
+  const auto node = host_copy(interaction.point_node());
+  const auto weight = host_copy(interaction.point_weight());
+  const auto cell = host_copy(cells.node_cell());
+  Reference result;
+  const int n = interaction.num_points();
+  result.forces.assign(n, Eigen::Vector3d::Zero());
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      if (i == j || cell(node(i)) == cell(node(j))) continue;
+      const Eigen::Vector3d d(x(node(i), 0) - x(node(j), 0), x(node(i), 1) - x(node(j), 1),
+                              x(node(i), 2) - x(node(j), 2));
+      const double r = d.norm();
+      if (r >= potential.cutoff) continue;
+      result.forces[i] += weight(i) * weight(j) * potential.force(r) / r * d;
+      if (j > i) result.energy += weight(i) * weight(j) * potential.energy(r);
+    }
+  return result;
+}
+
+double force_difference(const SurfaceInteraction& interaction, const Reference& reference) {
+  const auto f = host_copy(interaction.forces());
+  double error = 0.0, norm = 0.0;
+  for (int i = 0; i < interaction.num_points(); ++i) {
+    error += (Eigen::Vector3d(f(i, 0), f(i, 1), f(i, 2)) - reference.forces[i]).squaredNorm();
+    norm += reference.forces[i].squaredNorm();
+  }
+  return std::sqrt(error / norm);
+}
+
+TEST(SurfaceInteraction, MatchesABruteForceDoubleLoop) {
+  // Four cubes 0.4–1.5 μm apart, turned and jittered, plus one far away; full and half lists.
+  Scene scene({{0, 0, 0}, {2.6, 0.2, 0}, {0.3, 3.4, 0.5}, {2.5, 2.6, -0.2}, {30, 0, 0}}, 3);
+  scene.jitter(5, 0.1);
+  const MorsePotential potential = test_potential();
+  for (const bool half : {false, true}) {
+    SurfaceInteraction interaction = make_interaction(*scene.cells, potential, 0.3, half);
+    const double energy = interaction.compute_forces_and_energy();
+    const Reference reference = brute_force(*scene.cells, interaction, potential);
+    const double difference = force_difference(interaction, reference);
+    std::cout << "  " << (half ? "half" : "full") << " list: " << interaction.num_points() << " surface points, "
+              << interaction.num_list_entries() << " list entries, " << interaction.active_cell_count()
+              << " of 5 cells active; forces vs brute force " << difference << ", energy "
+              << std::fabs(energy / reference.energy - 1.0) << " (relative)\n";
+    EXPECT_LT(difference, 1e-13);
+    EXPECT_NEAR(energy / reference.energy, 1.0, 1e-13);
+    EXPECT_EQ(interaction.active_cell_count(), 4);  // the far cube does no pair work
+  }
+}
+
+TEST(SurfaceInteraction, ObeysNewtonsThirdLaw) {
+  Scene scene({{0, 0, 0}, {2.5, 0.3, 0.1}}, 7);
+  scene.jitter(9, 0.1);
+  SurfaceInteraction interaction = make_interaction(*scene.cells, test_potential(), 0.3, false);
+  interaction.compute_forces();
+  const auto f = host_copy(interaction.forces());
+  const auto node = host_copy(interaction.point_node());
+  const auto cell = host_copy(scene.cells->node_cell());
+  Eigen::Vector3d on_cell[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  double magnitude = 0.0;
+  for (int i = 0; i < interaction.num_points(); ++i) {
+    const Eigen::Vector3d fi(f(i, 0), f(i, 1), f(i, 2));
+    on_cell[cell(node(i))] += fi;
+    magnitude += fi.norm();
+  }
+  std::cout << "  force on cell 0 " << on_cell[0].transpose() << " pN, on cell 1 " << on_cell[1].transpose()
+            << " pN; sum " << (on_cell[0] + on_cell[1]).norm() << " (Σ|f| = " << magnitude << ")\n";
+  EXPECT_GT(on_cell[0].norm(), 1e-3 * magnitude);
+  EXPECT_LT((on_cell[0] + on_cell[1]).norm(), 1e-14 * magnitude);
+}
+
+TEST(SurfaceInteraction, ForcesAreMinusTheGradientOfTheEnergy) {
+  Scene scene({{0, 0, 0}, {2.4, 0.2, 0.1}}, 11);
+  scene.jitter(13, 0.1);
+  SurfaceInteraction interaction = make_interaction(*scene.cells, test_potential(), 0.5, false);
+  interaction.compute_forces();
+  const auto f = host_copy(interaction.forces());
+  const auto node = host_copy(interaction.point_node());
+  const auto x = host_copy(scene.cells->positions());
+  const double step = 1e-6;
+  double error = 0.0, norm = 0.0;
+  for (int i = 0; i < interaction.num_points(); i += 7)
+    for (int c = 0; c < 3; ++c) {
+      double energy[2];
+      for (int side = 0; side < 2; ++side) {
+        auto shifted = host_copy(x);
+        shifted(node(i), c) += side == 0 ? step : -step;
+        Kokkos::deep_copy(scene.cells->positions(), shifted);
+        energy[side] = interaction.compute_forces_and_energy();
+      }
+      const double derivative = -(energy[0] - energy[1]) / (2 * step);
+      error += std::pow(derivative - f(i, c), 2);
+      norm += f(i, c) * f(i, c);
+    }
+  std::cout << "  interaction force vs −∂E/∂x (central differences): relative error " << std::sqrt(error / norm)
+            << "\n";
+  EXPECT_LT(std::sqrt(error / norm), 1e-6);
+}
+
+TEST(SurfaceInteraction, TheSkinChangesOnlyTheRebuildCount) {
+  // The same motion (small random steps) with skins 0.05 and 1 μm: the same forces at
+  // every step, many rebuilds with the thin skin, one with the thick.
+  const MorsePotential potential = test_potential();
+  std::vector<std::vector<double>> forces[2];
+  int rebuilds[2];
+  const double skins[2] = {0.05, 1.0};
+  for (int s = 0; s < 2; ++s) {
+    Scene scene({{0, 0, 0}, {2.6, 0.2, 0}, {0.3, 3.4, 0.5}}, 17);
+    SurfaceInteraction interaction = make_interaction(*scene.cells, potential, skins[s], false);
+    for (int step = 0; step < 10; ++step) {
+      scene.jitter(100 + step, 0.03);
+      interaction.compute_forces();
+      const auto f = host_copy(interaction.forces());
+      forces[s].emplace_back(f.data(), f.data() + f.size());
+    }
+    rebuilds[s] = interaction.rebuild_count();
+  }
+  double worst = 0.0;
+  for (std::size_t step = 0; step < forces[0].size(); ++step)
+    for (std::size_t k = 0; k < forces[0][step].size(); ++k)
+      worst = std::max(worst, std::fabs(forces[0][step][k] - forces[1][step][k]));
+  std::cout << "  rebuilds: skin 0.05 μm " << rebuilds[0] << ", skin 1 μm " << rebuilds[1]
+            << "; largest force difference " << worst << " pN\n";
+  EXPECT_EQ(rebuilds[1], 1);
+  EXPECT_GT(rebuilds[0], 3);
+  EXPECT_LT(worst, 1e-12);
+}
+
+// Two parallel plates (faces of thin blocks) at gap h. The force per area on a point above
+// an infinite plate within the cut-off: p(h) = ∫ f(r) (h/r) dA′ = 2π h ∫_h^{r_c} f(r) dr
+// = 2π h [φ(h) − φ(r_c)] (positive: repulsion).
+double plate_pressure(const MorsePotential& m, double gap) {
+  return 2.0 * M_PI * gap * (m.energy(gap) - m.energy(m.cutoff));
+}
+
+TEST(SurfaceInteraction, PlatesMatchThePlatePlateIntegral) {
+  // Blocks 12 × 12 × 3.5 μm (the far faces beyond the cut-off), facing faces at gap h; the
+  // central node of the lower block's top face: F_z / w against p(h), refined three times.
+  const MorsePotential potential = test_potential();
+  const double gap = 0.5;
+  double previous_error = 1e300;
+  for (const int n : {12, 24, 48}) {
+    const CellMesh block = testing::tetrahedral_block({n, n, 2}, {12.0, 12.0, 3.5});
+    std::vector<PlacedCell> placed(2);
+    for (int c = 0; c < 2; ++c) {
+      placed[c].mesh = &block;
+      placed[c].center = {0.0, 0.0, c == 0 ? -1.75 : 1.75 + gap};
+    }
+    CellPopulation cells(placed);
+    SurfaceInteraction interaction = make_interaction(cells, potential, 0.2, true);
+    interaction.compute_forces();
+    const auto f = host_copy(interaction.forces());
+    const auto node = host_copy(interaction.point_node());
+    const auto w = host_copy(interaction.point_weight());
+    const auto x = host_copy(cells.positions());
+    double pressure = NAN;
+    for (int i = 0; i < interaction.num_points(); ++i)
+      if (std::fabs(x(node(i), 0)) < 1e-9 && std::fabs(x(node(i), 1)) < 1e-9 && std::fabs(x(node(i), 2)) < 1e-9)
+        pressure = -f(i, 2) / w(i);  // the lower plate's point is pushed down (−z) by repulsion
+    const double exact = plate_pressure(potential, gap);
+    const double error = std::fabs(pressure - exact) / std::fabs(exact);
+    std::cout << "  plates at gap " << gap << " μm, node spacing " << 12.0 / n << " μm: pressure " << pressure
+              << " Pa, exact " << exact << " Pa, relative error " << error << "\n";
+    EXPECT_LT(error, previous_error);
+    previous_error = error;
+  }
+  EXPECT_LT(previous_error, 0.01);
+}
+
+TEST(SurfaceInteraction, TwoRigidCellsSettleAtTheMorseMinimum) {
+  // Two blocks face to face (4 × 4 μm faces, nodes 0.25 μm = 1/β apart) moved as rigid
+  // bodies along z by the interaction alone, with an overdamped mobility (Δh = m F_z,
+  // steps of at most 0.02 μm), from 1 μm apart: they settle where the interaction energy
+  // E(h) of the two discrete surfaces has its minimum, found independently by a
+  // golden-section search on E. (Soft Morse repulsion: rigid bodies have that minimum
+  // only near contact of flat faces; the blocks' edges move it from the infinite plates'
+  // h* = r0 − ln 2/β, printed for comparison.)
+  const MorsePotential potential = test_potential();
+  const CellMesh block = testing::tetrahedral_block({16, 16, 2}, {4.0, 4.0, 3.5});
+  std::vector<PlacedCell> placed(2);
+  const double start_gap = 1.0;
+  for (int c = 0; c < 2; ++c) {
+    placed[c].mesh = &block;
+    placed[c].center = {0.0, 0.0, c == 0 ? -1.75 : 1.75 + start_gap};
+  }
+  CellPopulation cells(placed);
+  SurfaceInteraction interaction = make_interaction(cells, potential, 0.3, true);
+  const auto node = host_copy(interaction.point_node());
+  const auto cell = host_copy(cells.node_cell());
+  const auto reference = host_copy(cells.reference_positions());
+  // Places the upper block at gap h; returns E, and F_z on the upper block.
+  auto place = [&](double gap, double& force_on_upper) {
+    auto x = host_copy(reference);
+    for (std::size_t n = 0; n < x.extent(0); ++n)
+      if (cell(n) == 1) x(n, 2) += gap - start_gap;
+    Kokkos::deep_copy(cells.positions(), x);
+    const double energy = interaction.compute_forces_and_energy();
+    const auto f = host_copy(interaction.forces());
+    force_on_upper = 0.0;
+    for (int i = 0; i < interaction.num_points(); ++i)
+      if (cell(node(i)) == 1) force_on_upper += f(i, 2);
+    return energy;
+  };
+  // Stable while mobility × the contact stiffness (≈ 600 pN/μm here) stays below 2.
+  const double mobility = 5e-4;  // [μm/pN]
+  double gap = start_gap, force = 0.0;
+  int iterations = 0;
+  for (; iterations < 1000; ++iterations) {
+    place(gap, force);
+    const double step = std::clamp(mobility * force, -0.02, 0.02);
+    gap += step;
+    if (std::fabs(step) < 1e-10) break;
+  }
+  double low = 0.02, high = 0.5, unused = 0.0;
+  const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
+  for (int k = 0; k < 60; ++k) {
+    const double a = high - golden * (high - low), b = low + golden * (high - low);
+    if (place(a, unused) < place(b, unused))
+      high = b;
+    else
+      low = a;
+  }
+  const double least_energy_gap = 0.5 * (low + high);
+  std::cout << "  two rigid blocks settle at a gap of " << gap << " μm after " << iterations
+            << " steps; least interaction energy at " << least_energy_gap << " μm (infinite plates: r0 − ln2/β = "
+            << 0.25 - std::log(2.0) / 4.0 << " μm); " << interaction.rebuild_count() << " list rebuilds\n";
+  EXPECT_LT(iterations, 1000);
+  EXPECT_NEAR(gap, least_energy_gap, 1e-5);
+  EXPECT_GT(gap, 0.0);
+  EXPECT_LT(gap, potential.zero_force_length);
+}
+
+}  // namespace
+}  // namespace rouleau

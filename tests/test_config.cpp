@@ -113,6 +113,7 @@ void expect_identical_cases(const CaseConfig& a, const CaseConfig& b) {
     EXPECT_EQ(first.bulk_modulus, second.bulk_modulus);
     EXPECT_EQ(first.poisson_ratio, second.poisson_ratio);
     EXPECT_EQ(first.density, second.density);
+    EXPECT_EQ(first.morse_well_depth_factor, second.morse_well_depth_factor);
   }
   ASSERT_EQ(a.cells.size(), b.cells.size());
   for (std::size_t i = 0; i < a.cells.size(); ++i) {
@@ -120,6 +121,22 @@ void expect_identical_cases(const CaseConfig& a, const CaseConfig& b) {
     EXPECT_EQ(a.cells[i].kind, b.cells[i].kind);
     EXPECT_EQ(a.cells[i].center, b.cells[i].center);
     EXPECT_EQ(a.cells[i].orientation, b.cells[i].orientation);
+  }
+  const auto expect_same_morse = [](const rouleau::MorseConfig& x, const rouleau::MorseConfig& y) {
+    EXPECT_EQ(x.well_depth, y.well_depth);
+    EXPECT_EQ(x.beta, y.beta);
+    EXPECT_EQ(x.zero_force_length, y.zero_force_length);
+    EXPECT_EQ(x.cutoff, y.cutoff);
+  };
+  EXPECT_EQ(a.interaction.enabled, b.interaction.enabled);
+  EXPECT_EQ(a.interaction.strength, b.interaction.strength);
+  EXPECT_EQ(a.interaction.skin, b.interaction.skin);
+  expect_same_morse(a.interaction.morse, b.interaction.morse);
+  ASSERT_EQ(a.interaction.pairs.size(), b.interaction.pairs.size());
+  for (std::size_t i = 0; i < a.interaction.pairs.size(); ++i) {
+    EXPECT_EQ(a.interaction.pairs[i].kind_a, b.interaction.pairs[i].kind_a);
+    EXPECT_EQ(a.interaction.pairs[i].kind_b, b.interaction.pairs[i].kind_b);
+    expect_same_morse(a.interaction.pairs[i].morse, b.interaction.pairs[i].morse);
   }
 }
 
@@ -495,6 +512,25 @@ TEST(ConfigCells, OverridesReachKindsAndCells) {
   EXPECT_EQ(entry_error.key(), "cells[1].kind");
 }
 
+TEST(ConfigInteraction, DefaultsGiveTheStatedAdhesionEnergy) {
+  // The default De makes flat faces at their balance gap h* = r0 − ln 2/β hold with an
+  // adhesion energy −2π ∫_{h*}^{r_c} φ(r) r dr = 5 μJ/m² = 5 pN/μm (midpoint rule).
+  const rouleau::MorseConfig m;
+  const double gap = m.zero_force_length - std::log(2.0) / m.beta;
+  const int n = 200000;
+  double integral = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const double r = gap + (k + 0.5) * (m.cutoff - gap) / n;
+    const double e = std::exp(m.beta * (m.zero_force_length - r));
+    integral += m.well_depth * (e * e - 2.0 * e) * r * (m.cutoff - gap) / n;
+  }
+  std::printf("adhesion energy of the default Morse law: %.4f pN/um (uJ/m^2)\n", -2.0 * M_PI * integral);
+  EXPECT_NEAR(-2.0 * M_PI * integral, 5.0, 0.01);
+  const auto kinds = rouleau::builtin_cell_kinds();
+  EXPECT_EQ(kinds[0].morse_well_depth_factor, 1.0);
+  EXPECT_EQ(kinds[1].morse_well_depth_factor, 5.0);  // sickle: stickier
+}
+
 TEST(ConfigResolved, RoundTripGivesAnIdenticalCase) {
   const std::vector<std::vector<std::string>> variants{
       {},
@@ -509,7 +545,10 @@ TEST(ConfigResolved, RoundTripGivesAnIdenticalCase) {
        "cell_kinds.stiff-1={body=\"filled\", shape=\"sickle\", shear_modulus_Pa=51.3, bulk_modulus_Pa=903.7}",
        "cell_kinds.ball={shape=\"sphere\", diameter_um=4.1, mesh_size_um=0.35, bulk_modulus_Pa=77.7}",
        "cells=[{kind=\"sickle\", center_um=[10.1, 0, 10], orientation_deg=[0, 0, 33.3]},"
-       " {center_um=[30, 0.7, 10]}, {kind=\"stiff-1\", center_um=[20, -3, 10]}, {kind=\"ball\", center_um=[3, 2, 3]}]"},
+       " {center_um=[30, 0.7, 10]}, {kind=\"stiff-1\", center_um=[20, -3, 10]}, {kind=\"ball\", center_um=[3, 2, 3]}]",
+       "interaction.enabled=true", "interaction.strength_multiplier=5", "interaction.beta_per_um=3.7",
+       "interaction.pair=[{kind_a=\"sickle\", kind_b=\"ball\", well_depth_pN_um3=17.1, cutoff_um=2.2}]",
+       "cell_kinds.ball.morse_well_depth_factor=0.3"},
   };
   for (const auto& overrides : variants) {
     const CaseConfig original = rouleau::load_case(good_case, overrides);

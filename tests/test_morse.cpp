@@ -12,7 +12,9 @@
 #include <random>
 
 #include "cells/cell_population.hpp"
+#include "cells/cells_from_case.hpp"
 #include "cells/surface_interaction.hpp"
+#include "config/cell_kinds.hpp"
 #include "kernels/morse.hpp"
 #include "test_helpers.hpp"
 #include "tet_box_mesh.hpp"
@@ -44,6 +46,27 @@ TEST(MorsePotential, Identities) {
     worst = std::max(worst, std::fabs(m.force(r) + derivative) / (std::fabs(m.force(r)) + 1e-3));
   }
   EXPECT_LT(worst, 1e-7);
+}
+
+TEST(MorsePotential, CaseLawsMixTheKindsFactorsAndTakeThePairEntries) {
+  // normal (factor 1), sickle (5), capsule (1); strength 2; capsule–capsule set apart.
+  CaseConfig config;
+  config.cell_kinds = builtin_cell_kinds();
+  config.interaction.strength = 2.0;
+  MorsePairConfig pair;
+  pair.kind_a = pair.kind_b = "capsule";
+  pair.morse = {7.0, 5.0, 0.3, 2.0};
+  config.interaction.pairs.push_back(pair);
+  const std::vector<MorsePotential> laws = case_morse_potentials(config);
+  const double de = config.interaction.morse.well_depth;
+  ASSERT_EQ(laws.size(), 9u);
+  EXPECT_DOUBLE_EQ(laws[0 * 3 + 0].well_depth, 2.0 * de);                  // normal–normal
+  EXPECT_DOUBLE_EQ(laws[1 * 3 + 1].well_depth, 2.0 * 5.0 * de);            // sickle–sickle
+  EXPECT_DOUBLE_EQ(laws[0 * 3 + 1].well_depth, 2.0 * std::sqrt(5.0) * de);  // normal–sickle
+  EXPECT_DOUBLE_EQ(laws[1 * 3 + 0].well_depth, laws[0 * 3 + 1].well_depth);
+  EXPECT_DOUBLE_EQ(laws[2 * 3 + 2].well_depth, 14.0);                       // the pair entry, × strength
+  EXPECT_DOUBLE_EQ(laws[2 * 3 + 2].beta, 5.0);
+  EXPECT_DOUBLE_EQ(laws[2 * 3 + 2].cutoff, 2.0);
 }
 
 // Cells made of tetrahedral cubes, placed and randomly turned and jittered.

@@ -60,12 +60,18 @@ TEST(RunCase, CellsAreWrittenInPlaceBesideTheFluid) {
   std::string coarse;
   for (const char* kind : {"normal", "normal_filled", "sickle", "capsule"})
     coarse += std::string(" --set cell_kinds.") + kind + ".resolution=coarse";
-  const Outcome o = run_rouleau("run " + cases_dir + "/cell_gallery/case.toml --no-progress --out " + out + coarse);
+  const Outcome o = run_rouleau("run " + cases_dir + "/cell_gallery/case.toml --no-progress --out " + out + coarse +
+                                " --set interaction.enabled=true");
   ::unsetenv("ROULEAU_MESH_CACHE");
   ASSERT_EQ(o.exit_code, 0) << o.err;
   const std::string xdmf = file_contents(out + "/fields.xdmf");
   EXPECT_NE(xdmf.find("Name=\"cells\""), std::string::npos);
   EXPECT_NE(xdmf.find("internal_force_pN"), std::string::npos);
+  EXPECT_NE(xdmf.find("interaction_force_pN"), std::string::npos);
+  // The gallery's cells are more than the 3 μm cut-off apart: no interaction force at all.
+  const Dataset interaction = read_dataset(out + "/fields_000002.h5", "/cells/interaction_force_pN", false);
+  ASSERT_FALSE(interaction.doubles.empty());
+  for (const double f : interaction.doubles) ASSERT_EQ(f, 0.0);
   const Dataset ids = read_dataset(out + "/fields_000002.h5", "/cells/cell_id", false);
   const Dataset x = read_dataset(out + "/fields_000002.h5", "/cells/coordinates", false);
   const Dataset tets = read_dataset(out + "/fields_mesh.h5", "/cells/connectivity", true);

@@ -1,5 +1,6 @@
 #include "cells/cells_from_case.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "config/cell_kinds.hpp"
@@ -7,10 +8,31 @@
 
 namespace rouleau {
 
+std::vector<MorsePotential> case_morse_potentials(const CaseConfig& config) {
+  const InteractionConfig& interaction = config.interaction;
+  const std::size_t n = config.cell_kinds.size();
+  std::vector<MorsePotential> potentials(n * n);
+  auto potential_of = [&](const MorseConfig& morse, double well_depth) {
+    return MorsePotential{interaction.strength * well_depth, morse.beta, morse.zero_force_length, morse.cutoff};
+  };
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = 0; b < n; ++b) {
+      const CellKindConfig &kind_a = config.cell_kinds[a], &kind_b = config.cell_kinds[b];
+      const double factor = std::sqrt(kind_a.morse_well_depth_factor * kind_b.morse_well_depth_factor);
+      potentials[a * n + b] = potential_of(interaction.morse, factor * interaction.morse.well_depth);
+      for (const MorsePairConfig& pair : interaction.pairs)
+        if ((pair.kind_a == kind_a.name && pair.kind_b == kind_b.name) ||
+            (pair.kind_a == kind_b.name && pair.kind_b == kind_a.name))
+          potentials[a * n + b] = potential_of(pair.morse, pair.morse.well_depth);
+    }
+  return potentials;
+}
+
 CaseCells make_case_cells(const CaseConfig& config, const std::string& mesh_cache_dir) {
   CaseCells result;
   if (config.cells.empty()) return result;
   std::vector<PlacedCell> placed;
+  std::vector<int> cell_kind;
   for (const CellPlacement& placement : config.cells) {
     const CellKindConfig* kind = find_cell_kind(config, placement.kind);
     if (!kind) throw std::logic_error("rouleau::make_case_cells: unknown cell kind " + placement.kind);
@@ -23,8 +45,13 @@ CaseCells make_case_cells(const CaseConfig& config, const std::string& mesh_cach
     cell.material = NeoHookeanMaterial::from_moduli(kind->shear_modulus, kind->bulk_modulus);
     cell.kind = static_cast<int>(kind - config.cell_kinds.data());
     placed.push_back(cell);
+    cell_kind.push_back(cell.kind);
   }
   result.population = std::make_unique<CellPopulation>(placed);
+  if (config.interaction.enabled)
+    result.interaction = std::make_unique<SurfaceInteraction>(
+        *result.population, cell_kind, static_cast<int>(config.cell_kinds.size()), case_morse_potentials(config),
+        config.interaction.skin);
   return result;
 }
 

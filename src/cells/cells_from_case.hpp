@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cells/cell_population.hpp"
+#include "cells/surface_interaction.hpp"
 #include "config/case_config.hpp"
 #include "geometry/cell_mesh.hpp"
 
@@ -15,11 +16,18 @@ namespace rouleau {
 struct CaseCells {
   std::map<std::string, CellMesh> meshes;  // per kind used, by kind name
   std::unique_ptr<CellPopulation> population;
+  std::unique_ptr<SurfaceInteraction> interaction;  // when [interaction] is enabled
 };
 
-// Meshes every kind the case's cells use (from `mesh_cache_dir`) and places the cells.
-// The case must have passed check_cell_placement(). Returns an empty population pointer
-// when the case has no cells.
+// The Morse law between every pair of the case's kinds, potentials[a * n + b] for kinds
+// a, b (indices into config.cell_kinds): an [[interaction.pair]] entry's law when there is
+// one, else [interaction]'s with De √(f_a f_b) (the kinds' morse_well_depth_factor); every
+// De times strength_multiplier.
+std::vector<MorsePotential> case_morse_potentials(const CaseConfig& config);
+
+// Meshes every kind the case's cells use (from `mesh_cache_dir`), places the cells, and
+// builds their interaction when it is enabled. The case must have passed
+// check_cell_placement(). Returns empty pointers when the case has no cells.
 CaseCells make_case_cells(const CaseConfig& config, const std::string& mesh_cache_dir);
 
 }  // namespace rouleau

@@ -320,6 +320,18 @@ double BasicSurfaceInteraction<ExecSpace>::compute_forces_and_energy() {
   return run_pair_kernel<ForcesAndEnergy>("rouleau::SurfaceInteraction::pair_forces_and_energy");
 }
 
+template <class ExecSpace>
+void BasicSurfaceInteraction<ExecSpace>::copy_forces_to_nodes(const PointVectors& node_forces) const {
+  Kokkos::deep_copy(node_forces, 0.0);
+  auto point_node = point_node_;
+  auto forces = forces_;
+  Kokkos::parallel_for(
+      "rouleau::SurfaceInteraction::copy_forces_to_nodes", Kokkos::RangePolicy<ExecSpace>(0, num_points()),
+      KOKKOS_LAMBDA(const int i) {
+        for (int c = 0; c < 3; ++c) node_forces(point_node(i), c) = forces(i, c);
+      });
+}
+
 #if defined(KOKKOS_ENABLE_CUDA)
 template class BasicSurfaceInteraction<Kokkos::Cuda>;
 #elif defined(KOKKOS_ENABLE_HIP)

@@ -40,6 +40,9 @@ class BasicSurfaceInteraction {
   const Kokkos::View<int*>& point_node() const { return point_node_; }
   const Kokkos::View<double*>& point_weight() const { return point_weight_; }
   const PointVectors& forces() const { return forces_; }
+  // node_forces(n) = the interaction force on node n of the population (zero off the
+  // outer surfaces), from the last compute_forces().
+  void copy_forces_to_nodes(const PointVectors& node_forces) const;
   // The list: CSR rows per surface point (columns are surface points).
   const Kokkos::View<int*>& neighbor_offsets() const { return neighbor_offsets_; }
   const Kokkos::View<int*>& neighbors() const { return neighbors_; }

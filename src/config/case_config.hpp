@@ -120,6 +120,10 @@ struct CellKindConfig {
   double bulk_modulus = 0.0;          // K [Pa]; set from poisson_ratio when not given
   double poisson_ratio = 0.45;        // ν, the one that gives K from G (reported)
   double density = 1.1e-9;            // [pN·s²/μm⁴]   key density_kg_m3 (RBC: 1100 kg/m³)
+  // The Morse well depth of this kind relative to [interaction]'s: the depth between
+  // kinds a and b is De √(f_a f_b) unless an [[interaction.pair]] sets it (sickle: 5,
+  // "stickier", DESIGN.md).                                  key morse_well_depth_factor
+  double morse_well_depth_factor = 1.0;
 };
 
 // One cell placed in the domain.
@@ -131,6 +135,34 @@ struct CellPlacement {
   // toward −y): rotations about the fixed x, then y, then z axes, in degrees.
   //                                                          key orientation_deg
   std::array<double, 3> orientation{0.0, 0.0, 0.0};
+};
+
+// ---- cell–cell interaction (paper eqs. 3, 4, 11)
+
+// The Morse law φ(r) = De [e^{2β(r0−r)} − 2 e^{β(r0−r)}] between two surfaces' points,
+// an energy per area per area. Defaults: r0 and the cut-off are the paper's; β = 4/μm
+// (> ln 2 / r0, so that flat faces balance at a positive gap h* = r0 − ln 2/β = 0.077 μm);
+// De gives flat faces an adhesion energy of 5 μJ/m² = 5 pN/μm at h* (the middle of Neu &
+// Meiselman's 1–10 μJ/m² for depletion-mediated aggregation): −2π∫_{h*}^{r_c} φ r dr.
+struct MorseConfig {
+  double well_depth = 3.5238;        // De [pN/μm³ = pN·μm/μm⁴]   key well_depth_pN_um3
+  double beta = 4.0;                 // β [1/μm]                  key beta_per_um
+  double zero_force_length = 0.25;   // r0 [μm]                   key zero_force_length_um
+  double cutoff = 3.0;               // [μm]                      key cutoff_um
+};
+
+// The law between one pair of kinds, replacing the mixed default.
+struct MorsePairConfig {
+  std::string kind_a, kind_b;  // keys kind_a, kind_b: [cell_kinds] names
+  MorseConfig morse;           // the [interaction] values, changed by the entry's keys
+};
+
+struct InteractionConfig {
+  bool enabled = false;          // key enabled: the Morse stage runs (cells needed)
+  MorseConfig morse;             // every pair of kinds, De scaled by the kinds' factors
+  double strength = 1.0;         // key strength_multiplier: multiplies every De (the paper: 5 in its two-cell scene)
+  double skin = 0.3;             // [μm] neighbour-list skin   key skin_um
+  std::vector<MorsePairConfig> pairs;  // [[interaction.pair]]
 };
 
 struct OutputConfig {
@@ -151,6 +183,7 @@ struct CaseConfig {
   OutputConfig output;
   std::vector<CellKindConfig> cell_kinds;  // [cell_kinds.NAME]: the built-in kinds, changed or added to
   std::vector<CellPlacement> cells;        // [[cells]]: empty = fluid only
+  InteractionConfig interaction;           // [interaction]
 };
 
 // Values derived from a case (written to the resolved configuration).

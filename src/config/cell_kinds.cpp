@@ -31,12 +31,14 @@ std::vector<CellKindConfig> builtin_cell_kinds() {
   normal.diameter = rbc_diameter;
 
   // Sickle cell: an ellipsoid 14 × 4.2 × 3.0 μm bent along an 8 μm arc (a crescent of
-  // about the normal cell's volume), ten times stiffer (DESIGN.md, Decisions → Cells).
+  // about the normal cell's volume), ten times stiffer and five times stickier (DESIGN.md,
+  // Decisions → Cells).
   CellKindConfig sickle = membrane_cell("sickle", CellShape::sickle, sickle_stiffness_factor);
   sickle.length = 14.0;
   sickle.width = 4.2;
   sickle.thickness = 3.0;
   sickle.arc_radius = 8.0;
+  sickle.morse_well_depth_factor = sickle_morse_well_depth_factor;
 
   // Capsule: a sphere with the normal RBC's volume (94.1 μm³) and membrane.
   CellKindConfig capsule = membrane_cell("capsule", CellShape::sphere, 1.0);

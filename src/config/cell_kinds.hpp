@@ -34,6 +34,9 @@ inline constexpr double rbc_diameter = 7.82;  // [μm]
 // Thickness of the Evans–Fung disc on its axis per unit diameter: 2 R y(0) / D = a0 / 2
 // with a0 = 0.207 (0.81 μm for D = 7.82 μm), its thinnest place away from the rim.
 inline constexpr double rbc_centre_thickness_per_diameter = 0.207 / 2.0;
+// Sickle cells are "stickier": their Morse well depth is 5 times the normal cells'
+// (DESIGN.md, Decisions → Cells); between a sickle and a normal cell √5 times.
+inline constexpr double sickle_morse_well_depth_factor = 5.0;
 // Diameter of the sphere with the normal RBC's volume, (6 · 94.1 / π)^(1/3) = 5.64 μm.
 inline constexpr double capsule_diameter = 5.64;  // [μm]
 // A sickle cell's shear modulus relative to a normal cell's (DESIGN.md, Decisions → Cells).

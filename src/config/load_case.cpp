@@ -565,7 +565,7 @@ void read_output(const TableReader& root, OutputConfig& output) {
 const std::vector<std::string_view> cell_kind_keys{
     "shape", "body", "diameter_um", "length_um", "width_um", "thickness_um", "arc_radius_um",
     "shell_thickness_um", "resolution", "mesh_size_um", "shear_modulus_Pa", "membrane_shear_modulus_pN_um",
-    "bulk_modulus_Pa", "poisson_ratio", "density_kg_m3"};
+    "bulk_modulus_Pa", "poisson_ratio", "density_kg_m3", "morse_well_depth_factor"};
 // The keys that apply to a shell body only.
 const std::vector<std::string_view> shell_body_keys{"shell_thickness_um", "membrane_shear_modulus_pN_um"};
 
@@ -676,6 +676,7 @@ void read_cell_kind(const TableReader& reader, CellKindConfig& kind) {
   assign(kind.mesh_size, reader.number("mesh_size_um", Range::at_least(0)));
   read_cell_moduli(reader, kind);
   assign(kind.density, read_density(reader));
+  assign(kind.morse_well_depth_factor, reader.number("morse_well_depth_factor", Range::at_least(0)));
   check_cell_body(reader, kind);
 }
 
@@ -707,6 +708,57 @@ void read_cells(const TableReader& root, CaseConfig& config) {
     assign(cell.orientation, entry.number3("orientation_deg"));
     config.cells.push_back(cell);
   }
+}
+
+// ---- cell–cell interaction
+
+const std::vector<std::string_view> morse_keys{"well_depth_pN_um3", "beta_per_um", "zero_force_length_um",
+                                               "cutoff_um"};
+
+// The Morse keys of `reader` over `morse`; β must exceed ln 2 / r0 (flat faces then balance
+// at a positive gap, DESIGN.md) and the cut-off r0.
+void read_morse(const TableReader& reader, MorseConfig& morse) {
+  assign(morse.well_depth, reader.number("well_depth_pN_um3", Range::at_least(0)));
+  assign(morse.beta, reader.number("beta_per_um", Range::above(0)));
+  assign(morse.zero_force_length, reader.number("zero_force_length_um", Range::above(0)));
+  assign(morse.cutoff, reader.number("cutoff_um", Range::above(0)));
+  const double least_beta = std::log(2.0) / morse.zero_force_length;
+  if (!(morse.beta > least_beta))
+    reader.fail(reader.has("beta_per_um") ? "beta_per_um" : "zero_force_length_um",
+                "β must be > ln 2 / r0 = " + format_number(least_beta) + " /μm (else flat faces pull into contact); got β = " +
+                    format_number(morse.beta) + " /μm, r0 = " + format_number(morse.zero_force_length) + " μm");
+  if (!(morse.cutoff > morse.zero_force_length))
+    reader.fail("cutoff_um", "must be > zero_force_length_um (" + format_number(morse.zero_force_length) + "), got " +
+                                 format_number(morse.cutoff));
+}
+
+void read_interaction(const TableReader& root, CaseConfig& config) {
+  std::vector<std::string_view> keys{"enabled", "strength_multiplier", "skin_um", "pair"};
+  keys.insert(keys.end(), morse_keys.begin(), morse_keys.end());
+  const TableReader section = root.table("interaction", keys);
+  InteractionConfig& interaction = config.interaction;
+  assign(interaction.enabled, section.boolean("enabled"));
+  assign(interaction.strength, section.number("strength_multiplier", Range::at_least(0)));
+  assign(interaction.skin, section.number("skin_um", Range::above(0)));
+  read_morse(section, interaction.morse);
+  std::vector<std::pair<std::string_view, std::string>> kind_names;
+  for (const CellKindConfig& kind : config.cell_kinds) kind_names.emplace_back(kind.name, kind.name);
+  std::vector<std::string_view> pair_keys{"kind_a", "kind_b"};
+  pair_keys.insert(pair_keys.end(), morse_keys.begin(), morse_keys.end());
+  for (const TableReader& entry : section.array_of_tables("pair", pair_keys)) {
+    MorsePairConfig pair;
+    pair.kind_a = require(entry, "kind_a", entry.choice("kind_a", kind_names));
+    pair.kind_b = require(entry, "kind_b", entry.choice("kind_b", kind_names));
+    pair.morse = interaction.morse;
+    read_morse(entry, pair.morse);
+    for (const MorsePairConfig& other : interaction.pairs)
+      if ((other.kind_a == pair.kind_a && other.kind_b == pair.kind_b) ||
+          (other.kind_a == pair.kind_b && other.kind_b == pair.kind_a))
+        entry.fail("kind_b", "the pair " + pair.kind_a + "–" + pair.kind_b + " is given twice");
+    interaction.pairs.push_back(pair);
+  }
+  if (interaction.enabled && config.cells.empty())
+    section.fail("enabled", "the interaction acts between cells, and the case has no [[cells]]");
 }
 
 }  // namespace
@@ -771,7 +823,7 @@ CaseConfig load_case(const std::string& path, const std::vector<std::string>& ov
   // [derived] is written by resolved_case_toml() for the reader; it is output-only.
   const TableReader root(&document, "", errors,
                          {"case", "fluid", "domain", "boundary", "time", "solver", "scales", "output",
-                          "cell_kinds", "cells", "derived"});
+                          "cell_kinds", "cells", "interaction", "derived"});
   CaseConfig config;
   config.source_file = path;
   read_case_section(root, path, config);
@@ -784,6 +836,7 @@ CaseConfig load_case(const std::string& path, const std::vector<std::string>& ov
   read_output(root, config.output);
   read_cell_kinds(root, config.cell_kinds);
   read_cells(root, config);
+  read_interaction(root, config);
   // The cells against the domain and each other (exact shapes, before any meshing).
   check_cell_placement(config);
   return config;

@@ -108,6 +108,14 @@ void write_cell_kind(TomlWriter& toml_file, const CellKindConfig& kind) {
   else
     toml_file.key("bulk_modulus_Pa", kind.bulk_modulus, "ν = (3K−2G)/(2(3K+G)) = " + toml_float(kind.poisson_ratio));
   toml_file.key("density_kg_m3", density_in_file_units(kind.density));
+  toml_file.key("morse_well_depth_factor", kind.morse_well_depth_factor);
+}
+
+void write_morse(TomlWriter& toml_file, const MorseConfig& morse) {
+  toml_file.key("well_depth_pN_um3", morse.well_depth);
+  toml_file.key("beta_per_um", morse.beta);
+  toml_file.key("zero_force_length_um", morse.zero_force_length);
+  toml_file.key("cutoff_um", morse.cutoff);
 }
 
 }  // namespace
@@ -189,6 +197,19 @@ std::string resolved_case_toml(const CaseConfig& config, const DerivedQuantities
     toml_file.key("kind", cell.kind);
     toml_file.key("center_um", cell.center);
     toml_file.key("orientation_deg", cell.orientation);
+  }
+
+  const InteractionConfig& interaction = config.interaction;
+  toml_file.table("interaction");
+  toml_file.key("enabled", interaction.enabled);
+  toml_file.key("strength_multiplier", interaction.strength);
+  toml_file.key("skin_um", interaction.skin);
+  write_morse(toml_file, interaction.morse);
+  for (const MorsePairConfig& pair : interaction.pairs) {
+    toml_file.array_table_entry("interaction.pair");
+    toml_file.key("kind_a", pair.kind_a);
+    toml_file.key("kind_b", pair.kind_b);
+    write_morse(toml_file, pair.morse);
   }
 
   toml_file.table("derived", "Output only: derived from the keys above; ignored when this file is loaded.");

@@ -191,6 +191,14 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
 
   std::vector<double> velocity, pressure;
   CellPopulation::HostFields cell_fields;
+  // The interaction forces per cell node (device, and a node-major host copy for output).
+  CellPopulation::NodeVectors node_interaction_forces;
+  Kokkos::View<double* [3], Kokkos::LayoutRight, Kokkos::HostSpace> host_interaction_forces;
+  if (cells.interaction) {
+    node_interaction_forces = CellPopulation::NodeVectors("rouleau::run::interaction_forces", cells.population->num_nodes());
+    host_interaction_forces = decltype(host_interaction_forces)("rouleau::run::interaction_forces_host",
+                                                                cells.population->num_nodes());
+  }
   auto write_fields = [&](int step) {
     if (!fields) return;
     times.time("output", [&] {
@@ -205,6 +213,12 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
                          FieldView{"velocity_um_s", 3, cell_fields.velocity.data()},
                          FieldView{"internal_force_pN", 3, cell_fields.internal_force.data()},
                          FieldView{"cell_id", 1, cell_fields.cell_id.data()}});
+        if (cells.interaction) {
+          cells.interaction->compute_forces();
+          cells.interaction->copy_forces_to_nodes(node_interaction_forces);
+          Kokkos::deep_copy(host_interaction_forces, node_interaction_forces);
+          nodal.back().push_back(FieldView{"interaction_force_pN", 3, host_interaction_forces.data()});
+        }
         moved.push_back(cell_fields.positions.data());
       }
       fields->write_step(step, solver->time(), nodal, {}, moved);

@@ -53,7 +53,19 @@ std::vector<Stage> plan_stages(const CaseConfig& config, const DerivedQuantities
     stages.push_back({"neo-Hookean cell forces", true,
                       "total-Lagrangian tetrahedra, computed for the output steps (zero while the cells are at rest)"});
     const char* not_yet = "skipped: not implemented yet";
-    stages.push_back({"Morse cell-cell forces", false, not_yet});
+    const InteractionConfig& interaction = config.interaction;
+    if (interaction.enabled) {
+      std::ostringstream morse;
+      morse << "De " << interaction.morse.well_depth << " pN/um^3 x " << interaction.strength << ", beta "
+            << interaction.morse.beta << " /um, r0 " << interaction.morse.zero_force_length << " um, cut-off "
+            << interaction.morse.cutoff << " um (" << interaction.pairs.size()
+            << " pair laws set apart); neighbour list with a " << interaction.skin
+            << " um skin, rebuilt when a surface node moves more than half of it; cells farther apart than "
+               "the cut-off do no pair work; computed for the output steps";
+      stages.push_back({"Morse cell-cell forces", true, morse.str()});
+    } else {
+      stages.push_back({"Morse cell-cell forces", false, "skipped: interaction.enabled = false"});
+    }
     stages.push_back({"inertia/buoyancy", false, not_yet});
     stages.push_back({"RKPM interpolate/spread", false, not_yet});
   }

@@ -72,6 +72,13 @@ TEST(RunCase, CellsAreWrittenInPlaceBesideTheFluid) {
   const Dataset interaction = read_dataset(out + "/fields_000002.h5", "/cells/interaction_force_pN", false);
   ASSERT_FALSE(interaction.doubles.empty());
   for (const double f : interaction.doubles) ASSERT_EQ(f, 0.0);
+  // The cells' diagnostics: at rest, no elastic energy and no volume change; the list was
+  // built once.
+  const auto last = rouleau::read_last_diagnostics(out + "/diagnostics.csv");
+  EXPECT_NEAR(last.at("elastic_energy_pN_um"), 0.0, 1e-9);
+  EXPECT_EQ(last.at("interaction_energy_pN_um"), 0.0);
+  EXPECT_EQ(last.at("neighbor_list_rebuilds"), 1.0);
+  EXPECT_NEAR(last.at("largest_relative_volume_change"), 0.0, 1e-14);
   const Dataset ids = read_dataset(out + "/fields_000002.h5", "/cells/cell_id", false);
   const Dataset x = read_dataset(out + "/fields_000002.h5", "/cells/coordinates", false);
   const Dataset tets = read_dataset(out + "/fields_mesh.h5", "/cells/connectivity", true);

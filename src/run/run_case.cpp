@@ -2,6 +2,7 @@
 
 #include <Kokkos_Core.hpp>
 #include <chrono>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -140,6 +141,31 @@ struct FluidDiagnostics {
   }
 };
 
+// Diagnostics of the cells: elastic and interaction energies, neighbour-list rebuilds, and
+// the largest change of a cell's enclosed volume since the start (relative).
+struct CellDiagnostics {
+  std::vector<double> initial_volumes;
+
+  explicit CellDiagnostics(const CaseCells& cells) {
+    if (cells.population)
+      for (const CellMeasures& m : cells.population->measures()) initial_volumes.push_back(m.volume);
+  }
+  static std::vector<std::string> columns() {
+    return {"elastic_energy_pN_um", "interaction_energy_pN_um", "neighbor_list_rebuilds",
+            "largest_relative_volume_change"};
+  }
+  std::vector<double> row(const CaseCells& cells) const {
+    const double elastic = cells.population->compute_internal_forces_and_energy();
+    const double interaction = cells.interaction ? cells.interaction->compute_forces_and_energy() : 0.0;
+    const double rebuilds = cells.interaction ? cells.interaction->rebuild_count() : 0.0;
+    double largest_change = 0.0;
+    const std::vector<CellMeasures> now = cells.population->measures();
+    for (std::size_t c = 0; c < now.size(); ++c)
+      largest_change = std::max(largest_change, std::fabs(now[c].volume / initial_volumes[c] - 1.0));
+    return {elastic, interaction, rebuilds, largest_change};
+  }
+};
+
 }  // namespace
 
 int run_case(const CaseConfig& config, const RunOptions& options) {
@@ -187,7 +213,22 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
   std::unique_ptr<XdmfTimeSeries> fields;
   if (config.output.write_fields) fields = std::make_unique<XdmfTimeSeries>(out, "fields", output_meshes, provenance);
   FluidDiagnostics diagnostics;
-  DiagnosticsTable table(out + "/diagnostics.csv", diagnostics.columns());
+  const CellDiagnostics cell_diagnostics(cells);
+  std::vector<std::string> columns = diagnostics.columns();
+  if (cells.population) {
+    const auto cell_columns = CellDiagnostics::columns();
+    columns.insert(columns.end(), cell_columns.begin(), cell_columns.end());
+  }
+  DiagnosticsTable table(out + "/diagnostics.csv", columns);
+  auto add_diagnostics_row = [&](int step, const FluidSolveReport& report) {
+    std::vector<double> row = diagnostics.row(config, *solver, step, report,
+                                              std::chrono::duration<double>(Clock::now() - run_start).count());
+    if (cells.population) {
+      const std::vector<double> cell_row = times.time("cell diagnostics", [&] { return cell_diagnostics.row(cells); });
+      row.insert(row.end(), cell_row.begin(), cell_row.end());
+    }
+    table.add_row(row);
+  };
 
   std::vector<double> velocity, pressure;
   CellPopulation::HostFields cell_fields;
@@ -238,8 +279,7 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
   if (config.time.mode == TimeMode::steady) {
     const FluidSolveReport report = times.time("fluid solve", [&] { return solver->solve_steady(); });
     if (!report.converged) fail(1, report);
-    table.add_row(diagnostics.row(config, *solver, 1, report,
-                                  std::chrono::duration<double>(Clock::now() - run_start).count()));
+    add_diagnostics_row(1, report);
     write_fields(1);
     std::cerr << "steady solve: " << report.newton_iterations << " Newton, " << report.gmres_iterations
               << " GMRES iterations; residual momentum " << report.momentum_residual << ", continuity "
@@ -252,8 +292,7 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
           times.time("fluid solve", [&] { return solver->advance(config.time.dt, config.time.scheme); });
       if (!report.converged) fail(step, report);
       if (step % config.output.diagnostics_every_steps == 0 || step == steps)
-        table.add_row(diagnostics.row(config, *solver, step, report,
-                                      std::chrono::duration<double>(Clock::now() - run_start).count()));
+        add_diagnostics_row(step, report);
       if (step % config.output.fields_every_steps == 0 || step == steps) write_fields(step);
       if (options.progress) progress.update(step, solver->time(), report.newton_iterations, report.gmres_iterations);
     }

@@ -515,7 +515,7 @@ TEST(ConfigCells, OverridesReachKindsAndCells) {
 TEST(ConfigInteraction, DefaultsGiveTheStatedAdhesionEnergy) {
   // The default De makes flat faces at their balance gap h* = r0 − ln 2/β hold with an
   // adhesion energy −2π ∫_{h*}^{r_c} φ(r) r dr = 5 μJ/m² = 5 pN/μm (midpoint rule).
-  const rouleau::MorseConfig m;
+  const rouleau::MorseConfig m{};
   const double gap = m.zero_force_length - std::log(2.0) / m.beta;
   const int n = 200000;
   double integral = 0.0;

@@ -16,9 +16,8 @@ namespace rouleau {
 
 template <class List, class Potential, class Scatter>
 struct SurfacePairForceFunctor {
-  Kokkos::View<const double* [3]> positions;    // every node of the cells (node, 3) [μm]
-  Kokkos::View<const int*> point_node;          // surface point → node
-  Kokkos::View<const double*> point_weight;     // area weight w [μm²] (reference surface)
+  Kokkos::View<const double* [3]> point_positions;  // surface points (point, 3) [μm]
+  Kokkos::View<const double*> point_weight;         // area weight w [μm²] (reference surface)
   Kokkos::View<const int*> point_kind;          // the point's cell kind
   Kokkos::View<const Potential**> potentials;   // (kind, kind)
   Kokkos::View<const int*> neighbor_offsets;    // CSR rows (point + 1)
@@ -30,16 +29,14 @@ struct SurfacePairForceFunctor {
   // half list, half of it for a full list, so that the sums are the total).
   template <bool with_energy>
   KOKKOS_INLINE_FUNCTION double point_pairs(const int i) const {
-    const int node_i = point_node(i);
-    const double x[3] = {positions(node_i, 0), positions(node_i, 1), positions(node_i, 2)};
+    const double x[3] = {point_positions(i, 0), point_positions(i, 1), point_positions(i, 2)};
     const double w_i = point_weight(i);
     const int kind_i = point_kind(i);
     double force_i[3] = {0.0, 0.0, 0.0};
     double energy = 0.0;
     for (int k = neighbor_offsets(i); k < neighbor_offsets(i + 1); ++k) {
       const int j = neighbors(k);
-      const int node_j = point_node(j);
-      const double d[3] = {x[0] - positions(node_j, 0), x[1] - positions(node_j, 1), x[2] - positions(node_j, 2)};
+      const double d[3] = {x[0] - point_positions(j, 0), x[1] - point_positions(j, 1), x[2] - point_positions(j, 2)};
       const double r_squared = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
       const Potential& potential = potentials(kind_i, point_kind(j));
       if (r_squared >= potential.cutoff * potential.cutoff) continue;

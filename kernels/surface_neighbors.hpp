@@ -1,5 +1,5 @@
 #pragma once
-// Neighbour search between the surface nodes of different cells: a cell list (uniform
+// Neighbour search between the surface points of different cells: a cell list (uniform
 // bins no smaller than the search radius) and a CSR list of the pairs within the radius.
 //
 // Points are binned by b = (i_x, i_y, i_z) = ⌊(x − lower)/bin_size⌋ (clamped to the grid)
@@ -35,11 +35,10 @@ struct HalfList {};
 // 27 bins around i's in z, y, x order, each bin's points in ascending index.
 template <class List, class PositionView, class PointView, class CellView, class BinView, class Visit>
 KOKKOS_INLINE_FUNCTION void for_each_neighbor(const int i, const BinGrid& grid, const double radius_squared,
-                                              const PositionView& positions, const PointView& point_node,
-                                              const CellView& point_cell, const BinView& bin_offsets,
-                                              const PointView& sorted_points, const Visit& visit) {
-  const int node_i = point_node(i);
-  const double x[3] = {positions(node_i, 0), positions(node_i, 1), positions(node_i, 2)};
+                                              const PositionView& point_positions, const CellView& point_cell,
+                                              const BinView& bin_offsets, const PointView& sorted_points,
+                                              const Visit& visit) {
+  const double x[3] = {point_positions(i, 0), point_positions(i, 1), point_positions(i, 2)};
   const int home[3] = {grid.coordinate(x[0], 0), grid.coordinate(x[1], 1), grid.coordinate(x[2], 2)};
   const int cell_i = point_cell(i);
   for (int bz = home[2] - 1; bz <= home[2] + 1; ++bz) {
@@ -53,9 +52,8 @@ KOKKOS_INLINE_FUNCTION void for_each_neighbor(const int i, const BinGrid& grid, 
           const int j = sorted_points(k);
           if (point_cell(j) == cell_i) continue;
           if (std::is_same<List, HalfList>::value && j <= i) continue;
-          const int node_j = point_node(j);
-          const double d0 = x[0] - positions(node_j, 0), d1 = x[1] - positions(node_j, 1),
-                       d2 = x[2] - positions(node_j, 2);
+          const double d0 = x[0] - point_positions(j, 0), d1 = x[1] - point_positions(j, 1),
+                       d2 = x[2] - point_positions(j, 2);
           if (d0 * d0 + d1 * d1 + d2 * d2 < radius_squared) visit(j);
         }
       }

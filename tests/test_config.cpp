@@ -129,6 +129,7 @@ void expect_identical_cases(const CaseConfig& a, const CaseConfig& b) {
     EXPECT_EQ(x.cutoff, y.cutoff);
   };
   EXPECT_EQ(a.interaction.enabled, b.interaction.enabled);
+  EXPECT_EQ(a.interaction.quadrature, b.interaction.quadrature);
   EXPECT_EQ(a.interaction.strength, b.interaction.strength);
   EXPECT_EQ(a.interaction.skin, b.interaction.skin);
   expect_same_morse(a.interaction.morse, b.interaction.morse);
@@ -546,7 +547,7 @@ TEST(ConfigResolved, RoundTripGivesAnIdenticalCase) {
        "cell_kinds.ball={shape=\"sphere\", diameter_um=4.1, mesh_size_um=0.35, bulk_modulus_Pa=77.7}",
        "cells=[{kind=\"sickle\", center_um=[10.1, 0, 10], orientation_deg=[0, 0, 33.3]},"
        " {center_um=[30, 0.7, 10]}, {kind=\"stiff-1\", center_um=[20, -3, 10]}, {kind=\"ball\", center_um=[3, 2, 3]}]",
-       "interaction.enabled=true", "interaction.strength_multiplier=5", "interaction.beta_per_um=3.7",
+       "interaction.enabled=true", "interaction.quadrature=gauss6", "interaction.strength_multiplier=5", "interaction.beta_per_um=3.7",
        "interaction.pair=[{kind_a=\"sickle\", kind_b=\"ball\", well_depth_pN_um3=17.1, cutoff_um=2.2}]",
        "cell_kinds.ball.morse_well_depth_factor=0.3"},
   };

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <random>
 
 #include "cells/cell_population.hpp"
@@ -69,6 +70,17 @@ TEST(MorsePotential, CaseLawsMixTheKindsFactorsAndTakeThePairEntries) {
   EXPECT_DOUBLE_EQ(laws[2 * 3 + 2].cutoff, 2.0);
 }
 
+TEST(MorsePotential, AutomaticQuadratureFollowsTheNodeSpacing) {
+  // Nodes 0.5 μm apart with 1/β = 0.25 μm: Gauss points; 0.125 μm apart: the nodes.
+  const std::vector<MorsePotential> laws{test_potential()};
+  const std::map<std::string, CellMesh> coarse{{"a", testing::tetrahedral_box(4, 2.0)}};
+  const std::map<std::string, CellMesh> fine{{"a", testing::tetrahedral_box(16, 2.0)}};
+  EXPECT_EQ(surface_quadrature_for(InteractionQuadrature::automatic, coarse, laws), SurfaceQuadrature::gauss3);
+  EXPECT_EQ(surface_quadrature_for(InteractionQuadrature::automatic, fine, laws), SurfaceQuadrature::nodes);
+  EXPECT_EQ(surface_quadrature_for(InteractionQuadrature::gauss6, fine, laws), SurfaceQuadrature::gauss6);
+  EXPECT_EQ(surface_quadrature_for(InteractionQuadrature::nodes, coarse, laws), SurfaceQuadrature::nodes);
+}
+
 // Cells made of tetrahedral cubes, placed and randomly turned and jittered.
 struct Scene {
   std::vector<CellMesh> meshes;
@@ -102,8 +114,19 @@ struct Scene {
 };
 
 SurfaceInteraction make_interaction(const CellPopulation& cells, const MorsePotential& potential, double skin,
-                                    bool half_list) {
-  return SurfaceInteraction(cells, std::vector<int>(cells.num_cells(), 0), 1, {potential}, skin, half_list);
+                                    bool half_list, SurfaceQuadrature quadrature = SurfaceQuadrature::nodes) {
+  return SurfaceInteraction(cells, std::vector<int>(cells.num_cells(), 0), 1, {potential}, skin, half_list,
+                            quadrature);
+}
+
+// The interaction forces on the nodes (host, node-major).
+std::vector<Eigen::Vector3d> node_forces(const CellPopulation& cells, const SurfaceInteraction& interaction) {
+  CellPopulation::NodeVectors forces("node_forces", cells.num_nodes());
+  interaction.copy_forces_to_nodes(forces);
+  const auto f = host_copy(forces);
+  std::vector<Eigen::Vector3d> result(cells.num_nodes());
+  for (int n = 0; n < cells.num_nodes(); ++n) result[n] = Eigen::Vector3d(f(n, 0), f(n, 1), f(n, 2));
+  return result;
 }
 
 // The brute-force reference: every pair of surface points of different cells.
@@ -113,18 +136,16 @@ struct Reference {
 };
 Reference brute_force(const CellPopulation& cells, const SurfaceInteraction& interaction,
                       const MorsePotential& potential) {
-  const auto x = host_copy(cells.positions());
-  const auto node = host_copy(interaction.point_node());
+  const auto x = host_copy(interaction.point_positions());
   const auto weight = host_copy(interaction.point_weight());
-  const auto cell = host_copy(cells.node_cell());
+  const auto cell = host_copy(interaction.point_cell());
   Reference result;
   const int n = interaction.num_points();
   result.forces.assign(n, Eigen::Vector3d::Zero());
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
-      if (i == j || cell(node(i)) == cell(node(j))) continue;
-      const Eigen::Vector3d d(x(node(i), 0) - x(node(j), 0), x(node(i), 1) - x(node(j), 1),
-                              x(node(i), 2) - x(node(j), 2));
+      if (i == j || cell(i) == cell(j)) continue;
+      const Eigen::Vector3d d(x(i, 0) - x(j, 0), x(i, 1) - x(j, 1), x(i, 2) - x(j, 2));
       const double r = d.norm();
       if (r >= potential.cutoff) continue;
       result.forces[i] += weight(i) * weight(j) * potential.force(r) / r * d;
@@ -148,12 +169,14 @@ TEST(SurfaceInteraction, MatchesABruteForceDoubleLoop) {
   Scene scene({{0, 0, 0}, {2.6, 0.2, 0}, {0.3, 3.4, 0.5}, {2.5, 2.6, -0.2}, {30, 0, 0}}, 3);
   scene.jitter(5, 0.1);
   const MorsePotential potential = test_potential();
+  for (const auto quadrature : {SurfaceQuadrature::nodes, SurfaceQuadrature::gauss3})
   for (const bool half : {false, true}) {
-    SurfaceInteraction interaction = make_interaction(*scene.cells, potential, 0.3, half);
+    SurfaceInteraction interaction = make_interaction(*scene.cells, potential, 0.3, half, quadrature);
     const double energy = interaction.compute_forces_and_energy();
     const Reference reference = brute_force(*scene.cells, interaction, potential);
     const double difference = force_difference(interaction, reference);
-    std::cout << "  " << (half ? "half" : "full") << " list: " << interaction.num_points() << " surface points, "
+    std::cout << "  " << (quadrature == SurfaceQuadrature::nodes ? "nodal quadrature, " : "3 Gauss points per triangle, ")
+              << (half ? "half" : "full") << " list: " << interaction.num_points() << " surface points, "
               << interaction.num_list_entries() << " list entries, " << interaction.active_cell_count()
               << " of 5 cells active; forces vs brute force " << difference << ", energy "
               << std::fabs(energy / reference.energy - 1.0) << " (relative)\n";
@@ -169,13 +192,12 @@ TEST(SurfaceInteraction, ObeysNewtonsThirdLaw) {
   SurfaceInteraction interaction = make_interaction(*scene.cells, test_potential(), 0.3, false);
   interaction.compute_forces();
   const auto f = host_copy(interaction.forces());
-  const auto node = host_copy(interaction.point_node());
-  const auto cell = host_copy(scene.cells->node_cell());
+  const auto cell = host_copy(interaction.point_cell());
   Eigen::Vector3d on_cell[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
   double magnitude = 0.0;
   for (int i = 0; i < interaction.num_points(); ++i) {
     const Eigen::Vector3d fi(f(i, 0), f(i, 1), f(i, 2));
-    on_cell[cell(node(i))] += fi;
+    on_cell[cell(i)] += fi;
     magnitude += fi.norm();
   }
   std::cout << "  force on cell 0 " << on_cell[0].transpose() << " pN, on cell 1 " << on_cell[1].transpose()
@@ -185,31 +207,36 @@ TEST(SurfaceInteraction, ObeysNewtonsThirdLaw) {
 }
 
 TEST(SurfaceInteraction, ForcesAreMinusTheGradientOfTheEnergy) {
+  // The nodal forces against central differences of E in the node positions, for nodal
+  // quadrature and for Gauss points on the triangles (whose forces reach the nodes
+  // through the shape functions).
   Scene scene({{0, 0, 0}, {2.4, 0.2, 0.1}}, 11);
   scene.jitter(13, 0.1);
-  SurfaceInteraction interaction = make_interaction(*scene.cells, test_potential(), 0.5, false);
-  interaction.compute_forces();
-  const auto f = host_copy(interaction.forces());
-  const auto node = host_copy(interaction.point_node());
-  const auto x = host_copy(scene.cells->positions());
-  const double step = 1e-6;
-  double error = 0.0, norm = 0.0;
-  for (int i = 0; i < interaction.num_points(); i += 7)
-    for (int c = 0; c < 3; ++c) {
-      double energy[2];
-      for (int side = 0; side < 2; ++side) {
-        auto shifted = host_copy(x);
-        shifted(node(i), c) += side == 0 ? step : -step;
-        Kokkos::deep_copy(scene.cells->positions(), shifted);
-        energy[side] = interaction.compute_forces_and_energy();
+  for (const auto quadrature : {SurfaceQuadrature::nodes, SurfaceQuadrature::gauss3}) {
+    SurfaceInteraction interaction = make_interaction(*scene.cells, test_potential(), 0.5, false, quadrature);
+    const auto x = host_copy(scene.cells->positions());
+    interaction.compute_forces();
+    const std::vector<Eigen::Vector3d> f = node_forces(*scene.cells, interaction);
+    const double step = 1e-6;
+    double error = 0.0, norm = 0.0;
+    for (int n = 0; n < scene.cells->num_nodes(); n += 5)
+      for (int c = 0; c < 3; ++c) {
+        double energy[2];
+        for (int side = 0; side < 2; ++side) {
+          auto shifted = host_copy(x);
+          shifted(n, c) += side == 0 ? step : -step;
+          Kokkos::deep_copy(scene.cells->positions(), shifted);
+          energy[side] = interaction.compute_forces_and_energy();
+        }
+        const double derivative = -(energy[0] - energy[1]) / (2 * step);
+        error += std::pow(derivative - f[n][c], 2);
+        norm += f[n][c] * f[n][c];
       }
-      const double derivative = -(energy[0] - energy[1]) / (2 * step);
-      error += std::pow(derivative - f(i, c), 2);
-      norm += f(i, c) * f(i, c);
-    }
-  std::cout << "  interaction force vs −∂E/∂x (central differences): relative error " << std::sqrt(error / norm)
-            << "\n";
-  EXPECT_LT(std::sqrt(error / norm), 1e-6);
+    Kokkos::deep_copy(scene.cells->positions(), x);
+    std::cout << "  " << (quadrature == SurfaceQuadrature::nodes ? "nodal quadrature" : "3 Gauss points")
+              << ": nodal force vs −∂E/∂x (central differences): relative error " << std::sqrt(error / norm) << "\n";
+    EXPECT_LT(std::sqrt(error / norm), 1e-6);
+  }
 }
 
 TEST(SurfaceInteraction, TheSkinChangesOnlyTheRebuildCount) {
@@ -249,37 +276,46 @@ double plate_pressure(const MorsePotential& m, double gap) {
 }
 
 TEST(SurfaceInteraction, PlatesMatchThePlatePlateIntegral) {
-  // Blocks 12 × 12 × 3.5 μm (the far faces beyond the cut-off), facing faces at gap h; the
-  // central node of the lower block's top face: F_z / w against p(h), refined three times.
+  // Blocks 12 × 12 × 3.5 μm (the far faces beyond the cut-off), facing faces at gap h; at
+  // the central node of the lower block's top face, F_z / w (its area weight) against
+  // p(h) under refinement, with nodal quadrature and with 3 and 6 Gauss points per triangle.
   const MorsePotential potential = test_potential();
-  const double gap = 0.5;
-  double previous_error = 1e300;
-  for (const int n : {12, 24, 48}) {
-    const CellMesh block = testing::tetrahedral_block({n, n, 2}, {12.0, 12.0, 3.5});
-    std::vector<PlacedCell> placed(2);
-    for (int c = 0; c < 2; ++c) {
-      placed[c].mesh = &block;
-      placed[c].center = {0.0, 0.0, c == 0 ? -1.75 : 1.75 + gap};
+  const double exact = plate_pressure(potential, 0.5);
+  double finest_error[3] = {0, 0, 0}, coarsest_error[3] = {0, 0, 0};
+  const SurfaceQuadrature rules[3] = {SurfaceQuadrature::nodes, SurfaceQuadrature::gauss3, SurfaceQuadrature::gauss6};
+  const char* names[3] = {"nodes", "3 Gauss points", "6 Gauss points"};
+  for (int r = 0; r < 3; ++r) {
+    double previous_error = 1e300;
+    // (Gauss points are 3 or 6 per triangle: two refinements suffice.)
+    for (const int n : r == 0 ? std::vector<int>{12, 24, 48} : std::vector<int>{12, 24}) {
+      const CellMesh block = testing::tetrahedral_block({n, n, 2}, {12.0, 12.0, 3.5});
+      std::vector<PlacedCell> placed(2);
+      for (int c = 0; c < 2; ++c) {
+        placed[c].mesh = &block;
+        placed[c].center = {0.0, 0.0, c == 0 ? -1.75 : 1.75 + 0.5};
+      }
+      CellPopulation cells(placed);
+      SurfaceInteraction interaction = make_interaction(cells, potential, 0.2, true, rules[r]);
+      interaction.compute_forces();
+      const std::vector<Eigen::Vector3d> f = node_forces(cells, interaction);
+      const auto w = host_copy(cells.surface_area_weights());
+      const auto x = host_copy(cells.positions());
+      double pressure = NAN;
+      for (int n_i = 0; n_i < cells.num_nodes(); ++n_i)
+        if (std::fabs(x(n_i, 0)) < 1e-9 && std::fabs(x(n_i, 1)) < 1e-9 && std::fabs(x(n_i, 2)) < 1e-9)
+          pressure = -f[n_i][2] / w(n_i);  // the lower plate's node is pushed down (−z) by repulsion
+      const double error = std::fabs(pressure - exact) / std::fabs(exact);
+      std::cout << "  plates at gap 0.5 μm, " << names[r] << ", node spacing " << 12.0 / n << " μm: pressure "
+                << pressure << " Pa (exact " << exact << "), relative error " << error << "\n";
+      EXPECT_LT(error, previous_error);
+      if (n == 12) coarsest_error[r] = error;
+      previous_error = finest_error[r] = error;
     }
-    CellPopulation cells(placed);
-    SurfaceInteraction interaction = make_interaction(cells, potential, 0.2, true);
-    interaction.compute_forces();
-    const auto f = host_copy(interaction.forces());
-    const auto node = host_copy(interaction.point_node());
-    const auto w = host_copy(interaction.point_weight());
-    const auto x = host_copy(cells.positions());
-    double pressure = NAN;
-    for (int i = 0; i < interaction.num_points(); ++i)
-      if (std::fabs(x(node(i), 0)) < 1e-9 && std::fabs(x(node(i), 1)) < 1e-9 && std::fabs(x(node(i), 2)) < 1e-9)
-        pressure = -f(i, 2) / w(i);  // the lower plate's point is pushed down (−z) by repulsion
-    const double exact = plate_pressure(potential, gap);
-    const double error = std::fabs(pressure - exact) / std::fabs(exact);
-    std::cout << "  plates at gap " << gap << " μm, node spacing " << 12.0 / n << " μm: pressure " << pressure
-              << " Pa, exact " << exact << " Pa, relative error " << error << "\n";
-    EXPECT_LT(error, previous_error);
-    previous_error = error;
+    EXPECT_LT(finest_error[r], 0.01);
   }
-  EXPECT_LT(previous_error, 0.01);
+  // Gauss points resolve what coarse nodes cannot.
+  EXPECT_LT(coarsest_error[1], 0.5 * coarsest_error[0]);
+  EXPECT_LT(coarsest_error[2], coarsest_error[1]);
 }
 
 TEST(SurfaceInteraction, TwoRigidCellsSettleAtTheMorseMinimum) {
@@ -300,7 +336,7 @@ TEST(SurfaceInteraction, TwoRigidCellsSettleAtTheMorseMinimum) {
   }
   CellPopulation cells(placed);
   SurfaceInteraction interaction = make_interaction(cells, potential, 0.3, true);
-  const auto node = host_copy(interaction.point_node());
+  const auto point_cell = host_copy(interaction.point_cell());
   const auto cell = host_copy(cells.node_cell());
   const auto reference = host_copy(cells.reference_positions());
   // Places the upper block at gap h; returns E, and F_z on the upper block.
@@ -313,7 +349,7 @@ TEST(SurfaceInteraction, TwoRigidCellsSettleAtTheMorseMinimum) {
     const auto f = host_copy(interaction.forces());
     force_on_upper = 0.0;
     for (int i = 0; i < interaction.num_points(); ++i)
-      if (cell(node(i)) == 1) force_on_upper += f(i, 2);
+      if (point_cell(i) == 1) force_on_upper += f(i, 2);
     return energy;
   };
   // Stable while mobility × the contact stiffness (≈ 600 pN/μm here) stays below 2.

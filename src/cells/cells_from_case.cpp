@@ -1,5 +1,6 @@
 #include "cells/cells_from_case.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -28,6 +29,36 @@ std::vector<MorsePotential> case_morse_potentials(const CaseConfig& config) {
   return potentials;
 }
 
+SurfaceQuadrature surface_quadrature_for(InteractionQuadrature choice, const std::map<std::string, CellMesh>& meshes,
+                                         const std::vector<MorsePotential>& potentials) {
+  switch (choice) {
+    case InteractionQuadrature::nodes: return SurfaceQuadrature::nodes;
+    case InteractionQuadrature::gauss3: return SurfaceQuadrature::gauss3;
+    case InteractionQuadrature::gauss6: return SurfaceQuadrature::gauss6;
+    case InteractionQuadrature::automatic: break;
+  }
+  // The node spacing of a surface: the edge a of the equilateral triangle of its mean
+  // triangle area A = (√3/4) a².
+  double spacing = 0.0;
+  for (const auto& [name, mesh] : meshes) {
+    double area = 0.0;
+    for (const auto& t : mesh.outer_surface) {
+      double e1[3], e2[3];
+      for (int c = 0; c < 3; ++c) {
+        e1[c] = mesh.nodes[t[1]][c] - mesh.nodes[t[0]][c];
+        e2[c] = mesh.nodes[t[2]][c] - mesh.nodes[t[0]][c];
+      }
+      area += 0.5 * std::sqrt(std::pow(e1[1] * e2[2] - e1[2] * e2[1], 2) + std::pow(e1[2] * e2[0] - e1[0] * e2[2], 2) +
+                              std::pow(e1[0] * e2[1] - e1[1] * e2[0], 2));
+    }
+    if (!mesh.outer_surface.empty())
+      spacing = std::max(spacing, std::sqrt(4.0 * area / mesh.outer_surface.size() / std::sqrt(3.0)));
+  }
+  double range = 1e300;  // the shortest 1/β of the laws
+  for (const MorsePotential& potential : potentials) range = std::min(range, 1.0 / potential.beta);
+  return spacing > range ? SurfaceQuadrature::gauss3 : SurfaceQuadrature::nodes;
+}
+
 CaseCells make_case_cells(const CaseConfig& config, const std::string& mesh_cache_dir) {
   CaseCells result;
   if (config.cells.empty()) return result;
@@ -48,10 +79,13 @@ CaseCells make_case_cells(const CaseConfig& config, const std::string& mesh_cach
     cell_kind.push_back(cell.kind);
   }
   result.population = std::make_unique<CellPopulation>(placed);
-  if (config.interaction.enabled)
-    result.interaction = std::make_unique<SurfaceInteraction>(
-        *result.population, cell_kind, static_cast<int>(config.cell_kinds.size()), case_morse_potentials(config),
-        config.interaction.skin);
+  if (config.interaction.enabled) {
+    const std::vector<MorsePotential> potentials = case_morse_potentials(config);
+    result.quadrature = surface_quadrature_for(config.interaction.quadrature, result.meshes, potentials);
+    result.interaction = std::make_unique<SurfaceInteraction>(*result.population, cell_kind,
+                                                              static_cast<int>(config.cell_kinds.size()), potentials,
+                                                              config.interaction.skin, false, result.quadrature);
+  }
   return result;
 }
 

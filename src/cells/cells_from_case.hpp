@@ -17,7 +17,14 @@ struct CaseCells {
   std::map<std::string, CellMesh> meshes;  // per kind used, by kind name
   std::unique_ptr<CellPopulation> population;
   std::unique_ptr<SurfaceInteraction> interaction;  // when [interaction] is enabled
+  SurfaceQuadrature quadrature = SurfaceQuadrature::nodes;  // the interaction's, as chosen
 };
+
+// The interaction's surface points for `choice`; "auto": nodes when the meshes' surface
+// node spacing (the edge of the equilateral triangle of their mean triangle area) is at
+// most the shortest 1/β of the laws, else 3 Gauss points per triangle.
+SurfaceQuadrature surface_quadrature_for(InteractionQuadrature choice, const std::map<std::string, CellMesh>& meshes,
+                                         const std::vector<MorsePotential>& potentials);
 
 // The Morse law between every pair of the case's kinds, potentials[a * n + b] for kinds
 // a, b (indices into config.cell_kinds): an [[interaction.pair]] entry's law when there is

@@ -2,6 +2,7 @@
 
 #include <Kokkos_Sort.hpp>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
@@ -18,7 +19,8 @@ template <class ExecSpace>
 BasicSurfaceInteraction<ExecSpace>::BasicSurfaceInteraction(const Population& cells,
                                                             const std::vector<int>& cell_kind, int num_kinds,
                                                             const std::vector<MorsePotential>& potentials,
-                                                            double skin, bool half_list)
+                                                            double skin, bool half_list,
+                                                            SurfaceQuadrature quadrature)
     : cells_(cells), num_kinds_(num_kinds), skin_(skin), half_list_(half_list) {
   if (static_cast<int>(cell_kind.size()) != cells.num_cells())
     throw std::invalid_argument("rouleau::SurfaceInteraction: one kind per cell expected");
@@ -37,36 +39,67 @@ BasicSurfaceInteraction<ExecSpace>::BasicSurfaceInteraction(const Population& ce
   Kokkos::deep_copy(potentials_, host_potentials);
   search_radius_ = max_cutoff_ + skin_;
 
-  // The surface points: nodes with an outer-surface area weight, in node order (so each
-  // cell's points are contiguous).
-  auto weights = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.surface_area_weights());
+  // The surface points, cell by cell: the nodes with an outer-surface area weight (nodal
+  // quadrature), or the rule's points on each outer-surface triangle with weight A_t w_q
+  // (A_t on the reference surface).
+  struct Point {
+    std::array<int, 3> nodes;
+    std::array<double, 3> shape;
+    double weight;
+    int cell;
+  };
+  std::vector<Point> points;
   auto node_cell = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.node_cell());
-  std::vector<int> nodes;
-  cell_first_point_.assign(cells.num_cells() + 1, 0);
-  for (int n = 0; n < cells.num_nodes(); ++n)
-    if (weights(n) > 0.0) {
-      nodes.push_back(n);
-      ++cell_first_point_[node_cell(n) + 1];
+  if (quadrature == SurfaceQuadrature::nodes) {
+    auto weights = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.surface_area_weights());
+    for (int n = 0; n < cells.num_nodes(); ++n)
+      if (weights(n) > 0.0) points.push_back({{n, n, n}, {1.0, 0.0, 0.0}, weights(n), node_cell(n)});
+  } else {
+    const std::vector<TrianglePoint> rule = triangle_rule(quadrature);
+    auto triangles = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.surface_triangles());
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.reference_positions());
+    for (std::size_t t = 0; t < triangles.extent(0); ++t) {
+      const std::array<int, 3> nodes{triangles(t, 0), triangles(t, 1), triangles(t, 2)};
+      double e1[3], e2[3];
+      for (int c = 0; c < 3; ++c) {
+        e1[c] = x(nodes[1], c) - x(nodes[0], c);
+        e2[c] = x(nodes[2], c) - x(nodes[0], c);
+      }
+      // A_t = |e1 × e2| / 2
+      const double area = 0.5 * std::sqrt(std::pow(e1[1] * e2[2] - e1[2] * e2[1], 2) +
+                                          std::pow(e1[2] * e2[0] - e1[0] * e2[2], 2) +
+                                          std::pow(e1[0] * e2[1] - e1[1] * e2[0], 2));
+      for (const TrianglePoint& q : rule) points.push_back({nodes, q.barycentric, area * q.weight, node_cell(nodes[0])});
     }
+  }
+  cell_first_point_.assign(cells.num_cells() + 1, 0);
+  for (const Point& point : points) ++cell_first_point_[point.cell + 1];
   std::partial_sum(cell_first_point_.begin(), cell_first_point_.end(), cell_first_point_.begin());
-  const int n_points = static_cast<int>(nodes.size());
-  point_node_ = Kokkos::View<int*>("rouleau::SurfaceInteraction::point_node", n_points);
+  const int n_points = static_cast<int>(points.size());
+  point_nodes_ = Kokkos::View<int* [3]>("rouleau::SurfaceInteraction::point_nodes", n_points);
+  point_shape_ = Kokkos::View<double* [3]>("rouleau::SurfaceInteraction::point_shape", n_points);
   point_cell_ = Kokkos::View<int*>("rouleau::SurfaceInteraction::point_cell", n_points);
   point_kind_ = Kokkos::View<int*>("rouleau::SurfaceInteraction::point_kind", n_points);
   point_weight_ = Kokkos::View<double*>("rouleau::SurfaceInteraction::point_weight", n_points);
-  auto h_node = Kokkos::create_mirror_view(point_node_);
+  point_positions_ = PointVectors("rouleau::SurfaceInteraction::point_positions", n_points);
+  auto h_nodes = Kokkos::create_mirror_view(point_nodes_);
+  auto h_shape = Kokkos::create_mirror_view(point_shape_);
   auto h_cell = Kokkos::create_mirror_view(point_cell_);
   auto h_kind = Kokkos::create_mirror_view(point_kind_);
   auto h_weight = Kokkos::create_mirror_view(point_weight_);
   for (int i = 0; i < n_points; ++i) {
-    h_node(i) = nodes[i];
-    h_cell(i) = node_cell(nodes[i]);
+    for (int k = 0; k < 3; ++k) {
+      h_nodes(i, k) = points[i].nodes[k];
+      h_shape(i, k) = points[i].shape[k];
+    }
+    h_cell(i) = points[i].cell;
     h_kind(i) = cell_kind[h_cell(i)];
     if (h_kind(i) < 0 || h_kind(i) >= num_kinds)
       throw std::invalid_argument("rouleau::SurfaceInteraction: a cell kind index out of range");
-    h_weight(i) = weights(nodes[i]);
+    h_weight(i) = points[i].weight;
   }
-  Kokkos::deep_copy(point_node_, h_node);
+  Kokkos::deep_copy(point_nodes_, h_nodes);
+  Kokkos::deep_copy(point_shape_, h_shape);
   Kokkos::deep_copy(point_cell_, h_cell);
   Kokkos::deep_copy(point_kind_, h_kind);
   Kokkos::deep_copy(point_weight_, h_weight);
@@ -82,14 +115,30 @@ BasicSurfaceInteraction<ExecSpace>::BasicSurfaceInteraction(const Population& ce
   neighbor_offsets_ = Kokkos::View<int*>("rouleau::SurfaceInteraction::neighbor_offsets", n_points + 1);
   neighbors_ = Kokkos::View<int*>("rouleau::SurfaceInteraction::neighbors", 0);
   if (half_list_) force_scatter_ = Scatter("rouleau::SurfaceInteraction::force_scatter", n_points);
+  node_force_scatter_ = Scatter("rouleau::SurfaceInteraction::node_force_scatter", cells.num_nodes());
+}
+
+template <class ExecSpace>
+void BasicSurfaceInteraction<ExecSpace>::gather_point_positions() {
+  // x_p = Σ_k s_pk x_{n_pk}
+  auto positions = cells_.positions();
+  auto nodes = point_nodes_;
+  auto shape = point_shape_;
+  auto point_positions = point_positions_;
+  Kokkos::parallel_for(
+      "rouleau::SurfaceInteraction::gather_point_positions", Kokkos::RangePolicy<ExecSpace>(0, num_points()),
+      KOKKOS_LAMBDA(const int p) {
+        for (int c = 0; c < 3; ++c)
+          point_positions(p, c) = shape(p, 0) * positions(nodes(p, 0), c) + shape(p, 1) * positions(nodes(p, 1), c) +
+                                  shape(p, 2) * positions(nodes(p, 2), c);
+      });
 }
 
 template <class ExecSpace>
 bool BasicSurfaceInteraction<ExecSpace>::list_is_stale() const {
   if (!built_) return true;
   // max_i |x_i − x_i(build)|² against (skin/2)²
-  auto positions = cells_.positions();
-  auto point_node = point_node_;
+  auto point_positions = point_positions_;
   auto at_build = positions_at_build_;
   double largest = 0.0;
   Kokkos::parallel_reduce(
@@ -97,7 +146,7 @@ bool BasicSurfaceInteraction<ExecSpace>::list_is_stale() const {
       KOKKOS_LAMBDA(const int i, double& value) {
         double d2 = 0.0;
         for (int c = 0; c < 3; ++c) {
-          const double d = positions(point_node(i), c) - at_build(i, c);
+          const double d = point_positions(i, c) - at_build(i, c);
           d2 += d * d;
         }
         if (d2 > value) value = d2;
@@ -111,8 +160,7 @@ void BasicSurfaceInteraction<ExecSpace>::rebuild() {
   ProfilingRegion region("rouleau::SurfaceInteraction::rebuild");
   const int n_points = num_points();
   const int n_cells = cells_.num_cells();
-  auto positions = cells_.positions();
-  auto point_node = point_node_;
+  auto point_positions = point_positions_;
   auto point_cell = point_cell_;
 
   // Broad phase: each cell's bounding box, then the pairs of cells whose boxes grown by
@@ -125,7 +173,7 @@ void BasicSurfaceInteraction<ExecSpace>::rebuild() {
         double lower[3] = {1e300, 1e300, 1e300}, upper[3] = {-1e300, -1e300, -1e300};
         for (int i = first_point(c); i < first_point(c + 1); ++i)
           for (int d = 0; d < 3; ++d) {
-            const double x = positions(point_node(i), d);
+            const double x = point_positions(i, d);
             lower[d] = x < lower[d] ? x : lower[d];
             upper[d] = x > upper[d] ? x : upper[d];
           }
@@ -197,8 +245,7 @@ void BasicSurfaceInteraction<ExecSpace>::rebuild() {
       KOKKOS_LAMBDA(const int i, int& slot, const bool final) {
         if (!point_active(i)) return;
         if (final) {
-          const int node = point_node(i);
-          const double x[3] = {positions(node, 0), positions(node, 1), positions(node, 2)};
+          const double x[3] = {point_positions(i, 0), point_positions(i, 1), point_positions(i, 2)};
           keys(slot) = static_cast<std::int64_t>(grid.bin_of(x)) * n_points + i;
         }
         ++slot;
@@ -233,11 +280,11 @@ void BasicSurfaceInteraction<ExecSpace>::rebuild() {
   auto count_row = KOKKOS_LAMBDA(const int i, int& count) {
     auto visit = [&](int) { ++count; };
     if (half)
-      for_each_neighbor<HalfList>(i, grid, radius_squared, positions, point_node, point_cell, bin_offsets,
-                                  sorted_points, visit);
+      for_each_neighbor<HalfList>(i, grid, radius_squared, point_positions, point_cell, bin_offsets, sorted_points,
+                                  visit);
     else
-      for_each_neighbor<FullList>(i, grid, radius_squared, positions, point_node, point_cell, bin_offsets,
-                                  sorted_points, visit);
+      for_each_neighbor<FullList>(i, grid, radius_squared, point_positions, point_cell, bin_offsets, sorted_points,
+                                  visit);
   };
   Kokkos::parallel_for(
       "rouleau::SurfaceInteraction::count_neighbors", Kokkos::RangePolicy<ExecSpace>(0, n_points + 1),
@@ -266,10 +313,10 @@ void BasicSurfaceInteraction<ExecSpace>::rebuild() {
         int slot = offsets(i);
         auto visit = [&](int j) { neighbors(slot++) = j; };
         if (half)
-          for_each_neighbor<HalfList>(i, grid, radius_squared, positions, point_node, point_cell, bin_offsets,
+          for_each_neighbor<HalfList>(i, grid, radius_squared, point_positions, point_cell, bin_offsets,
                                       sorted_points, visit);
         else
-          for_each_neighbor<FullList>(i, grid, radius_squared, positions, point_node, point_cell, bin_offsets,
+          for_each_neighbor<FullList>(i, grid, radius_squared, point_positions, point_cell, bin_offsets,
                                       sorted_points, visit);
       });
 
@@ -277,7 +324,7 @@ void BasicSurfaceInteraction<ExecSpace>::rebuild() {
   Kokkos::parallel_for(
       "rouleau::SurfaceInteraction::positions_at_build", Kokkos::RangePolicy<ExecSpace>(0, n_points),
       KOKKOS_LAMBDA(const int i) {
-        for (int c = 0; c < 3; ++c) at_build(i, c) = positions(point_node(i), c);
+        for (int c = 0; c < 3; ++c) at_build(i, c) = point_positions(i, c);
       });
   built_ = true;
   ++rebuilds_;
@@ -286,6 +333,7 @@ void BasicSurfaceInteraction<ExecSpace>::rebuild() {
 template <class ExecSpace>
 template <class Tag>
 double BasicSurfaceInteraction<ExecSpace>::run_pair_kernel(const char* label) {
+  gather_point_positions();
   if (list_is_stale()) rebuild();
   ProfilingRegion region("rouleau::SurfaceInteraction::pair_forces");
   const Kokkos::RangePolicy<ExecSpace, Tag> policy(0, num_points());
@@ -299,12 +347,12 @@ double BasicSurfaceInteraction<ExecSpace>::run_pair_kernel(const char* label) {
   if (half_list_) {
     force_scatter_.reset();
     launch(SurfacePairForceFunctor<HalfList, MorsePotential, Scatter>{
-        cells_.positions(), point_node_, point_weight_, point_kind_, potentials_, neighbor_offsets_, neighbors_,
+        point_positions_, point_weight_, point_kind_, potentials_, neighbor_offsets_, neighbors_,
         forces_, force_scatter_});
     gather_into(forces_, force_scatter_);
   } else {
     launch(SurfacePairForceFunctor<FullList, MorsePotential, Scatter>{
-        cells_.positions(), point_node_, point_weight_, point_kind_, potentials_, neighbor_offsets_, neighbors_,
+        point_positions_, point_weight_, point_kind_, potentials_, neighbor_offsets_, neighbors_,
         forces_, force_scatter_});
   }
   return energy;
@@ -322,14 +370,21 @@ double BasicSurfaceInteraction<ExecSpace>::compute_forces_and_energy() {
 
 template <class ExecSpace>
 void BasicSurfaceInteraction<ExecSpace>::copy_forces_to_nodes(const PointVectors& node_forces) const {
-  Kokkos::deep_copy(node_forces, 0.0);
-  auto point_node = point_node_;
+  // f_n = Σ_{p, k: n_pk = n} s_pk F_p
+  node_force_scatter_.reset();
+  auto scatter = node_force_scatter_;
+  auto nodes = point_nodes_;
+  auto shape = point_shape_;
   auto forces = forces_;
   Kokkos::parallel_for(
       "rouleau::SurfaceInteraction::copy_forces_to_nodes", Kokkos::RangePolicy<ExecSpace>(0, num_points()),
-      KOKKOS_LAMBDA(const int i) {
-        for (int c = 0; c < 3; ++c) node_forces(point_node(i), c) = forces(i, c);
+      KOKKOS_LAMBDA(const int p) {
+        auto access = scatter.access();
+        for (int k = 0; k < 3; ++k)
+          if (shape(p, k) != 0.0)
+            for (int c = 0; c < 3; ++c) access(nodes(p, k), c) += shape(p, k) * forces(p, c);
       });
+  gather_into(node_forces, node_force_scatter_);
 }
 
 #if defined(KOKKOS_ENABLE_CUDA)

@@ -1,8 +1,9 @@
 #pragma once
 // The Morse interaction between the surfaces of different cells (paper eqs. 3, 4, 11) on
-// the device: the surface points (outer-surface nodes with their reference area
-// weights), a broad phase over the cells' bounding boxes, a cell list and a CSR
-// neighbour list with a skin, and the pair forces.
+// the device: the surface points (the outer-surface nodes with their reference area
+// weights, or Gauss points of the outer-surface triangles: cells/surface_quadrature.hpp),
+// a broad phase over the cells' bounding boxes, a cell list and a CSR neighbour list with
+// a skin, and the pair forces.
 //
 // The list holds the pairs of points of different cells closer than r_c + skin and is
 // rebuilt only when some point has moved more than skin/2 since the last build (then no
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "cells/cell_population.hpp"
+#include "cells/surface_quadrature.hpp"
 #include "kernels/morse.hpp"
 #include "kernels/surface_neighbors.hpp"
 
@@ -25,9 +27,11 @@ class BasicSurfaceInteraction {
   using PointVectors = Kokkos::View<double* [3]>;
 
   // `cell_kind[c]`: the kind index of cell c; `potentials[a * num_kinds + b]`: the law
-  // between kinds a and b (symmetric). `skin` [μm] > 0. `half_list` chooses the pair loop.
+  // between kinds a and b (symmetric). `skin` [μm] > 0. `half_list` chooses the pair loop,
+  // `quadrature` the surface points.
   BasicSurfaceInteraction(const Population& cells, const std::vector<int>& cell_kind, int num_kinds,
-                          const std::vector<MorsePotential>& potentials, double skin, bool half_list = false);
+                          const std::vector<MorsePotential>& potentials, double skin, bool half_list = false,
+                          SurfaceQuadrature quadrature = SurfaceQuadrature::nodes);
 
   // forces() = the interaction forces on the surface points at the cells' current
   // positions (rebuilding the list first when it must).
@@ -35,11 +39,17 @@ class BasicSurfaceInteraction {
   // The same, returning the interaction energy Σ_pairs w_i w_j φ(r_ij) [pN·μm].
   double compute_forces_and_energy();
 
-  int num_points() const { return static_cast<int>(point_node_.extent(0)); }
-  // Surface point → node of the population, its area weight, its forces [pN].
-  const Kokkos::View<int*>& point_node() const { return point_node_; }
+  int num_points() const { return static_cast<int>(point_weight_.extent(0)); }
+  // The surface points: their positions (at the last gather), cells, area weights [μm²]
+  // and the forces on them [pN]; point p sits at Σ_k point_shape(p, k) x(point_nodes(p, k)).
+  const PointVectors& point_positions() const { return point_positions_; }
+  const Kokkos::View<int*>& point_cell() const { return point_cell_; }
   const Kokkos::View<double*>& point_weight() const { return point_weight_; }
+  const Kokkos::View<int* [3]>& point_nodes() const { return point_nodes_; }
+  const Kokkos::View<double* [3]>& point_shape() const { return point_shape_; }
   const PointVectors& forces() const { return forces_; }
+  // point_positions() from the cells' current node positions (compute_forces() does it).
+  void gather_point_positions();
   // node_forces(n) = the interaction force on node n of the population (zero off the
   // outer surfaces), from the last compute_forces().
   void copy_forces_to_nodes(const PointVectors& node_forces) const;
@@ -67,8 +77,11 @@ class BasicSurfaceInteraction {
   double skin_, max_cutoff_, search_radius_;
   bool half_list_;
   Kokkos::View<MorsePotential**> potentials_;
-  Kokkos::View<int*> point_node_, point_cell_, point_kind_;
+  Kokkos::View<int* [3]> point_nodes_;
+  Kokkos::View<double* [3]> point_shape_;
+  Kokkos::View<int*> point_cell_, point_kind_;
   Kokkos::View<double*> point_weight_;
+  PointVectors point_positions_;
   std::vector<int> cell_first_point_;            // host: points of cell c are [first[c], first[c+1])
   Kokkos::View<int*> cell_first_point_device_;
   PointVectors forces_;
@@ -83,6 +96,7 @@ class BasicSurfaceInteraction {
   using Scatter = Kokkos::Experimental::ScatterView<double* [3], typename PointVectors::array_layout,
                                                     typename ExecSpace::device_type>;
   Scatter force_scatter_;
+  mutable Scatter node_force_scatter_;  // point forces summed into the nodes
 };
 
 using SurfaceInteraction = BasicSurfaceInteraction<Kokkos::DefaultExecutionSpace>;

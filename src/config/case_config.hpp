@@ -157,8 +157,14 @@ struct MorsePairConfig {
   MorseConfig morse;           // the [interaction] values, changed by the entry's keys
 };
 
+// Where the surface integral is sampled: at the surface nodes, or at 3 or 6 Gauss points
+// per surface triangle; "auto" takes the nodes when they are at most 1/β apart and 3
+// Gauss points otherwise (DESIGN.md).
+enum class InteractionQuadrature { automatic, nodes, gauss3, gauss6 };
+
 struct InteractionConfig {
   bool enabled = false;          // key enabled: the Morse stage runs (cells needed)
+  InteractionQuadrature quadrature = InteractionQuadrature::automatic;  // key quadrature
   MorseConfig morse;             // every pair of kinds, De scaled by the kinds' factors
   double strength = 1.0;         // key strength_multiplier: multiplies every De (the paper: 5 in its two-cell scene)
   double skin = 0.3;             // [μm] neighbour-list skin   key skin_um

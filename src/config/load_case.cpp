@@ -733,11 +733,14 @@ void read_morse(const TableReader& reader, MorseConfig& morse) {
 }
 
 void read_interaction(const TableReader& root, CaseConfig& config) {
-  std::vector<std::string_view> keys{"enabled", "strength_multiplier", "skin_um", "pair"};
+  std::vector<std::string_view> keys{"enabled", "quadrature", "strength_multiplier", "skin_um", "pair"};
   keys.insert(keys.end(), morse_keys.begin(), morse_keys.end());
   const TableReader section = root.table("interaction", keys);
   InteractionConfig& interaction = config.interaction;
   assign(interaction.enabled, section.boolean("enabled"));
+  assign(interaction.quadrature,
+         section.choice("quadrature", choices_of({InteractionQuadrature::automatic, InteractionQuadrature::nodes,
+                                                  InteractionQuadrature::gauss3, InteractionQuadrature::gauss6})));
   assign(interaction.strength, section.number("strength_multiplier", Range::at_least(0)));
   assign(interaction.skin, section.number("skin_um", Range::above(0)));
   read_morse(section, interaction.morse);
@@ -775,6 +778,15 @@ const char* toml_name(BoundaryType type) {
     case BoundaryType::wall: return "wall";
     case BoundaryType::inflow: return "inflow";
     case BoundaryType::traction: return "traction";
+  }
+  return "?";
+}
+const char* toml_name(InteractionQuadrature quadrature) {
+  switch (quadrature) {
+    case InteractionQuadrature::automatic: return "auto";
+    case InteractionQuadrature::nodes: return "nodes";
+    case InteractionQuadrature::gauss3: return "gauss3";
+    case InteractionQuadrature::gauss6: return "gauss6";
   }
   return "?";
 }

@@ -39,6 +39,7 @@ const char* toml_name(TimeMode mode);
 const char* toml_name(TimeScheme scheme);
 const char* toml_name(StokesChoice choice);
 const char* toml_name(PreconditionerType type);
+const char* toml_name(InteractionQuadrature quadrature);
 const char* toml_name(CellShape shape);
 const char* toml_name(CellBody body);
 const char* toml_name(MeshResolution resolution);

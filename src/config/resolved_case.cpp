@@ -202,6 +202,7 @@ std::string resolved_case_toml(const CaseConfig& config, const DerivedQuantities
   const InteractionConfig& interaction = config.interaction;
   toml_file.table("interaction");
   toml_file.key("enabled", interaction.enabled);
+  toml_file.key("quadrature", toml_name(interaction.quadrature));
   toml_file.key("strength_multiplier", interaction.strength);
   toml_file.key("skin_um", interaction.skin);
   write_morse(toml_file, interaction.morse);

@@ -3,6 +3,8 @@
 #include <map>
 #include <sstream>
 
+#include "config/load_case.hpp"
+
 namespace rouleau {
 
 std::vector<Stage> plan_stages(const CaseConfig& config, const DerivedQuantities& derived) {
@@ -59,7 +61,11 @@ std::vector<Stage> plan_stages(const CaseConfig& config, const DerivedQuantities
       morse << "De " << interaction.morse.well_depth << " pN/um^3 x " << interaction.strength << ", beta "
             << interaction.morse.beta << " /um, r0 " << interaction.morse.zero_force_length << " um, cut-off "
             << interaction.morse.cutoff << " um (" << interaction.pairs.size()
-            << " pair laws set apart); neighbour list with a " << interaction.skin
+            << " pair laws set apart); quadrature " << toml_name(interaction.quadrature)
+            << (interaction.quadrature == InteractionQuadrature::automatic
+                    ? " (surface nodes, or 3 Gauss points per triangle when the nodes are more than 1/beta apart)"
+                    : "")
+            << "; neighbour list with a " << interaction.skin
             << " um skin, rebuilt when a surface node moves more than half of it; cells farther apart than "
                "the cut-off do no pair work; computed for the output steps";
       stages.push_back({"Morse cell-cell forces", true, morse.str()});

@@ -7,6 +7,7 @@
 #include "kernels/cell_surface.hpp"
 #include "kernels/scatter_sum.hpp"
 #include "kernels/tet4.hpp"
+#include "run/instantiate.hpp"
 #include "run/profiling_region.hpp"
 
 namespace rouleau {
@@ -204,22 +205,6 @@ void BasicCellPopulation<ExecSpace>::copy_fields_to_host(HostFields& fields) con
   }
 }
 
-// A device build instantiates its device space; a host build every host backend it has,
-// so the tests can compare them.
-#if defined(KOKKOS_ENABLE_CUDA)
-template class BasicCellPopulation<Kokkos::Cuda>;
-#elif defined(KOKKOS_ENABLE_HIP)
-template class BasicCellPopulation<Kokkos::Experimental::HIP>;
-#else
-#if defined(KOKKOS_ENABLE_SERIAL)
-template class BasicCellPopulation<Kokkos::Serial>;
-#endif
-#if defined(KOKKOS_ENABLE_OPENMP)
-template class BasicCellPopulation<Kokkos::OpenMP>;
-#endif
-#if defined(KOKKOS_ENABLE_THREADS)
-template class BasicCellPopulation<Kokkos::Threads>;
-#endif
-#endif
+ROULEAU_INSTANTIATE_FOR_EXECUTION_SPACES(BasicCellPopulation)
 
 }  // namespace rouleau

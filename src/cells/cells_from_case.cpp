@@ -42,15 +42,7 @@ SurfaceQuadrature surface_quadrature_for(InteractionQuadrature choice, const std
   double spacing = 0.0;
   for (const auto& [name, mesh] : meshes) {
     double area = 0.0;
-    for (const auto& t : mesh.outer_surface) {
-      double e1[3], e2[3];
-      for (int c = 0; c < 3; ++c) {
-        e1[c] = mesh.nodes[t[1]][c] - mesh.nodes[t[0]][c];
-        e2[c] = mesh.nodes[t[2]][c] - mesh.nodes[t[0]][c];
-      }
-      area += 0.5 * std::sqrt(std::pow(e1[1] * e2[2] - e1[2] * e2[1], 2) + std::pow(e1[2] * e2[0] - e1[0] * e2[2], 2) +
-                              std::pow(e1[0] * e2[1] - e1[1] * e2[0], 2));
-    }
+    for (const auto& t : mesh.outer_surface) area += triangle_area(mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]]);
     if (!mesh.outer_surface.empty())
       spacing = std::max(spacing, std::sqrt(4.0 * area / mesh.outer_surface.size() / std::sqrt(3.0)));
   }

@@ -11,6 +11,7 @@
 
 #include "kernels/morse_pairs.hpp"
 #include "kernels/scatter_sum.hpp"
+#include "run/instantiate.hpp"
 #include "run/profiling_region.hpp"
 
 namespace rouleau {
@@ -60,15 +61,8 @@ BasicSurfaceInteraction<ExecSpace>::BasicSurfaceInteraction(const Population& ce
     auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.reference_positions());
     for (std::size_t t = 0; t < triangles.extent(0); ++t) {
       const std::array<int, 3> nodes{triangles(t, 0), triangles(t, 1), triangles(t, 2)};
-      double e1[3], e2[3];
-      for (int c = 0; c < 3; ++c) {
-        e1[c] = x(nodes[1], c) - x(nodes[0], c);
-        e2[c] = x(nodes[2], c) - x(nodes[0], c);
-      }
-      // A_t = |e1 × e2| / 2
-      const double area = 0.5 * std::sqrt(std::pow(e1[1] * e2[2] - e1[2] * e2[1], 2) +
-                                          std::pow(e1[2] * e2[0] - e1[0] * e2[2], 2) +
-                                          std::pow(e1[0] * e2[1] - e1[1] * e2[0], 2));
+      auto corner = [&](int k) { return std::array<double, 3>{x(nodes[k], 0), x(nodes[k], 1), x(nodes[k], 2)}; };
+      const double area = triangle_area(corner(0), corner(1), corner(2));
       for (const TrianglePoint& q : rule) points.push_back({nodes, q.barycentric, area * q.weight, node_cell(nodes[0])});
     }
   }
@@ -387,20 +381,6 @@ void BasicSurfaceInteraction<ExecSpace>::copy_forces_to_nodes(const PointVectors
   gather_into(node_forces, node_force_scatter_);
 }
 
-#if defined(KOKKOS_ENABLE_CUDA)
-template class BasicSurfaceInteraction<Kokkos::Cuda>;
-#elif defined(KOKKOS_ENABLE_HIP)
-template class BasicSurfaceInteraction<Kokkos::Experimental::HIP>;
-#else
-#if defined(KOKKOS_ENABLE_SERIAL)
-template class BasicSurfaceInteraction<Kokkos::Serial>;
-#endif
-#if defined(KOKKOS_ENABLE_OPENMP)
-template class BasicSurfaceInteraction<Kokkos::OpenMP>;
-#endif
-#if defined(KOKKOS_ENABLE_THREADS)
-template class BasicSurfaceInteraction<Kokkos::Threads>;
-#endif
-#endif
+ROULEAU_INSTANTIATE_FOR_EXECUTION_SPACES(BasicSurfaceInteraction)
 
 }  // namespace rouleau

@@ -1,5 +1,5 @@
 #pragma once
-// Where the cells' surface integrals (the Morse interaction, paper eq. 11) are sampled:
+// Host-side setup data: where the cells' surface integrals (the Morse interaction, paper eq. 11) are sampled:
 // at the surface nodes with their area weights (nodal quadrature), or at Gauss points of
 // each surface triangle. A point p sits at x_p = Σ_k s_pk x_{n_pk} (up to three nodes n_pk
 // with shape values s_pk) and carries the weight w_p (its share of the reference area);
@@ -12,6 +12,7 @@
 //     b = 1 − 2a, weight 0.223381589678011, and (d, c, c) with c = 0.091576213509771,
 //     d = 1 − 2c, weight 0.109951743655322, each with its permutations.
 #include <array>
+#include <cmath>
 #include <vector>
 
 namespace rouleau {
@@ -42,6 +43,15 @@ inline std::vector<TrianglePoint> triangle_rule(SurfaceQuadrature quadrature) {
     }
   }
   return {};
+}
+
+// The area |(b − a) × (c − a)| / 2 of the triangle (a, b, c).
+inline double triangle_area(const std::array<double, 3>& a, const std::array<double, 3>& b,
+                            const std::array<double, 3>& c) {
+  const double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  const double e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+  return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
 }
 
 }  // namespace rouleau

@@ -7,6 +7,7 @@
 #include "kernels/fluid_assembly.hpp"
 #include "kernels/hex8.hpp"
 #include "kernels/scatter_sum.hpp"
+#include "run/instantiate.hpp"
 #include "run/profiling_region.hpp"
 
 namespace rouleau {
@@ -228,22 +229,6 @@ typename BasicFluidOperator<ExecSpace>::Scatter& BasicFluidOperator<ExecSpace>::
   return buffer;
 }
 
-// A device build instantiates its device space (the host spaces cannot reach its memory);
-// a host build every host backend it has, so the tests can compare them.
-#if defined(KOKKOS_ENABLE_CUDA)
-template class BasicFluidOperator<Kokkos::Cuda>;
-#elif defined(KOKKOS_ENABLE_HIP)
-template class BasicFluidOperator<Kokkos::Experimental::HIP>;
-#else
-#if defined(KOKKOS_ENABLE_SERIAL)
-template class BasicFluidOperator<Kokkos::Serial>;
-#endif
-#if defined(KOKKOS_ENABLE_OPENMP)
-template class BasicFluidOperator<Kokkos::OpenMP>;
-#endif
-#if defined(KOKKOS_ENABLE_THREADS)
-template class BasicFluidOperator<Kokkos::Threads>;
-#endif
-#endif
+ROULEAU_INSTANTIATE_FOR_EXECUTION_SPACES(BasicFluidOperator)
 
 }  // namespace rouleau

@@ -30,6 +30,12 @@ struct MorsePotential {
     const double e = exp(beta * (zero_force_length - r));
     return 2.0 * well_depth * beta * (e * e - e);
   }
+  // f(r), with φ(r) in `energy`, from one exponential.
+  KOKKOS_INLINE_FUNCTION double force_and_energy(const double r, double& energy) const {
+    const double e = exp(beta * (zero_force_length - r));
+    energy = well_depth * (e * e - 2.0 * e);
+    return 2.0 * well_depth * beta * (e * e - e);
+  }
 };
 
 }  // namespace rouleau

@@ -1,6 +1,6 @@
 #pragma once
 // The pair loop of the cell–cell surface interaction (paper eq. 11 by nodal quadrature),
-// generic in the pair physics (a Potential with energy(r) and force(r) = −φ'(r), per
+// generic in the pair physics (a Potential with force(r) = −φ'(r) and force_and_energy, per
 // pair of cell kinds) and in the list: a full list (each point sums its own force, no
 // scatter; each pair computed twice) or a half list (each pair once, the force on j
 // scattered). For the pair (i, j), d = x_i − x_j, r = |d| < r_c:
@@ -42,14 +42,16 @@ struct SurfacePairForceFunctor {
       if (r_squared >= potential.cutoff * potential.cutoff) continue;
       const double r = sqrt(r_squared);
       const double weights = w_i * point_weight(j);
+      double pair_energy = 0.0;
+      const double force = with_energy ? potential.force_and_energy(r, pair_energy) : potential.force(r);
       // F_i = w_i w_j f(r) d / r
-      const double scale = weights * potential.force(r) / r;
+      const double scale = weights * force / r;
       for (int c = 0; c < 3; ++c) force_i[c] += scale * d[c];
       if (std::is_same<List, HalfList>::value) {
         auto access = scattered_forces.access();
         for (int c = 0; c < 3; ++c) access(j, c) -= scale * d[c];
       }
-      if (with_energy) energy += weights * potential.energy(r);
+      if (with_energy) energy += weights * pair_energy;
     }
     if (std::is_same<List, HalfList>::value) {
       auto access = scattered_forces.access();

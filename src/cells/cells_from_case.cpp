@@ -76,7 +76,7 @@ CaseCells make_case_cells(const CaseConfig& config, const std::string& mesh_cach
     result.quadrature = surface_quadrature_for(config.interaction.quadrature, result.meshes, potentials);
     result.interaction = std::make_unique<SurfaceInteraction>(*result.population, cell_kind,
                                                               static_cast<int>(config.cell_kinds.size()), potentials,
-                                                              config.interaction.skin, false, result.quadrature);
+                                                              config.interaction.skin, true, result.quadrature);
   }
   return result;
 }

@@ -213,10 +213,10 @@ void BasicSurfaceInteraction<ExecSpace>::rebuild() {
       "rouleau::SurfaceInteraction::point_active", Kokkos::RangePolicy<ExecSpace>(0, n_points),
       KOKKOS_LAMBDA(const int i) { point_active(i) = active_cells(point_cell(i)); });
 
-  // The bins: no smaller than the search radius, over the active cells' boxes, at most
-  // about 8 per point.
+  // The bins: half the search radius (searched two deep), over the active cells' boxes,
+  // at most about 8 per point (larger bins then).
   BinGrid grid{};
-  grid.bin_size = search_radius_;
+  grid.bin_size = 0.5 * search_radius_;
   if (active_cells_ == 0) {
     for (int d = 0; d < 3; ++d) lower[d] = upper[d] = 0.0;
   }
@@ -228,6 +228,7 @@ void BasicSurfaceInteraction<ExecSpace>::rebuild() {
     grid.lower[d] = lower[d];
     grid.bins[d] = std::max(1, static_cast<int>(std::ceil((upper[d] - lower[d]) / grid.bin_size)));
   }
+  grid.reach = static_cast<int>(std::ceil(search_radius_ / grid.bin_size - 1e-12));
   grid_ = grid;
   const int n_bins = grid.num_bins();
 

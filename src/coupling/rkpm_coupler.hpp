@@ -1,0 +1,71 @@
+#pragma once
+// The RKPM transfer between the fixed fluid mesh and the moving solid points (paper eqs.
+// 6, 15, 16; kernels/rkpm.hpp): setup (the fluid nodes in each point's support, found
+// through bins of the fluid nodes built once, and the shape functions, corrected where
+// the plain window does not reproduce linear fields) apart from apply: interpolation, a
+// pure gather, and spreading, its exact transpose through a ScatterView, so that
+// ⟨I u, F⟩ = ⟨u, S F⟩: the power the cells put into the fluid is the power it takes back.
+#include <Kokkos_Core.hpp>
+#include <Kokkos_ScatterView.hpp>
+
+#include "mesh/fluid_mesh.hpp"
+
+namespace rouleau {
+
+template <class ExecSpace>
+class BasicRkpmCoupler {
+ public:
+  using PointVectors = Kokkos::View<double* [3]>;
+
+  // Supports a_Jd = support_factor × the largest extent along d of the elements at dof
+  // node J (2 elements by default). Periodic directions wrap (minimum image).
+  explicit BasicRkpmCoupler(const FluidMesh& mesh, double support_factor = 2.0);
+
+  // Finds the supports of `points` (point, 3) [μm] and computes their shape functions.
+  // Throws std::runtime_error when a point has no fluid node in its support or a
+  // singular moment matrix (a point outside the fluid domain).
+  void update(const PointVectors& points);
+
+  // values(p, c) = Σ_J Φ_J(x_p) nodal(stride · J + c), c = 0, 1, 2.
+  void interpolate(const Kokkos::View<const double*>& nodal, int stride, const PointVectors& values) const;
+  // nodal(stride · J + c) += Σ_p Φ_J(x_p) forces(p, c): the transpose of interpolate.
+  void spread(const PointVectors& forces, const Kokkos::View<double*>& nodal, int stride) const;
+
+  int num_points() const { return num_points_; }
+  // The CSR rows: the dof nodes of each point's support and their shape functions.
+  const Kokkos::View<int*>& offsets() const { return offsets_; }
+  const Kokkos::View<int*>& nodes() const { return nodes_; }
+  const Kokkos::View<double*>& shape_functions() const { return shape_functions_; }
+  // How many points needed the linear correction at the last update.
+  int corrected_points() const { return corrected_points_; }
+  // Forces the correction everywhere (tests: both paths agree where both apply).
+  void always_correct(bool yes) { always_correct_ = yes; }
+
+ private:
+  int num_dof_nodes_ = 0, num_points_ = 0, corrected_points_ = 0;
+  bool always_correct_ = false;
+  double lower_[3], length_[3];
+  int periodic_[3];
+  double bin_size_[3];
+  int bins_[3];
+  Kokkos::View<double* [3]> node_position_;  // dof node positions [μm]
+  Kokkos::View<double* [3]> node_support_;   // a_Jd [μm]
+  Kokkos::View<int*> bin_offsets_, binned_nodes_;
+  Kokkos::View<int*> offsets_, nodes_;
+  Kokkos::View<double*> shape_functions_;
+  // Spreading's persistent buffers (per-thread copies on CPUs, the atomic target on GPUs).
+  using Scatter = Kokkos::Experimental::ScatterView<double*, typename Kokkos::View<double*>::array_layout,
+                                                    typename ExecSpace::device_type>;
+  mutable Kokkos::View<double*> spread_sum_;
+  mutable Scatter spread_scatter_;
+
+ public:
+  // (Kernels with lambdas must be public for CUDA.)
+  void fill_rows(const PointVectors& points, bool count_only);
+};
+
+using RkpmCoupler = BasicRkpmCoupler<Kokkos::DefaultExecutionSpace>;
+
+extern template class BasicRkpmCoupler<Kokkos::DefaultExecutionSpace>;
+
+}  // namespace rouleau

@@ -25,6 +25,25 @@ KOKKOS_INLINE_FUNCTION double cubic_bspline_window(double z) {
   return 0.0;
 }
 
+// The fluid nodes' bins (built once, at least as wide as the largest support, so a
+// point's support lies in the 3³ bins around its own) and the periodic minimum image.
+struct RkpmSupportSearch {
+  double lower[3], length[3], bin_size[3];
+  int periodic[3], bins[3];
+
+  // x_J − x along d, by the minimum image on periodic directions.
+  KOKKOS_INLINE_FUNCTION double offset(double node, double point, int d) const {
+    double y = node - point;
+    if (periodic[d]) y -= length[d] * floor(y / length[d] + 0.5);
+    return y;
+  }
+  KOKKOS_INLINE_FUNCTION int bin_coordinate(double x, int d) const {
+    int i = static_cast<int>(floor((x - lower[d]) / bin_size[d]));
+    if (periodic[d]) return ((i % bins[d]) + bins[d]) % bins[d];
+    return i < 0 ? 0 : (i >= bins[d] ? bins[d] - 1 : i);
+  }
+};
+
 // Solves the 4×4 symmetric system M c = e0 by Gaussian elimination with partial
 // pivoting in registers; returns false when M is singular.
 KOKKOS_INLINE_FUNCTION bool solve_moment_system(double m[4][4], double c[4]) {

@@ -13,27 +13,6 @@
 
 namespace rouleau {
 
-namespace {
-
-// The device-side description of the fluid nodes' bins and supports for one kernel.
-struct SupportSearch {
-  double lower[3], length[3], bin_size[3];
-  int periodic[3], bins[3];
-
-  // x_J − x along d, by the minimum image on periodic directions.
-  KOKKOS_INLINE_FUNCTION double offset(double node, double point, int d) const {
-    double y = node - point;
-    if (periodic[d]) y -= length[d] * floor(y / length[d] + 0.5);
-    return y;
-  }
-  KOKKOS_INLINE_FUNCTION int bin_coordinate(double x, int d) const {
-    int i = static_cast<int>(floor((x - lower[d]) / bin_size[d]));
-    if (periodic[d]) return ((i % bins[d]) + bins[d]) % bins[d];
-    return i < 0 ? 0 : (i >= bins[d] ? bins[d] - 1 : i);
-  }
-};
-
-}  // namespace
 
 template <class ExecSpace>
 BasicRkpmCoupler<ExecSpace>::BasicRkpmCoupler(const FluidMesh& mesh, double support_factor)
@@ -78,27 +57,20 @@ BasicRkpmCoupler<ExecSpace>::BasicRkpmCoupler(const FluidMesh& mesh, double supp
 
   // Bins of the fluid nodes, built once: no narrower than the largest support, so a
   // point's support lies in the 3³ bins around its own.
+  RkpmSupportSearch& search = search_;
   for (int d = 0; d < 3; ++d) {
-    lower_[d] = mesh.lower[d];
-    length_[d] = mesh.upper[d] - mesh.lower[d];
-    periodic_[d] = mesh.periodic[d] ? 1 : 0;
-    bins_[d] = std::max(1, static_cast<int>(std::floor(length_[d] / largest_support[d])));
-    bin_size_[d] = length_[d] / bins_[d];
+    search.lower[d] = mesh.lower[d];
+    search.length[d] = mesh.upper[d] - mesh.lower[d];
+    search.periodic[d] = mesh.periodic[d] ? 1 : 0;
+    search.bins[d] = std::max(1, static_cast<int>(std::floor(search.length[d] / largest_support[d])));
+    search.bin_size[d] = search.length[d] / search.bins[d];
   }
-  SupportSearch search{};
-  for (int d = 0; d < 3; ++d) {
-    search.lower[d] = lower_[d];
-    search.length[d] = length_[d];
-    search.bin_size[d] = bin_size_[d];
-    search.periodic[d] = periodic_[d];
-    search.bins[d] = bins_[d];
-  }
-  const int n_bins = bins_[0] * bins_[1] * bins_[2];
+  const int n_bins = search.bins[0] * search.bins[1] * search.bins[2];
   std::vector<std::vector<int>> members(n_bins);
   for (int node = 0; node < num_dof_nodes_; ++node) {
     int b[3];
     for (int d = 0; d < 3; ++d) b[d] = search.bin_coordinate(position(node, d), d);
-    members[(b[2] * bins_[1] + b[1]) * bins_[0] + b[0]].push_back(node);
+    members[(b[2] * search.bins[1] + b[1]) * search.bins[0] + b[0]].push_back(node);
   }
   bin_offsets_ = Kokkos::View<int*>("rouleau::RkpmCoupler::bin_offsets", n_bins + 1);
   binned_nodes_ = Kokkos::View<int*>("rouleau::RkpmCoupler::binned_nodes", num_dof_nodes_);
@@ -116,14 +88,7 @@ BasicRkpmCoupler<ExecSpace>::BasicRkpmCoupler(const FluidMesh& mesh, double supp
 
 template <class ExecSpace>
 void BasicRkpmCoupler<ExecSpace>::fill_rows(const PointVectors& points, bool count_only) {
-  SupportSearch search{};
-  for (int d = 0; d < 3; ++d) {
-    search.lower[d] = lower_[d];
-    search.length[d] = length_[d];
-    search.bin_size[d] = bin_size_[d];
-    search.periodic[d] = periodic_[d];
-    search.bins[d] = bins_[d];
-  }
+  const RkpmSupportSearch search = search_;
   auto node_position = node_position_;
   auto node_support = node_support_;
   auto bin_offsets = bin_offsets_;

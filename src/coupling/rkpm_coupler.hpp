@@ -8,6 +8,7 @@
 #include <Kokkos_Core.hpp>
 #include <Kokkos_ScatterView.hpp>
 
+#include "kernels/rkpm.hpp"
 #include "mesh/fluid_mesh.hpp"
 
 namespace rouleau {
@@ -44,10 +45,7 @@ class BasicRkpmCoupler {
  private:
   int num_dof_nodes_ = 0, num_points_ = 0, corrected_points_ = 0;
   bool always_correct_ = false;
-  double lower_[3], length_[3];
-  int periodic_[3];
-  double bin_size_[3];
-  int bins_[3];
+  RkpmSupportSearch search_{};
   Kokkos::View<double* [3]> node_position_;  // dof node positions [μm]
   Kokkos::View<double* [3]> node_support_;   // a_Jd [μm]
   Kokkos::View<int*> bin_offsets_, binned_nodes_;

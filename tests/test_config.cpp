@@ -15,6 +15,7 @@
 #include "config/derived.hpp"
 #include "config/load_case.hpp"
 #include "config/resolved_case.hpp"
+#include "geometry/grading.hpp"
 #include "util/errors.hpp"
 
 namespace {
@@ -133,6 +134,11 @@ void expect_identical_cases(const CaseConfig& a, const CaseConfig& b) {
   EXPECT_EQ(a.interaction.strength, b.interaction.strength);
   EXPECT_EQ(a.interaction.skin, b.interaction.skin);
   expect_same_morse(a.interaction.morse, b.interaction.morse);
+  EXPECT_EQ(a.coupling.support_elements, b.coupling.support_elements);
+  EXPECT_EQ(a.coupling.stable_step_factor, b.coupling.stable_step_factor);
+  EXPECT_EQ(a.coupling.allow_unstable_step, b.coupling.allow_unstable_step);
+  EXPECT_EQ(a.coupling.gravity, b.coupling.gravity);
+  EXPECT_EQ(a.scene.skip_unneeded_stages, b.scene.skip_unneeded_stages);
   ASSERT_EQ(a.interaction.pairs.size(), b.interaction.pairs.size());
   for (std::size_t i = 0; i < a.interaction.pairs.size(); ++i) {
     EXPECT_EQ(a.interaction.pairs[i].kind_a, b.interaction.pairs[i].kind_a);
@@ -488,7 +494,8 @@ TEST(ConfigCells, CellsTakeTheirKindCentreAndOrientation) {
   const std::string path = write_case_file(
       "cells.toml", minimal_case + "[cell_kinds.stiff]\nshear_modulus_Pa = 100\n"
                                    "[[cells]]\ncenter_um = [5, 10, 15]\n"
-                                   "[[cells]]\nkind = \"stiff\"\ncenter_um = [5, 10, 5.5]\norientation_deg = [0, 90, -45]\n");
+                                   "[[cells]]\nkind = \"stiff\"\ncenter_um = [5, 10, 5.5]\norientation_deg = [0, 90, -45]\n"
+                                   "[coupling]\nallow_unstable_step = true\n");
   const CaseConfig config = rouleau::load_case(path);
   ASSERT_EQ(config.cells.size(), 2u);
   EXPECT_EQ(config.cells[0].kind, "normal");
@@ -499,9 +506,42 @@ TEST(ConfigCells, CellsTakeTheirKindCentreAndOrientation) {
   EXPECT_EQ(config.cells[1].orientation, (std::array<double, 3>{0, 90, -45}));
 }
 
+TEST(ConfigCoupling, StableStepIsViscosityTimesElementOverMembraneModulus) {
+  // One capsule (G_s = 4.2 pN/μm) in good_case's fluid: Δt ≤ C μ h_f / G_s with h_f the
+  // smallest element edge; a step above it loads only when the case allows it.
+  const std::vector<std::string> one_capsule{"cells=[{kind=\"capsule\", center_um=[20, 0, 10]}]",
+                                             "coupling.stable_step_factor=0.5", "time.dt_s=1e-6"};
+  const CaseConfig config = rouleau::load_case(good_case, one_capsule);
+  const rouleau::DerivedQuantities derived = rouleau::derive_quantities(config);
+  double h_f = 1e300;
+  for (int d = 0; d < 3; ++d)
+    h_f = std::min(h_f, rouleau::smallest_graded_interval(config.domain.lower[d], config.domain.upper[d],
+                                                          config.domain.elements[d], config.domain.wall_grading[d]));
+  const CellKindConfig& capsule = kind_of(config, "capsule");
+  const double expected = 0.5 * config.fluid.viscosity * h_f / (capsule.shear_modulus * capsule.shell_thickness);
+  std::printf("stable step %.4g s (h_f %.4g um, G_s %.4g pN/um)\n", derived.stable_dt, h_f,
+              capsule.shear_modulus * capsule.shell_thickness);
+  EXPECT_NEAR(derived.stable_dt, expected, 1e-15 * expected);
+  auto with_step = [&](double dt, bool allow) {
+    std::vector<std::string> overrides = one_capsule;
+    std::ostringstream step;
+    step.precision(17);
+    step << "time.dt_s=" << dt;
+    overrides.push_back(step.str());
+    overrides.push_back(std::string("coupling.allow_unstable_step=") + (allow ? "true" : "false"));
+    return overrides;
+  };
+  EXPECT_NO_THROW(rouleau::load_case(good_case, with_step(0.9 * expected, false)));
+  EXPECT_EQ(load_error(good_case, with_step(1.1 * expected, false)).key(), "time.dt_s");
+  EXPECT_NO_THROW(rouleau::load_case(good_case, with_step(1.1 * expected, true)));
+  // no cells, or a steady solve: no coupling step to bound
+  EXPECT_EQ(rouleau::derive_quantities(rouleau::load_case(good_case)).stable_dt, 0.0);
+}
+
 TEST(ConfigCells, OverridesReachKindsAndCells) {
   const CaseConfig config = rouleau::load_case(
-      good_case, {"cell_kinds.sickle.shear_modulus_Pa=100", "cells=[{kind=\"capsule\", center_um=[20, 0, 10]}]"});
+      good_case, {"cell_kinds.sickle.shear_modulus_Pa=100", "cells=[{kind=\"capsule\", center_um=[20, 0, 10]}]",
+                  "time.dt_s=1e-5"});
   EXPECT_DOUBLE_EQ(kind_of(config, "sickle").shear_modulus, 100.0);
   ASSERT_EQ(config.cells.size(), 1u);
   EXPECT_EQ(config.cells[0].kind, "capsule");
@@ -549,7 +589,9 @@ TEST(ConfigResolved, RoundTripGivesAnIdenticalCase) {
        " {center_um=[30, 0.7, 10]}, {kind=\"stiff-1\", center_um=[20, -3, 10]}, {kind=\"ball\", center_um=[3, 2, 3]}]",
        "interaction.enabled=true", "interaction.quadrature=gauss6", "interaction.strength_multiplier=5", "interaction.beta_per_um=3.7",
        "interaction.pair=[{kind_a=\"sickle\", kind_b=\"ball\", well_depth_pN_um3=17.1, cutoff_um=2.2}]",
-       "cell_kinds.ball.morse_well_depth_factor=0.3"},
+       "cell_kinds.ball.morse_well_depth_factor=0.3", "coupling.support_elements=2.5",
+       "coupling.stable_step_factor=0.37", "coupling.allow_unstable_step=true",
+       "coupling.gravity_m_s2=[0.1, -9.81, 0.3]", "scene.skip_unneeded_stages=false"},
   };
   for (const auto& overrides : variants) {
     const CaseConfig original = rouleau::load_case(good_case, overrides);

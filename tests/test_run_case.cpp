@@ -51,7 +51,7 @@ TEST(RunCase, ShearFlowOfPlasmaHasRelativeViscosityOne) {
 }
 
 TEST(RunCase, CellsAreWrittenInPlaceBesideTheFluid) {
-  // The cell gallery at the coarse preset for two steps: the output holds a second mesh,
+  // The cell gallery at the coarse preset (a steady solve, the cells in place): the output holds a second mesh,
   // "cells", with every cell's nodes, moving coordinates, the nodal fields and the cell
   // ids; each cell's node cloud sits around its placement's centre, within its size.
   const std::string out = fresh_output_dir("cells");
@@ -69,7 +69,7 @@ TEST(RunCase, CellsAreWrittenInPlaceBesideTheFluid) {
   EXPECT_NE(xdmf.find("internal_force_pN"), std::string::npos);
   EXPECT_NE(xdmf.find("interaction_force_pN"), std::string::npos);
   // The gallery's cells are more than the 3 μm cut-off apart: no interaction force at all.
-  const Dataset interaction = read_dataset(out + "/fields_000002.h5", "/cells/interaction_force_pN", false);
+  const Dataset interaction = read_dataset(out + "/fields_000001.h5", "/cells/interaction_force_pN", false);
   ASSERT_FALSE(interaction.doubles.empty());
   for (const double f : interaction.doubles) ASSERT_EQ(f, 0.0);
   // The cells' diagnostics: at rest, no elastic energy and no volume change; the list was
@@ -79,8 +79,8 @@ TEST(RunCase, CellsAreWrittenInPlaceBesideTheFluid) {
   EXPECT_EQ(last.at("interaction_energy_pN_um"), 0.0);
   EXPECT_EQ(last.at("neighbor_list_rebuilds"), 1.0);
   EXPECT_NEAR(last.at("largest_relative_volume_change"), 0.0, 1e-14);
-  const Dataset ids = read_dataset(out + "/fields_000002.h5", "/cells/cell_id", false);
-  const Dataset x = read_dataset(out + "/fields_000002.h5", "/cells/coordinates", false);
+  const Dataset ids = read_dataset(out + "/fields_000001.h5", "/cells/cell_id", false);
+  const Dataset x = read_dataset(out + "/fields_000001.h5", "/cells/coordinates", false);
   const Dataset tets = read_dataset(out + "/fields_mesh.h5", "/cells/connectivity", true);
   ASSERT_EQ(x.doubles.size(), 3 * ids.doubles.size());
   ASSERT_EQ(tets.dimensions.size(), 2u);

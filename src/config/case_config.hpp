@@ -171,6 +171,27 @@ struct InteractionConfig {
   std::vector<MorsePairConfig> pairs;  // [[interaction.pair]]
 };
 
+// ---- the fluid–structure coupling (paper eqs. 5–7, 15, 16; DESIGN.md "Coupling")
+struct CouplingConfig {
+  // RKPM support radius a_J = support_elements × the local element size at fluid node J.
+  double support_elements = 2.0;     // key support_elements
+  // C in the explicit coupling's stable step Δt ≤ C μ h_f / G_s (derive_quantities()).
+  double stable_step_factor = 1.0;   // key stable_step_factor
+  // Run even when time.dt_s exceeds the stable step (stability studies).  key allow_unstable_step
+  bool allow_unstable_step = false;
+  // Gravity for the buoyancy term (ρ_s − ρ_f) g of eq. (7) [μm/s²].   key gravity_m_s2
+  std::array<double, 3> gravity{0.0, 0.0, 0.0};
+};
+
+// What the scene builds and runs (DESIGN.md, "skip what a scene doesn't need").
+struct SceneConfig {
+  // Leave out the stages that cannot change the result (beyond round-off): the Morse
+  // stage between cells apart, the inertia/buoyancy stage when ρ_s = ρ_f, the RKPM
+  // correction where the plain window reproduces linear fields, neighbour-list rebuilds
+  // while no node moved half the skin. false runs them all (to check that they agree).
+  bool skip_unneeded_stages = true;  // key skip_unneeded_stages
+};
+
 struct OutputConfig {
   bool write_fields = true;       // key fields
   int fields_every_steps = 1;     // key fields_every_steps
@@ -190,6 +211,8 @@ struct CaseConfig {
   std::vector<CellKindConfig> cell_kinds;  // [cell_kinds.NAME]: the built-in kinds, changed or added to
   std::vector<CellPlacement> cells;        // [[cells]]: empty = fluid only
   InteractionConfig interaction;           // [interaction]
+  CouplingConfig coupling;                 // [coupling]
+  SceneConfig scene;                       // [scene]
 };
 
 // Values derived from a case (written to the resolved configuration).
@@ -200,6 +223,10 @@ struct DerivedQuantities {
   double reynolds = 0.0;        // ρUL/μ
   bool stokes = false;          // the Stokes limit is used
   std::string stokes_reason;    // why (or why not), for --explain
+  // The explicit coupling's stable step estimate [s] (0 when the case has no cells or
+  // does not step in time), and how it was found, for --explain and the log.
+  double stable_dt = 0.0;
+  std::string stable_dt_reason;
 };
 
 }  // namespace rouleau

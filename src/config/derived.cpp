@@ -5,6 +5,9 @@
 #include <cstdio>
 #include <string>
 
+#include "config/cell_kinds.hpp"
+#include "geometry/grading.hpp"
+
 namespace rouleau {
 namespace {
 
@@ -57,6 +60,43 @@ double derived_velocity_scale(const CaseConfig& config, double length_scale) {
   return speed > 0.0 ? speed : 1.0;
 }
 
+// The smallest fluid element edge [μm].
+double smallest_fluid_element(const DomainConfig& domain) {
+  double smallest = 0.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double h = smallest_graded_interval(domain.lower[axis], domain.upper[axis], domain.elements[axis],
+                                              domain.wall_grading[axis]);
+    if (axis == 0 || h < smallest) smallest = h;
+  }
+  return smallest;
+}
+
+// The explicit coupling's stable step (DESIGN.md, "Coupling"): a membrane of modulus G_s
+// relaxes a wrinkle of the fluid mesh's wavelength h_f through fluid of viscosity μ at the
+// rate G_s / (μ h_f), so Δt ≤ C μ h_f / G_s. A shell's G_s = G h; a filled body is taken as
+// a layer one fluid element thick (the fluid resolves nothing thinner): G_s = G h_f.
+void derive_stable_step(const CaseConfig& config, DerivedQuantities& derived) {
+  if (config.cells.empty() || config.time.mode == TimeMode::steady) return;
+  const double h_f = smallest_fluid_element(config.domain);
+  double stiffest = 0.0;
+  std::string stiffest_kind;
+  for (const CellPlacement& cell : config.cells) {
+    const CellKindConfig& kind = *find_cell_kind(config, cell.kind);
+    const double layer = kind.body == CellBody::shell ? kind.shell_thickness : h_f;
+    const double membrane_modulus = kind.shear_modulus * layer;
+    if (membrane_modulus > stiffest) {
+      stiffest = membrane_modulus;
+      stiffest_kind = kind.name;
+    }
+  }
+  const double C = config.coupling.stable_step_factor;
+  derived.stable_dt = C * config.fluid.viscosity * h_f / stiffest;
+  derived.stable_dt_reason = "C mu h_f / G_s = " + formatted("%g", C) + " x " +
+                             formatted("%g", config.fluid.viscosity) + " Pa s x " + formatted("%g", h_f) +
+                             " um / " + formatted("%g", stiffest) + " pN/um (kind " + stiffest_kind +
+                             ", the stiffest membrane; smallest fluid element h_f)";
+}
+
 }  // namespace
 
 DerivedQuantities derive_quantities(const CaseConfig& config) {
@@ -87,6 +127,7 @@ DerivedQuantities derive_quantities(const CaseConfig& config) {
                          : reynolds + " ≥ threshold " + threshold + ": convective term kept (Navier–Stokes)";
       break;
   }
+  derive_stable_step(config, derived);
   return derived;
 }
 

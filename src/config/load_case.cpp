@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "config/cell_kinds.hpp"
+#include "config/derived.hpp"
 #include "geometry/cell_shapes.hpp"
 #include "util/errors.hpp"
 
@@ -764,6 +765,34 @@ void read_interaction(const TableReader& root, CaseConfig& config) {
     section.fail("enabled", "the interaction acts between cells, and the case has no [[cells]]");
 }
 
+// ---- the coupling and the scene
+
+void read_coupling(const TableReader& root, CouplingConfig& coupling) {
+  const TableReader section = root.table(
+      "coupling", {"support_elements", "stable_step_factor", "allow_unstable_step", "gravity_m_s2"});
+  // Below one element a point's support may hold too few fluid nodes for the moment matrix.
+  assign(coupling.support_elements, section.number("support_elements", Range::closed(1.0, 8.0)));
+  assign(coupling.stable_step_factor, section.number("stable_step_factor", Range::above(0)));
+  assign(coupling.allow_unstable_step, section.boolean("allow_unstable_step"));
+  if (const auto gravity = section.number3("gravity_m_s2"))
+    for (int d = 0; d < 3; ++d) coupling.gravity[d] = (*gravity)[d] * 1e6;  // m/s² → μm/s²
+}
+
+void read_scene(const TableReader& root, SceneConfig& scene) {
+  const TableReader section = root.table("scene", {"skip_unneeded_stages"});
+  assign(scene.skip_unneeded_stages, section.boolean("skip_unneeded_stages"));
+}
+
+// The explicit coupling refuses a step above its stable estimate unless asked to force it.
+void check_time_step(const CaseConfig& config) {
+  const DerivedQuantities derived = derive_quantities(config);
+  if (derived.stable_dt <= 0.0 || config.time.dt <= derived.stable_dt || config.coupling.allow_unstable_step) return;
+  throw InputError(config.source_file, "time.dt_s",
+                   format_number(config.time.dt) + " s exceeds the explicit coupling's stable step " +
+                       format_number(derived.stable_dt) + " s (" + derived.stable_dt_reason +
+                       "); lower time.dt_s, or set coupling.allow_unstable_step = true to run it anyway");
+}
+
 }  // namespace
 
 bool is_bare_toml_key(std::string_view key) {
@@ -835,7 +864,7 @@ CaseConfig load_case(const std::string& path, const std::vector<std::string>& ov
   // [derived] is written by resolved_case_toml() for the reader; it is output-only.
   const TableReader root(&document, "", errors,
                          {"case", "fluid", "domain", "boundary", "time", "solver", "scales", "output",
-                          "cell_kinds", "cells", "interaction", "derived"});
+                          "cell_kinds", "cells", "interaction", "coupling", "scene", "derived"});
   CaseConfig config;
   config.source_file = path;
   read_case_section(root, path, config);
@@ -849,8 +878,11 @@ CaseConfig load_case(const std::string& path, const std::vector<std::string>& ov
   read_cell_kinds(root, config.cell_kinds);
   read_cells(root, config);
   read_interaction(root, config);
+  read_coupling(root, config.coupling);
+  read_scene(root, config.scene);
   // The cells against the domain and each other (exact shapes, before any meshing).
   check_cell_placement(config);
+  check_time_step(config);
   return config;
 }
 

@@ -61,14 +61,14 @@ class TomlWriter {
   std::ostringstream out_;
 };
 
-// The density in kg/m³ whose conversion at load gives back exactly `internal`
-// (the plain quotient can be one unit in the last place off).
-double density_in_file_units(double internal) {
-  const double quotient = internal / density_kg_m3_to_internal;
+// The value in the file's unit whose conversion at load (× file_to_internal) gives back
+// exactly `internal` (the plain quotient can be one unit in the last place off).
+double in_file_units(double internal, double file_to_internal) {
+  const double quotient = internal / file_to_internal;
   double below = quotient, above = quotient;
   for (int step = 0; step < 8; ++step) {
-    if (above * density_kg_m3_to_internal == internal) return above;
-    if (below * density_kg_m3_to_internal == internal) return below;
+    if (above * file_to_internal == internal) return above;
+    if (below * file_to_internal == internal) return below;
     above = std::nextafter(above, HUGE_VAL);
     below = std::nextafter(below, -HUGE_VAL);
   }
@@ -107,7 +107,7 @@ void write_cell_kind(TomlWriter& toml_file, const CellKindConfig& kind) {
     toml_file.key("poisson_ratio", kind.poisson_ratio, "K = 2G(1+ν)/(3(1−2ν)) = " + toml_float(kind.bulk_modulus) + " Pa");
   else
     toml_file.key("bulk_modulus_Pa", kind.bulk_modulus, "ν = (3K−2G)/(2(3K+G)) = " + toml_float(kind.poisson_ratio));
-  toml_file.key("density_kg_m3", density_in_file_units(kind.density));
+  toml_file.key("density_kg_m3", in_file_units(kind.density, density_kg_m3_to_internal));
   toml_file.key("morse_well_depth_factor", kind.morse_well_depth_factor);
 }
 
@@ -135,7 +135,7 @@ std::string resolved_case_toml(const CaseConfig& config, const DerivedQuantities
   toml_file.key("description", config.description);
 
   toml_file.table("fluid");
-  toml_file.key("density_kg_m3", density_in_file_units(config.fluid.density));
+  toml_file.key("density_kg_m3", in_file_units(config.fluid.density, density_kg_m3_to_internal));
   toml_file.key("viscosity_Pa_s", config.fluid.viscosity);
   toml_file.key("body_force_Pa_um", config.fluid.body_force);
 
@@ -213,6 +213,17 @@ std::string resolved_case_toml(const CaseConfig& config, const DerivedQuantities
     write_morse(toml_file, pair.morse);
   }
 
+  const CouplingConfig& coupling = config.coupling;
+  toml_file.table("coupling");
+  toml_file.key("support_elements", coupling.support_elements);
+  toml_file.key("stable_step_factor", coupling.stable_step_factor);
+  toml_file.key("allow_unstable_step", coupling.allow_unstable_step);
+  toml_file.key("gravity_m_s2", std::array<double, 3>{in_file_units(coupling.gravity[0], 1e6),
+                                                      in_file_units(coupling.gravity[1], 1e6),
+                                                      in_file_units(coupling.gravity[2], 1e6)});
+  toml_file.table("scene");
+  toml_file.key("skip_unneeded_stages", config.scene.skip_unneeded_stages);
+
   toml_file.table("derived", "Output only: derived from the keys above; ignored when this file is loaded.");
   toml_file.key("length_scale_um", derived.length_scale);
   toml_file.key("velocity_scale_um_s", derived.velocity_scale);
@@ -220,6 +231,10 @@ std::string resolved_case_toml(const CaseConfig& config, const DerivedQuantities
   toml_file.key("reynolds", derived.reynolds);
   toml_file.key("stokes", derived.stokes);
   toml_file.key("stokes_reason", derived.stokes_reason);
+  if (derived.stable_dt > 0.0) {
+    toml_file.key("stable_dt_s", derived.stable_dt);
+    toml_file.key("stable_dt_reason", derived.stable_dt_reason);
+  }
   return toml_file.text();
 }
 

@@ -74,6 +74,7 @@ FluidSolver::FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid,
       scales_(scales),
       settings_(settings),
       stokes_(stokes),
+      density_(fluid.density),
       boundary_(build_boundary_conditions(mesh, boundary, scales)),
       block_jacobi_(mesh.num_dof_nodes),
       gmres_(mesh.num_unknowns(), gmres_settings(settings)) {
@@ -166,30 +167,60 @@ std::vector<std::array<double, 3>> FluidSolver::boundary_forces(const std::vecto
   return forces;
 }
 
-std::array<double, 3> FluidSolver::mean_velocity() const {
+std::array<double, 5> FluidSolver::velocity_integrals() const {
   const auto geometry = operator_.geometry();
   const auto dof_nodes = operator_.mesh().element_dof_nodes;
   const auto state = state_;
-  double volume = 0.0, u[3] = {0.0, 0.0, 0.0};
+  double v = 0.0, ux = 0.0, uy = 0.0, uz = 0.0, uu = 0.0;
+  // Gauss quadrature of 1, u and |u|² with u(ξ_q) = Σ_a N_a(ξ_q) u_a
   Kokkos::parallel_reduce(
-      "rouleau::FluidSolver::mean_velocity", Kokkos::RangePolicy<ExecSpace>(0, operator_.mesh().num_elements),
-      KOKKOS_LAMBDA(const int e, double& v, double& ux, double& uy, double& uz) {
+      "rouleau::FluidSolver::velocity_integrals", Kokkos::RangePolicy<ExecSpace>(0, operator_.mesh().num_elements),
+      KOKKOS_LAMBDA(const int e, double& volume, double& mx, double& my, double& mz, double& squared) {
         for (int q = 0; q < Hex8::quadrature_points; ++q) {
           double xi[3];
           Hex8::quadrature_point(q, xi);
           const double dv = geometry(e, q, 9);
-          v += dv;
+          double u[3] = {0.0, 0.0, 0.0};
           for (int a = 0; a < Hex8::nodes; ++a) {
-            const double w = Hex8::shape(a, xi) * dv;
+            const double N = Hex8::shape(a, xi);
             const int n = dof_nodes(e, a);
-            ux += w * state(4 * n);
-            uy += w * state(4 * n + 1);
-            uz += w * state(4 * n + 2);
+            for (int c = 0; c < 3; ++c) u[c] += N * state(4 * n + c);
           }
+          volume += dv;
+          mx += dv * u[0];
+          my += dv * u[1];
+          mz += dv * u[2];
+          squared += dv * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
         }
       },
-      volume, u[0], u[1], u[2]);
-  return {u[0] / volume * scales_.velocity, u[1] / volume * scales_.velocity, u[2] / volume * scales_.velocity};
+      v, ux, uy, uz, uu);
+  return {v, ux, uy, uz, uu};
+}
+
+std::array<double, 3> FluidSolver::mean_velocity() const {
+  const auto integrals = velocity_integrals();
+  const double U = scales_.velocity;
+  return {integrals[1] / integrals[0] * U, integrals[2] / integrals[0] * U, integrals[3] / integrals[0] * U};
+}
+
+double FluidSolver::kinetic_energy() const {
+  // ½ ρ ∫ |u|² dV, the integral in scaled (x/L, u/U) variables: × U² L³
+  const double U = scales_.velocity, L = scales_.length;
+  return 0.5 * density_ * velocity_integrals()[4] * U * U * L * L * L;
+}
+
+void FluidSolver::set_immersed_forces(const ConstVector& nodal_forces) {
+  if (nodal_load_.extent(0) == 0) {
+    nodal_load_ = Vector("rouleau::FluidSolver::nodal_load", state_.extent(0));
+    operator_.set_nodal_load(nodal_load_);
+  }
+  // b = traction loads + F / (P L²), the forces in the residual's scale
+  const auto traction = boundary_.traction_load;
+  const auto load = nodal_load_;
+  const double inverse_force_scale = 1.0 / scales_.force();
+  Kokkos::parallel_for(
+      "rouleau::FluidSolver::set_immersed_forces", Kokkos::RangePolicy<ExecSpace>(0, load.extent(0)),
+      KOKKOS_LAMBDA(const int i) { load(i) = traction(i) + inverse_force_scale * nodal_forces(i); });
 }
 
 void FluidSolver::rebuild_preconditioner() {

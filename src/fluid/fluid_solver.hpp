@@ -46,6 +46,11 @@ class FluidSolver {
   // Constant body force density everywhere [pN/μm³].
   void set_uniform_body_force(const std::array<double, 3>& force_density);
 
+  // Nodal forces [pN] on the fluid's unknowns, node-interleaved like the state (velocity
+  // entries read): the cells' forces spread by RKPM (paper eq. 16). They enter the
+  // momentum residual as nodal loads, not the stabilization's strong residual (DESIGN.md).
+  void set_immersed_forces(const ConstVector& nodal_forces);
+
   // Sets the velocity everywhere to velocity(x) [μm/s] at the nodes x [μm] (an initial
   // condition; Dirichlet values are imposed again afterwards).
   void set_velocity(const std::function<std::array<double, 3>(const std::array<double, 3>&)>& velocity);
@@ -60,6 +65,8 @@ class FluidSolver {
   std::vector<std::array<double, 3>> boundary_forces(const std::vector<std::string>& sides) const;
   // Volume average of the velocity [μm/s].
   std::array<double, 3> mean_velocity() const;
+  // Kinetic energy of the fluid ½ ρ ∫ |u|² dV [pN·μm].
+  double kinetic_energy() const;
 
   double time() const { return time_; }
   const FluidOperator& fluid_operator() const { return operator_; }
@@ -77,6 +84,8 @@ class FluidSolver {
   // Rebuilds the configured preconditioner from the Jacobian at the current state.
   void rebuild_preconditioner();
   const Preconditioner& preconditioner() const;
+  // ∫ dV, ∫ u dV and ∫ |u|² dV (scaled u, μm³).
+  std::array<double, 5> velocity_integrals() const;
 
   FluidOperator operator_;
   FluidScales scales_;
@@ -84,6 +93,8 @@ class FluidSolver {
   bool stokes_;
   FluidBoundaryConditions boundary_;
   Vector state_, previous_state_, older_state_, history_, body_force_, correction_, blocks_;
+  double density_;                 // ρ [pN·s²/μm⁴]
+  Vector nodal_load_;              // traction loads and immersed forces (scaled), when there are cells
   Vector residual_;  // also scratch for boundary_forces() (const)
   Vector state_gradient_;  // G(U) during a Krylov solve
   BlockJacobi block_jacobi_;

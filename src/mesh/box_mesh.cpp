@@ -12,26 +12,6 @@ const BoundaryFaces& FluidMesh::boundary(const std::string& name) const {
   throw std::out_of_range("rouleau::FluidMesh::boundary: no boundary named '" + name + "'");
 }
 
-std::vector<double> graded_coordinates(double lower, double upper, int elements, double grading) {
-  // Element sizes h_i ∝ q^min(i, n−1−i) with q^((n−1)/2) = grading.
-  std::vector<double> sizes(elements, 1.0);
-  if (grading != 1.0 && elements > 2) {
-    const double q = std::pow(grading, 2.0 / (elements - 1));
-    for (int i = 0; i < elements; ++i) sizes[i] = std::pow(q, std::min(i, elements - 1 - i));
-  }
-  double total = 0.0;
-  for (double s : sizes) total += s;
-  std::vector<double> x(elements + 1);
-  x[0] = lower;
-  double running = 0.0;
-  for (int i = 0; i < elements; ++i) {
-    running += sizes[i];
-    x[i + 1] = lower + (upper - lower) * running / total;
-  }
-  x[elements] = upper;
-  return x;
-}
-
 FluidMesh make_box_mesh(const std::array<double, 3>& lower, const std::array<double, 3>& upper,
                         const std::array<int, 3>& elements, const std::array<double, 3>& grading,
                         const std::array<bool, 3>& periodic) {

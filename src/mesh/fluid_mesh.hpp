@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "geometry/grading.hpp"
+
 namespace rouleau {
 
 enum class FluidElementType { hexahedron8, tetrahedron4 };
@@ -43,11 +45,6 @@ struct FluidMesh {
   int num_unknowns() const { return fluid_unknowns_per_node * num_dof_nodes; }
   const BoundaryFaces& boundary(const std::string& name) const;
 };
-
-// Node coordinates along one direction: `elements` intervals on [lower, upper], sizes
-// growing geometrically from both ends to the middle so that the largest is `grading`
-// times the smallest (grading = 1: uniform).
-std::vector<double> graded_coordinates(double lower, double upper, int elements, double grading);
 
 // A structured box of 8-node hexahedra; directions flagged periodic identify their
 // first and last planes of nodes. Sides are named x_min, x_max, y_min, y_max, z_min, z_max.

@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <map>
 #include <sstream>
 
 #include "cells/cells_from_case.hpp"
@@ -22,7 +21,10 @@
 #include "io/provenance.hpp"
 #include "io/xdmf_writer.hpp"
 #include "rouleau_version.hpp"
+#include "coupling/immersed_coupling.hpp"
+#include "run/run_diagnostics.hpp"
 #include "run/scene.hpp"
+#include "run/stage_times.hpp"
 #include "util/errors.hpp"
 
 namespace rouleau {
@@ -58,29 +60,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Wall time spent per stage, printed at the end of the run.
-class StageTimes {
- public:
-  template <class F>
-  auto time(const std::string& stage, F&& f) {
-    const auto start = Clock::now();
-    auto result = f();
-    seconds_[stage] += std::chrono::duration<double>(Clock::now() - start).count();
-    return result;
-  }
-  void print(std::ostream& out) const {
-    out << "time per stage:\n";
-    for (const auto& [stage, s] : seconds_) {
-      char line[160];
-      std::snprintf(line, sizeof line, "  %-28s %10.3f s\n", stage.c_str(), s);
-      out << line;
-    }
-  }
-
- private:
-  std::map<std::string, double> seconds_;
-};
-
 std::array<bool, 3> periodic_directions(const DomainConfig& domain) {
   std::array<bool, 3> periodic{};
   for (int d = 0; d < 3; ++d) periodic[d] = domain.boundary[2 * d].type == BoundaryType::periodic;
@@ -102,69 +81,6 @@ MeshDescription describe_fluid_mesh(const FluidMesh& mesh) {
     for (int a = 0; a < mesh.nodes_per_element; ++a) d.connectivity[e * mesh.nodes_per_element + a] = c(e, a);
   return d;
 }
-
-// Diagnostics of the fluid: wall tractions on y walls (shear scenes), mean velocity, and
-// for simple shear the relative apparent viscosity τ_w / (μ γ̇).
-struct FluidDiagnostics {
-  std::vector<std::string> columns() const {
-    return {"step", "time_s", "newton_iterations", "gmres_iterations", "momentum_residual", "continuity_residual",
-            "mean_velocity_x_um_s", "mean_velocity_y_um_s", "mean_velocity_z_um_s", "wall_shear_stress_y_min_Pa",
-            "wall_shear_stress_y_max_Pa", "relative_apparent_viscosity", "wall_time_s"};
-  }
-  std::vector<double> row(const CaseConfig& config, const FluidSolver& solver, int step,
-                          const FluidSolveReport& report, double wall_time) const {
-    const auto u = solver.mean_velocity();
-    const DomainConfig& domain = config.domain;
-    const double area = (domain.upper[0] - domain.lower[0]) * (domain.upper[2] - domain.lower[2]);
-    double shear[2] = {NAN, NAN};
-    std::vector<std::string> walls;
-    for (int k = 0; k < 2; ++k)
-      if (domain.boundary[Side::y_min + k].type == BoundaryType::wall) walls.push_back(side_names[Side::y_min + k]);
-    const auto forces = solver.boundary_forces(walls);
-    for (size_t w = 0; w < walls.size(); ++w) {
-      const int k = walls[w] == side_names[Side::y_min] ? 0 : 1;
-      // τ_w = μ ∂u_x/∂y at the wall = −n_y F_x / A, with F the force the fluid exerts on the
-      // wall and n_y the fluid's outward normal: positive on both walls in simple shear.
-      const double outward_normal_y = k == 0 ? -1.0 : 1.0;
-      shear[k] = -outward_normal_y * forces[w][0] / area;
-    }
-    // Simple shear between the y walls: γ̇ = (U_top − U_bottom)/H, τ_w = μ γ̇ for plasma alone.
-    double relative_viscosity = NAN;
-    const double height = domain.upper[1] - domain.lower[1];
-    const double shear_rate =
-        (domain.boundary[Side::y_max].velocity[0] - domain.boundary[Side::y_min].velocity[0]) / height;
-    if (std::isfinite(shear[1]) && shear_rate != 0.0)
-      relative_viscosity = shear[1] / (config.fluid.viscosity * shear_rate);
-    return {double(step), solver.time(), double(report.newton_iterations), double(report.gmres_iterations),
-            report.momentum_residual, report.continuity_residual, u[0], u[1], u[2], shear[0], shear[1],
-            relative_viscosity, wall_time};
-  }
-};
-
-// Diagnostics of the cells: elastic and interaction energies, neighbour-list rebuilds, and
-// the largest change of a cell's enclosed volume since the start (relative).
-struct CellDiagnostics {
-  std::vector<double> initial_volumes;
-
-  explicit CellDiagnostics(const CaseCells& cells) {
-    if (cells.population)
-      for (const CellMeasures& m : cells.population->measures()) initial_volumes.push_back(m.volume);
-  }
-  static std::vector<std::string> columns() {
-    return {"elastic_energy_pN_um", "interaction_energy_pN_um", "neighbor_list_rebuilds",
-            "largest_relative_volume_change"};
-  }
-  std::vector<double> row(const CaseCells& cells) const {
-    const double elastic = cells.population->compute_internal_forces_and_energy();
-    const double interaction = cells.interaction ? cells.interaction->compute_forces_and_energy() : 0.0;
-    const double rebuilds = cells.interaction ? cells.interaction->rebuild_count() : 0.0;
-    double largest_change = 0.0;
-    const std::vector<CellMeasures> now = cells.population->measures();
-    for (std::size_t c = 0; c < now.size(); ++c)
-      largest_change = std::max(largest_change, std::fabs(now[c].volume / initial_volumes[c] - 1.0));
-    return {elastic, interaction, rebuilds, largest_change};
-  }
-};
 
 }  // namespace
 
@@ -212,20 +128,38 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
   const Provenance provenance = build_provenance(provenance_entries);
   std::unique_ptr<XdmfTimeSeries> fields;
   if (config.output.write_fields) fields = std::make_unique<XdmfTimeSeries>(out, "fields", output_meshes, provenance);
-  FluidDiagnostics diagnostics;
+  // The cells move with the fluid in a time loop; a steady solve keeps them in place.
+  std::unique_ptr<ImmersedCoupling> coupling;
+  if (cells.population && config.time.mode == TimeMode::transient) {
+    coupling = times.time("coupling setup", [&] { return std::make_unique<ImmersedCoupling>(*solver, cells, config); });
+    std::cerr << "explicit coupling: dt = " << config.time.dt << " s, stable step estimate " << derived.stable_dt
+              << " s (" << derived.stable_dt_reason << ")"
+              << (config.time.dt > derived.stable_dt ? "; ABOVE IT (coupling.allow_unstable_step = true)" : "")
+              << "\n";
+  }
   const CellDiagnostics cell_diagnostics(cells);
-  std::vector<std::string> columns = diagnostics.columns();
+  CouplingDiagnostics coupling_diagnostics;
+  std::vector<std::string> columns = FluidDiagnostics::columns();
   if (cells.population) {
-    const auto cell_columns = CellDiagnostics::columns();
+    const auto cell_columns = cell_diagnostics.columns();
     columns.insert(columns.end(), cell_columns.begin(), cell_columns.end());
   }
+  if (coupling) {
+    const auto coupling_columns = coupling_diagnostics.columns();
+    columns.insert(columns.end(), coupling_columns.begin(), coupling_columns.end());
+  }
   DiagnosticsTable table(out + "/diagnostics.csv", columns);
-  auto add_diagnostics_row = [&](int step, const FluidSolveReport& report) {
-    std::vector<double> row = diagnostics.row(config, *solver, step, report,
-                                              std::chrono::duration<double>(Clock::now() - run_start).count());
+  auto add_diagnostics_row = [&](int step, const FluidSolveReport& report,
+                                 const ImmersedCoupling::StepReport* coupling_report) {
+    std::vector<double> row = FluidDiagnostics::row(config, *solver, step, report,
+                                                    std::chrono::duration<double>(Clock::now() - run_start).count());
     if (cells.population) {
       const std::vector<double> cell_row = times.time("cell diagnostics", [&] { return cell_diagnostics.row(cells); });
       row.insert(row.end(), cell_row.begin(), cell_row.end());
+    }
+    if (coupling) {
+      const std::vector<double> coupling_row = coupling_diagnostics.row(*coupling_report, times);
+      row.insert(row.end(), coupling_row.begin(), coupling_row.end());
     }
     table.add_row(row);
   };
@@ -266,20 +200,25 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
       return 0;
     });
   };
-  auto fail = [&](int step, const FluidSolveReport& report) {
+  auto fail = [&](int step, const std::string& stage, const std::string& what) {
     std::ostringstream msg;
-    msg << "diverged at step " << step << " (t = " << solver->time() << " s), stage fluid: " << report.failure
-        << "; residual momentum " << report.momentum_residual << ", continuity " << report.continuity_residual
-        << " (scaled); fields up to the last good step are in " << out << " (checkpoints: not yet implemented)";
+    msg << "diverged at step " << step << " (t = " << solver->time() << " s), stage " << stage << ": " << what
+        << "; fields up to the last good step are in " << out << " (checkpoints: not yet implemented)";
     table.flush();
     throw DivergenceError(msg.str());
+  };
+  auto fluid_failure = [](const FluidSolveReport& report) {
+    std::ostringstream msg;
+    msg << report.failure << "; residual momentum " << report.momentum_residual << ", continuity "
+        << report.continuity_residual << " (scaled)";
+    return msg.str();
   };
 
   write_fields(0);
   if (config.time.mode == TimeMode::steady) {
     const FluidSolveReport report = times.time("fluid solve", [&] { return solver->solve_steady(); });
-    if (!report.converged) fail(1, report);
-    add_diagnostics_row(1, report);
+    if (!report.converged) fail(1, "fluid", fluid_failure(report));
+    add_diagnostics_row(1, report, nullptr);
     write_fields(1);
     std::cerr << "steady solve: " << report.newton_iterations << " Newton, " << report.gmres_iterations
               << " GMRES iterations; residual momentum " << report.momentum_residual << ", continuity "
@@ -288,11 +227,23 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
     const int steps = static_cast<int>(std::llround(config.time.end / config.time.dt));
     ProgressReporter progress(steps, config.time.end, stderr_is_terminal(), std::cerr);
     for (int step = 1; step <= steps; ++step) {
-      const FluidSolveReport report =
-          times.time("fluid solve", [&] { return solver->advance(config.time.dt, config.time.scheme); });
-      if (!report.converged) fail(step, report);
+      FluidSolveReport report;
+      ImmersedCoupling::StepReport coupling_report;
+      if (coupling) {
+        try {
+          coupling_report = coupling->advance(config.time.dt, config.time.scheme, times);
+        } catch (const std::runtime_error& error) {
+          fail(step, "coupling", error.what());
+        }
+        report = coupling_report.fluid;
+        if (report.converged && !coupling_report.finite)
+          fail(step, ImmersedCoupling::move_stage, "a cell node's interpolated velocity is NaN or Inf");
+      } else {
+        report = times.time("fluid solve", [&] { return solver->advance(config.time.dt, config.time.scheme); });
+      }
+      if (!report.converged) fail(step, "fluid", fluid_failure(report));
       if (step % config.output.diagnostics_every_steps == 0 || step == steps)
-        add_diagnostics_row(step, report);
+        add_diagnostics_row(step, report, &coupling_report);
       if (step % config.output.fields_every_steps == 0 || step == steps) write_fields(step);
       if (options.progress) progress.update(step, solver->time(), report.newton_iterations, report.gmres_iterations);
     }

@@ -3,6 +3,7 @@
 #include <map>
 #include <sstream>
 
+#include "config/cell_kinds.hpp"
 #include "config/load_case.hpp"
 
 namespace rouleau {
@@ -49,12 +50,21 @@ std::vector<Stage> plan_stages(const CaseConfig& config, const DerivedQuantities
       cells << (first ? "" : ", ") << count << " " << kind;
       first = false;
     }
-    cells << "), 4-node tetrahedra meshed with Gmsh once per kind and cached; written with the fields. "
-             "They stay in place: the fluid-structure coupling is not implemented yet";
+    cells << "), 4-node tetrahedra meshed with Gmsh once per kind and cached; written with the fields";
+    const bool moving = config.time.mode == TimeMode::transient;
+    const bool skip = config.scene.skip_unneeded_stages;
+    if (moving) {
+      cells << ". Explicit coupling: the fluid solved with the cells' forces at x^n, the cells moved with "
+               "the interpolated velocity; dt = "
+            << config.time.dt << " s, stable step estimate " << derived.stable_dt << " s ("
+            << derived.stable_dt_reason << ")";
+    } else {
+      cells << ". A steady solve: the cells stay where they are placed (the coupling is a time loop)";
+    }
     stages.push_back({"cells", true, cells.str()});
+    const char* steady_only = "skipped: a steady solve does not move the cells (output steps only)";
     stages.push_back({"neo-Hookean cell forces", true,
-                      "total-Lagrangian tetrahedra, computed for the output steps (zero while the cells are at rest)"});
-    const char* not_yet = "skipped: not implemented yet";
+                      moving ? "total-Lagrangian tetrahedra, every step" : "total-Lagrangian tetrahedra, output steps only"});
     const InteractionConfig& interaction = config.interaction;
     if (interaction.enabled) {
       std::ostringstream morse;
@@ -65,15 +75,38 @@ std::vector<Stage> plan_stages(const CaseConfig& config, const DerivedQuantities
             << (interaction.quadrature == InteractionQuadrature::automatic
                     ? " (surface nodes, or 3 Gauss points per triangle when the nodes are more than 1/beta apart)"
                     : "")
-            << "; neighbour list with a " << interaction.skin
-            << " um skin, rebuilt when a surface node moves more than half of it; cells farther apart than "
-               "the cut-off do no pair work; computed for the output steps";
+            << "; neighbour list with a " << interaction.skin << " um skin, "
+            << (skip ? "rebuilt when a surface node moves more than half of it"
+                     : "rebuilt every step (scene.skip_unneeded_stages = false)")
+            << "; cells farther apart than the cut-off do no pair work; "
+            << (moving ? "every step" : "output steps only");
       stages.push_back({"Morse cell-cell forces", true, morse.str()});
     } else {
       stages.push_back({"Morse cell-cell forces", false, "skipped: interaction.enabled = false"});
     }
-    stages.push_back({"inertia/buoyancy", false, not_yet});
-    stages.push_back({"RKPM interpolate/spread", false, not_yet});
+    bool denser = false;
+    for (const CellPlacement& cell : config.cells)
+      denser = denser || find_cell_kind(config, cell.kind)->density != config.fluid.density;
+    if (!moving)
+      stages.push_back({"inertia/buoyancy", false, steady_only});
+    else if (denser || !skip)
+      stages.push_back({"inertia/buoyancy", true,
+                        std::string("(rho_s - rho_f)(g - dv/dt) at the cell nodes, lumped") +
+                            (denser ? "" : " (every cell is as dense as the fluid: zero; scene.skip_unneeded_stages = false)")});
+    else
+      stages.push_back({"inertia/buoyancy", false, "skipped: every cell is as dense as the fluid (rho_s = rho_f)"});
+    if (moving) {
+      std::ostringstream rkpm;
+      rkpm << "cubic B-spline window, support " << config.coupling.support_elements
+           << " elements around each fluid node, fluid-node bins built once, supports found every step; linear "
+              "correction (4x4 moment matrix) "
+           << (skip ? "only where the plain window does not reproduce linear fields (walls, graded mesh)"
+                    : "everywhere (scene.skip_unneeded_stages = false)")
+           << "; spreading is the exact transpose of interpolation";
+      stages.push_back({"RKPM interpolate/spread", true, rkpm.str()});
+    } else {
+      stages.push_back({"RKPM interpolate/spread", false, steady_only});
+    }
   }
   stages.push_back({"output", config.output.write_fields,
                     config.output.write_fields ? "XDMF+HDF5 fields every " +

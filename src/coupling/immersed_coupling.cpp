@@ -1,0 +1,139 @@
+#include "coupling/immersed_coupling.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "config/cell_kinds.hpp"
+#include "kernels/cell_motion.hpp"
+#include "kernels/fsi_force.hpp"
+#include "run/profiling_region.hpp"
+
+namespace rouleau {
+
+namespace {
+using ExecSpace = Kokkos::DefaultExecutionSpace;
+
+// m_I = (ρ_s − ρ_f) V_I, V_I = Σ_{e ∋ I} V0_e / 4, ρ_s the density of the node's cell's kind.
+std::vector<double> nodal_excess_mass(const CellPopulation& population, const CaseConfig& config) {
+  auto element_nodes = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), population.element_nodes());
+  auto element_cell = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), population.element_cell());
+  auto volume = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), population.reference_volume());
+  std::vector<double> mass(population.num_nodes(), 0.0);
+  for (int e = 0; e < population.num_elements(); ++e) {
+    const CellKindConfig& kind = *find_cell_kind(config, config.cells[element_cell(e)].kind);
+    const double excess_density = kind.density - config.fluid.density;
+    for (int a = 0; a < 4; ++a) mass[element_nodes(e, a)] += 0.25 * excess_density * volume(e);
+  }
+  return mass;
+}
+
+// Σ_i a_i b_i over a flat or a (node, 3) View pair.
+template <class View>
+double dot(const View& a, const View& b) {
+  double sum = 0.0;
+  if constexpr (View::rank == 1) {
+    Kokkos::parallel_reduce(
+        "rouleau::ImmersedCoupling::dot", Kokkos::RangePolicy<ExecSpace>(0, a.extent(0)),
+        KOKKOS_LAMBDA(const int i, double& s) { s += a(i) * b(i); }, sum);
+  } else {
+    Kokkos::parallel_reduce(
+        "rouleau::ImmersedCoupling::dot", Kokkos::RangePolicy<ExecSpace>(0, a.extent(0)),
+        KOKKOS_LAMBDA(const int i, double& s) { s += a(i, 0) * b(i, 0) + a(i, 1) * b(i, 1) + a(i, 2) * b(i, 2); },
+        sum);
+  }
+  return sum;
+}
+}  // namespace
+
+ImmersedCoupling::ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, const CaseConfig& config)
+    : fluid_(fluid),
+      population_(*cells.population),
+      interaction_(cells.interaction.get()),
+      rkpm_(fluid.fluid_operator().mesh(), config.coupling.support_elements),
+      skip_unneeded_(config.scene.skip_unneeded_stages),
+      gravity_(config.coupling.gravity) {
+  const int nodes = population_.num_nodes();
+  fsi_forces_ = NodeVectors("rouleau::ImmersedCoupling::fsi_forces", nodes);
+  interpolated_ = NodeVectors("rouleau::ImmersedCoupling::interpolated", nodes);
+  previous_velocities_ = NodeVectors("rouleau::ImmersedCoupling::previous_velocities", nodes);
+  fluid_load_ = Kokkos::View<double*>("rouleau::ImmersedCoupling::fluid_load", fluid.fluid_operator().num_unknowns());
+  if (interaction_) interaction_forces_ = NodeVectors("rouleau::ImmersedCoupling::interaction_forces", nodes);
+  // The inertia/buoyancy stage changes nothing when every cell is as dense as the fluid.
+  const std::vector<double> mass = nodal_excess_mass(population_, config);
+  bool any_excess = false;
+  for (double m : mass) any_excess = any_excess || m != 0.0;
+  runs_inertia_ = any_excess || !skip_unneeded_;
+  if (runs_inertia_) {
+    excess_mass_ = Kokkos::View<double*>("rouleau::ImmersedCoupling::excess_mass", nodes);
+    auto host = Kokkos::create_mirror_view(excess_mass_);
+    for (int n = 0; n < nodes; ++n) host(n) = mass[n];
+    Kokkos::deep_copy(excess_mass_, host);
+  }
+  // Without skips the RKPM correction runs everywhere (it changes nothing but round-off
+  // where the plain window reproduces linear fields).
+  rkpm_.always_correct(!skip_unneeded_);
+}
+
+ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme scheme, StageTimes& times) {
+  ProfilingRegion region("rouleau::ImmersedCoupling::advance");
+  StepReport report;
+  // 1. forces on the cells at x^n
+  times.time(elastic_stage, [&] { population_.compute_internal_forces(); });
+  if (interaction_)
+    times.time(interaction_stage, [&] {
+      // Without skips the list is rebuilt every step (the skin then changes nothing).
+      if (!skip_unneeded_) interaction_->rebuild();
+      interaction_->compute_forces();
+      interaction_->copy_forces_to_nodes(interaction_forces_);
+    });
+  times.time(runs_inertia_ ? inertia_stage : elastic_stage, [&] {
+    FsiForceFunctor<NodeVectors, Kokkos::View<double*>> sum{population_.internal_forces(),
+                                                            interaction_forces_,
+                                                            excess_mass_,
+                                                            population_.velocities(),
+                                                            previous_velocities_,
+                                                            {gravity_[0], gravity_[1], gravity_[2]},
+                                                            previous_dt_ > 0.0 ? 1.0 / previous_dt_ : 0.0,
+                                                            fsi_forces_};
+    Kokkos::parallel_for("rouleau::ImmersedCoupling::fsi_force",
+                         Kokkos::RangePolicy<ExecSpace>(0, population_.num_nodes()), sum);
+  });
+  // 2. spread, with the supports at x^n (also those of the interpolation below)
+  times.time(spread_stage, [&] {
+    try {
+      rkpm_.update(population_.positions());
+    } catch (const std::runtime_error& error) {
+      throw std::runtime_error(std::string("stage ") + spread_stage + ": " + error.what());
+    }
+    Kokkos::deep_copy(fluid_load_, 0.0);
+    rkpm_.spread(fsi_forces_, fluid_load_, fluid_unknowns_per_node);
+    fluid_.set_immersed_forces(fluid_load_);
+  });
+  report.corrected_points = rkpm_.corrected_points();
+  // 3. the fluid
+  report.fluid = times.time(fluid_stage, [&] { return fluid_.advance(dt, scheme); });
+  if (!report.fluid.converged) return report;
+  // 4. interpolate
+  times.time(interpolate_stage,
+             [&] { rkpm_.interpolate(fluid_.state(), fluid_unknowns_per_node, interpolated_); });
+  // 5. move
+  double largest_speed2 = 0.0;
+  times.time(move_stage, [&] {
+    MoveCellsFunctor<NodeVectors> move{interpolated_,           population_.velocities(), previous_velocities_,
+                                       population_.positions(), fluid_.scales().velocity, dt};
+    Kokkos::parallel_reduce("rouleau::ImmersedCoupling::move",
+                            Kokkos::RangePolicy<ExecSpace>(0, population_.num_nodes()), move,
+                            Kokkos::Max<double>(largest_speed2));
+  });
+  previous_dt_ = dt;
+  report.finite = largest_speed2 < MoveCellsFunctor<NodeVectors>::non_finite_speed2;
+  report.largest_cell_speed = std::sqrt(largest_speed2);
+  // The power of the step's forces, on the fluid's side and on the cells' (they agree:
+  // interpolation and spreading are transposes of each other).
+  report.power_spread = dot(fluid_load_, fluid_.state()) * fluid_.scales().velocity;
+  report.power_interpolated = dot(fsi_forces_, population_.velocities());
+  return report;
+}
+
+}  // namespace rouleau

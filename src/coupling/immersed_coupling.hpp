@@ -1,0 +1,77 @@
+#pragma once
+// One explicit step of the immersed finite element method (DESIGN.md, "One time step";
+// paper eqs. 5–16), for the cells of a case on the fixed fluid mesh:
+//   1. forces on the cell nodes at x^n, each its own stage: elastic (neo-Hookean, eqs. 2,
+//      9, 10), Morse between cells (eqs. 3, 4, 11), inertia and buoyancy (eq. 7);
+//   2. spread: F_J = Σ_I Φ_J(x_I^n) F_I (eq. 16), nodal loads on the fluid;
+//   3. the fluid solve from t^n to t^{n+1} (eqs. 13, 14);
+//   4. interpolate: v_I^{n+1} = Σ_J Φ_J(x_I^n) u_J^{n+1} (eqs. 6, 15);
+//   5. move: x_I^{n+1} = x_I^n + Δt v_I^{n+1}.
+// With viscosity ratio 1 the cell's viscous stress is the fluid's and the pressures
+// cancel, so ∇·σ_s − ∇·σ_f of eq. (7) is the elastic force alone (DESIGN.md). Spreading
+// and interpolation use the same shape functions, so the power the cells put into the
+// fluid equals the power the fluid gives back to round-off; both are reported.
+#include <Kokkos_Core.hpp>
+#include <string>
+
+#include "cells/cells_from_case.hpp"
+#include "config/case_config.hpp"
+#include "coupling/rkpm_coupler.hpp"
+#include "fluid/fluid_solver.hpp"
+#include "run/stage_times.hpp"
+
+namespace rouleau {
+
+class ImmersedCoupling {
+ public:
+  using NodeVectors = CellPopulation::NodeVectors;
+
+  // The stage names, as timed and printed.
+  static constexpr const char* elastic_stage = "neo-Hookean forces";
+  static constexpr const char* interaction_stage = "Morse forces";
+  static constexpr const char* inertia_stage = "inertia/buoyancy";
+  static constexpr const char* spread_stage = "RKPM spread";
+  static constexpr const char* fluid_stage = "fluid solve";
+  static constexpr const char* interpolate_stage = "RKPM interpolate";
+  static constexpr const char* move_stage = "move cells";
+
+  // `fluid` and `cells` must outlive the coupling. The cells must lie inside the fluid mesh.
+  ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, const CaseConfig& config);
+
+  struct StepReport {
+    FluidSolveReport fluid;
+    double power_spread = 0.0;        // Σ_J F_J · u_J^{n+1} [pN·μm/s]
+    double power_interpolated = 0.0;  // Σ_I F_I · v_I^{n+1} [pN·μm/s]
+    double largest_cell_speed = 0.0;  // max_I |v_I^{n+1}| [μm/s]
+    bool finite = true;               // false when some new cell velocity is NaN or Inf
+    int corrected_points = 0;         // cell nodes whose RKPM weights needed the correction
+  };
+  // One step of dt [s]; the fluid advances with `scheme`. Throws std::runtime_error naming
+  // the stage when a cell node has left the fluid domain. The cells do not move when the
+  // fluid solve fails (the report says so).
+  StepReport advance(double dt, TimeScheme scheme, StageTimes& times);
+
+  bool runs_interaction() const { return interaction_ != nullptr; }
+  bool runs_inertia() const { return runs_inertia_; }
+  // F_I of the last step [pN] (the sum of the stages' forces) and the Morse part alone.
+  const NodeVectors& fsi_forces() const { return fsi_forces_; }
+  const NodeVectors& interaction_forces() const { return interaction_forces_; }
+  const RkpmCoupler& rkpm() const { return rkpm_; }
+
+ private:
+  FluidSolver& fluid_;
+  CellPopulation& population_;
+  SurfaceInteraction* interaction_;
+  RkpmCoupler rkpm_;
+  bool skip_unneeded_;
+  bool runs_inertia_ = false;
+  std::array<double, 3> gravity_;  // [μm/s²]
+  double previous_dt_ = 0.0;
+  Kokkos::View<double*> excess_mass_;      // (ρ_s − ρ_f) V_I per node [pN·s²/μm]
+  NodeVectors previous_velocities_;        // v^{n−1}, for dv/dt
+  NodeVectors interaction_forces_, fsi_forces_;
+  NodeVectors interpolated_;               // v̂_I, the scaled fluid velocity at the nodes
+  Kokkos::View<double*> fluid_load_;       // the spread forces on the fluid's unknowns [pN]
+};
+
+}  // namespace rouleau

@@ -1,0 +1,119 @@
+#include "run/run_diagnostics.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+namespace rouleau {
+
+std::vector<std::string> FluidDiagnostics::columns() {
+  return {"step", "time_s", "newton_iterations", "gmres_iterations", "momentum_residual", "continuity_residual",
+          "mean_velocity_x_um_s", "mean_velocity_y_um_s", "mean_velocity_z_um_s", "fluid_kinetic_energy_pN_um",
+          "wall_shear_stress_y_min_Pa", "wall_shear_stress_y_max_Pa", "relative_apparent_viscosity", "wall_time_s"};
+}
+
+std::vector<double> FluidDiagnostics::row(const CaseConfig& config, const FluidSolver& solver, int step,
+                                          const FluidSolveReport& report, double wall_time) {
+  const auto u = solver.mean_velocity();
+  const DomainConfig& domain = config.domain;
+  const double area = (domain.upper[0] - domain.lower[0]) * (domain.upper[2] - domain.lower[2]);
+  double shear[2] = {NAN, NAN};
+  std::vector<std::string> walls;
+  for (int k = 0; k < 2; ++k)
+    if (domain.boundary[Side::y_min + k].type == BoundaryType::wall) walls.push_back(side_names[Side::y_min + k]);
+  const auto forces = solver.boundary_forces(walls);
+  for (size_t w = 0; w < walls.size(); ++w) {
+    const int k = walls[w] == side_names[Side::y_min] ? 0 : 1;
+    // τ_w = μ ∂u_x/∂y at the wall = −n_y F_x / A, with F the force the fluid exerts on the
+    // wall and n_y the fluid's outward normal: positive on both walls in simple shear.
+    const double outward_normal_y = k == 0 ? -1.0 : 1.0;
+    shear[k] = -outward_normal_y * forces[w][0] / area;
+  }
+  // Simple shear between the y walls: γ̇ = (U_top − U_bottom)/H, τ_w = μ γ̇ for plasma alone.
+  double relative_viscosity = NAN;
+  const double height = domain.upper[1] - domain.lower[1];
+  const double shear_rate =
+      (domain.boundary[Side::y_max].velocity[0] - domain.boundary[Side::y_min].velocity[0]) / height;
+  if (std::isfinite(shear[1]) && shear_rate != 0.0)
+    relative_viscosity = shear[1] / (config.fluid.viscosity * shear_rate);
+  return {double(step),
+          solver.time(),
+          double(report.newton_iterations),
+          double(report.gmres_iterations),
+          report.momentum_residual,
+          report.continuity_residual,
+          u[0],
+          u[1],
+          u[2],
+          solver.kinetic_energy(),
+          shear[0],
+          shear[1],
+          relative_viscosity,
+          wall_time};
+}
+
+CellDiagnostics::CellDiagnostics(const CaseCells& cells) {
+  if (cells.population)
+    for (const CellMeasures& m : cells.population->measures()) initial_volumes_.push_back(m.volume);
+}
+
+std::vector<std::string> CellDiagnostics::columns() const {
+  std::vector<std::string> names{"elastic_energy_pN_um", "interaction_energy_pN_um", "neighbor_list_rebuilds",
+                                 "largest_relative_volume_change"};
+  for (std::size_t c = 0; c < initial_volumes_.size(); ++c) {
+    const std::string cell = "cell" + std::to_string(c) + "_";
+    for (const char* name : {"volume_um3", "centroid_x_um", "centroid_y_um", "centroid_z_um"})
+      names.push_back(cell + name);
+  }
+  return names;
+}
+
+std::vector<double> CellDiagnostics::row(const CaseCells& cells) const {
+  const double elastic = cells.population->compute_internal_forces_and_energy();
+  const double interaction = cells.interaction ? cells.interaction->compute_forces_and_energy() : 0.0;
+  const double rebuilds = cells.interaction ? cells.interaction->rebuild_count() : 0.0;
+  double largest_change = 0.0;
+  const std::vector<CellMeasures> now = cells.population->measures();
+  std::vector<double> values{elastic, interaction, rebuilds, 0.0};
+  for (std::size_t c = 0; c < now.size(); ++c) {
+    largest_change = std::max(largest_change, std::fabs(now[c].volume / initial_volumes_[c] - 1.0));
+    values.insert(values.end(), {now[c].volume, now[c].centroid[0], now[c].centroid[1], now[c].centroid[2]});
+  }
+  values[3] = largest_change;
+  return values;
+}
+
+namespace {
+const std::vector<const char*> coupling_stages{
+    ImmersedCoupling::elastic_stage, ImmersedCoupling::interaction_stage, ImmersedCoupling::inertia_stage,
+    ImmersedCoupling::spread_stage,  ImmersedCoupling::fluid_stage,       ImmersedCoupling::interpolate_stage,
+    ImmersedCoupling::move_stage};
+
+// "RKPM spread" → "time_rkpm_spread_s"
+std::string time_column(const std::string& stage) {
+  std::string name = "time_";
+  for (char c : stage) name += std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::tolower(c)) : '_';
+  return name + "_s";
+}
+}  // namespace
+
+std::vector<std::string> CouplingDiagnostics::columns() const {
+  std::vector<std::string> names{"power_spread_pN_um_s", "power_interpolated_pN_um_s", "largest_cell_speed_um_s",
+                                 "rkpm_corrected_points"};
+  for (const char* stage : coupling_stages) names.push_back(time_column(stage));
+  return names;
+}
+
+std::vector<double> CouplingDiagnostics::row(const ImmersedCoupling::StepReport& report, const StageTimes& times) {
+  std::vector<double> values{report.power_spread, report.power_interpolated, report.largest_cell_speed,
+                             double(report.corrected_points)};
+  seconds_at_last_row_.resize(coupling_stages.size(), 0.0);
+  for (std::size_t s = 0; s < coupling_stages.size(); ++s) {
+    const double total = times.seconds(coupling_stages[s]);
+    values.push_back(total - seconds_at_last_row_[s]);
+    seconds_at_last_row_[s] = total;
+  }
+  return values;
+}
+
+}  // namespace rouleau

@@ -1,0 +1,45 @@
+#pragma once
+// The columns of diagnostics.csv and how each row is measured: the fluid (solver effort,
+// residuals, mean velocity, kinetic energy, wall shear stress and the relative apparent
+// viscosity), the cells (energies, volumes and their drift, centroids) and the coupling
+// (power spread and interpolated, speeds, time per stage since the previous row).
+#include <string>
+#include <vector>
+
+#include "cells/cells_from_case.hpp"
+#include "config/case_config.hpp"
+#include "coupling/immersed_coupling.hpp"
+#include "fluid/fluid_solver.hpp"
+#include "run/stage_times.hpp"
+
+namespace rouleau {
+
+struct FluidDiagnostics {
+  static std::vector<std::string> columns();
+  // `wall_time`: seconds since the run started.
+  static std::vector<double> row(const CaseConfig& config, const FluidSolver& solver, int step,
+                                 const FluidSolveReport& report, double wall_time);
+};
+
+// Energies are computed at the current positions (one extra force evaluation per row).
+class CellDiagnostics {
+ public:
+  explicit CellDiagnostics(const CaseCells& cells);
+  std::vector<std::string> columns() const;
+  std::vector<double> row(const CaseCells& cells) const;
+
+ private:
+  std::vector<double> initial_volumes_;
+};
+
+class CouplingDiagnostics {
+ public:
+  std::vector<std::string> columns() const;
+  // The step's report and the stage times; times are those spent since the previous row.
+  std::vector<double> row(const ImmersedCoupling::StepReport& report, const StageTimes& times);
+
+ private:
+  std::vector<double> seconds_at_last_row_;
+};
+
+}  // namespace rouleau

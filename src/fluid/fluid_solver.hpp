@@ -67,6 +67,8 @@ class FluidSolver {
   std::array<double, 3> mean_velocity() const;
   // Kinetic energy of the fluid ½ ρ ∫ |u|² dV [pN·μm].
   double kinetic_energy() const;
+  // {∫ dV, ∫ u dV, ∫ |u|² dV} in scaled variables (x/L, u/U).
+  std::array<double, 5> velocity_integrals() const;
 
   double time() const { return time_; }
   const FluidOperator& fluid_operator() const { return operator_; }
@@ -84,8 +86,6 @@ class FluidSolver {
   // Rebuilds the configured preconditioner from the Jacobian at the current state.
   void rebuild_preconditioner();
   const Preconditioner& preconditioner() const;
-  // ∫ dV, ∫ u dV and ∫ |u|² dV (scaled u, μm³).
-  std::array<double, 5> velocity_integrals() const;
 
   FluidOperator operator_;
   FluidScales scales_;

@@ -24,6 +24,7 @@
 #include "coupling/immersed_coupling.hpp"
 #include "run/run_diagnostics.hpp"
 #include "run/scene.hpp"
+#include "run/simulation.hpp"
 #include "run/stage_times.hpp"
 #include "util/errors.hpp"
 
@@ -60,12 +61,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-std::array<bool, 3> periodic_directions(const DomainConfig& domain) {
-  std::array<bool, 3> periodic{};
-  for (int d = 0; d < 3; ++d) periodic[d] = domain.boundary[2 * d].type == BoundaryType::periodic;
-  return periodic;
-}
-
 // The fluid mesh as the XDMF writer wants it (host arrays).
 MeshDescription describe_fluid_mesh(const FluidMesh& mesh) {
   MeshDescription d;
@@ -92,30 +87,23 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
     std::cout << describe_stages(config, derived, stages);
     return static_cast<int>(ExitCode::done);
   }
-  StageTimes times;
   namespace fs = std::filesystem;
   fs::create_directories(options.output_dir);
   const std::string out = options.output_dir;
   write_file_atomically(out + "/case.resolved.toml", resolved_case_toml(config, derived));
 
-  FluidScales scales;
-  scales.length = derived.length_scale;
-  scales.velocity = derived.velocity_scale;
-  scales.pressure = derived.pressure_scale;
-  scales.reynolds = derived.reynolds;
-  const DomainConfig& domain = config.domain;
-  const FluidMesh mesh = times.time("mesh", [&] {
-    return make_box_mesh(domain.lower, domain.upper, domain.elements, domain.wall_grading,
-                         periodic_directions(domain));
-  });
-  auto solver = times.time("fluid setup", [&] {
-    return std::make_unique<FluidSolver>(mesh, config.fluid, domain.boundary, config.solver, scales, derived.stokes);
-  });
+  Simulation simulation(config, default_mesh_cache_dir());
+  StageTimes& times = simulation.times();
+  const FluidSolver& solver = simulation.fluid();
+  const CaseCells& cells = simulation.cells();
+  ImmersedCoupling* coupling = simulation.coupling();
+  if (coupling)
+    std::cerr << "explicit coupling: dt = " << config.time.dt << " s, stable step estimate " << derived.stable_dt
+              << " s (" << derived.stable_dt_reason << ")"
+              << (config.time.dt > derived.stable_dt ? "; ABOVE IT (coupling.allow_unstable_step = true)" : "")
+              << "\n";
 
-  const CaseCells cells =
-      times.time("cell meshes", [&] { return make_case_cells(config, default_mesh_cache_dir()); });
-
-  std::vector<MeshDescription> output_meshes{describe_fluid_mesh(mesh)};
+  std::vector<MeshDescription> output_meshes{describe_fluid_mesh(simulation.mesh())};
   const MeshDescription& fluid_mesh = output_meshes.front();
   std::vector<std::pair<std::string, std::string>> provenance_entries{
       {"case", config.name},
@@ -128,15 +116,7 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
   const Provenance provenance = build_provenance(provenance_entries);
   std::unique_ptr<XdmfTimeSeries> fields;
   if (config.output.write_fields) fields = std::make_unique<XdmfTimeSeries>(out, "fields", output_meshes, provenance);
-  // The cells move with the fluid in a time loop; a steady solve keeps them in place.
-  std::unique_ptr<ImmersedCoupling> coupling;
-  if (cells.population && config.time.mode == TimeMode::transient) {
-    coupling = times.time("coupling setup", [&] { return std::make_unique<ImmersedCoupling>(*solver, cells, config); });
-    std::cerr << "explicit coupling: dt = " << config.time.dt << " s, stable step estimate " << derived.stable_dt
-              << " s (" << derived.stable_dt_reason << ")"
-              << (config.time.dt > derived.stable_dt ? "; ABOVE IT (coupling.allow_unstable_step = true)" : "")
-              << "\n";
-  }
+
   const CellDiagnostics cell_diagnostics(cells);
   CouplingDiagnostics coupling_diagnostics;
   std::vector<std::string> columns = FluidDiagnostics::columns();
@@ -149,16 +129,16 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
     columns.insert(columns.end(), coupling_columns.begin(), coupling_columns.end());
   }
   DiagnosticsTable table(out + "/diagnostics.csv", columns);
-  auto add_diagnostics_row = [&](int step, const FluidSolveReport& report,
-                                 const ImmersedCoupling::StepReport* coupling_report) {
-    std::vector<double> row = FluidDiagnostics::row(config, *solver, step, report,
-                                                    std::chrono::duration<double>(Clock::now() - run_start).count());
+  auto add_diagnostics_row = [&] {
+    std::vector<double> row =
+        FluidDiagnostics::row(config, solver, simulation.steps(), simulation.last_report().fluid,
+                              std::chrono::duration<double>(Clock::now() - run_start).count());
     if (cells.population) {
       const std::vector<double> cell_row = times.time("cell diagnostics", [&] { return cell_diagnostics.row(cells); });
       row.insert(row.end(), cell_row.begin(), cell_row.end());
     }
     if (coupling) {
-      const std::vector<double> coupling_row = coupling_diagnostics.row(*coupling_report, times);
+      const std::vector<double> coupling_row = coupling_diagnostics.row(simulation.last_report(), times);
       row.insert(row.end(), coupling_row.begin(), coupling_row.end());
     }
     table.add_row(row);
@@ -174,10 +154,10 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
     host_interaction_forces = decltype(host_interaction_forces)("rouleau::run::interaction_forces_host",
                                                                 cells.population->num_nodes());
   }
-  auto write_fields = [&](int step) {
+  auto write_fields = [&] {
     if (!fields) return;
     times.time("output", [&] {
-      solver->velocity_and_pressure(velocity, pressure);
+      solver.velocity_and_pressure(velocity, pressure);
       std::vector<std::vector<FieldView>> nodal{
           {FieldView{"velocity_um_s", 3, velocity.data()}, FieldView{"pressure_Pa", 1, pressure.data()}}};
       std::vector<const double*> moved{nullptr};
@@ -196,58 +176,35 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
         }
         moved.push_back(cell_fields.positions.data());
       }
-      fields->write_step(step, solver->time(), nodal, {}, moved);
-      return 0;
+      fields->write_step(simulation.steps(), simulation.time(), nodal, {}, moved);
     });
   };
-  auto fail = [&](int step, const std::string& stage, const std::string& what) {
-    std::ostringstream msg;
-    msg << "diverged at step " << step << " (t = " << solver->time() << " s), stage " << stage << ": " << what
-        << "; fields up to the last good step are in " << out << " (checkpoints: not yet implemented)";
-    table.flush();
-    throw DivergenceError(msg.str());
-  };
-  auto fluid_failure = [](const FluidSolveReport& report) {
-    std::ostringstream msg;
-    msg << report.failure << "; residual momentum " << report.momentum_residual << ", continuity "
-        << report.continuity_residual << " (scaled)";
-    return msg.str();
-  };
 
-  write_fields(0);
-  if (config.time.mode == TimeMode::steady) {
-    const FluidSolveReport report = times.time("fluid solve", [&] { return solver->solve_steady(); });
-    if (!report.converged) fail(1, "fluid", fluid_failure(report));
-    add_diagnostics_row(1, report, nullptr);
-    write_fields(1);
-    std::cerr << "steady solve: " << report.newton_iterations << " Newton, " << report.gmres_iterations
-              << " GMRES iterations; residual momentum " << report.momentum_residual << ", continuity "
-              << report.continuity_residual << "\n";
-  } else {
-    const int steps = static_cast<int>(std::llround(config.time.end / config.time.dt));
-    ProgressReporter progress(steps, config.time.end, stderr_is_terminal(), std::cerr);
-    for (int step = 1; step <= steps; ++step) {
-      FluidSolveReport report;
-      ImmersedCoupling::StepReport coupling_report;
-      if (coupling) {
-        try {
-          coupling_report = coupling->advance(config.time.dt, config.time.scheme, times);
-        } catch (const std::runtime_error& error) {
-          fail(step, "coupling", error.what());
-        }
-        report = coupling_report.fluid;
-        if (report.converged && !coupling_report.finite)
-          fail(step, ImmersedCoupling::move_stage, "a cell node's interpolated velocity is NaN or Inf");
-      } else {
-        report = times.time("fluid solve", [&] { return solver->advance(config.time.dt, config.time.scheme); });
+  write_fields();
+  try {
+    if (config.time.mode == TimeMode::steady) {
+      const FluidSolveReport& report = simulation.solve_steady().fluid;
+      add_diagnostics_row();
+      write_fields();
+      std::cerr << "steady solve: " << report.newton_iterations << " Newton, " << report.gmres_iterations
+                << " GMRES iterations; residual momentum " << report.momentum_residual << ", continuity "
+                << report.continuity_residual << "\n";
+    } else {
+      const int steps = static_cast<int>(std::llround(config.time.end / config.time.dt));
+      ProgressReporter progress(steps, config.time.end, stderr_is_terminal(), std::cerr);
+      for (int step = 1; step <= steps; ++step) {
+        const FluidSolveReport& report = simulation.advance().fluid;
+        if (step % config.output.diagnostics_every_steps == 0 || step == steps) add_diagnostics_row();
+        if (step % config.output.fields_every_steps == 0 || step == steps) write_fields();
+        if (options.progress)
+          progress.update(step, simulation.time(), report.newton_iterations, report.gmres_iterations);
       }
-      if (!report.converged) fail(step, "fluid", fluid_failure(report));
-      if (step % config.output.diagnostics_every_steps == 0 || step == steps)
-        add_diagnostics_row(step, report, &coupling_report);
-      if (step % config.output.fields_every_steps == 0 || step == steps) write_fields(step);
-      if (options.progress) progress.update(step, solver->time(), report.newton_iterations, report.gmres_iterations);
+      if (options.progress) progress.finish();
     }
-    if (options.progress) progress.finish();
+  } catch (const DivergenceError& error) {
+    table.flush();
+    throw DivergenceError(std::string(error.what()) + "; fields up to the last good step are in " + out +
+                          " (checkpoints: not yet implemented)");
   }
   table.flush();
   times.print(std::cerr);

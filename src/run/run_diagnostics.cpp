@@ -1,5 +1,7 @@
 #include "run/run_diagnostics.hpp"
 
+#include "cells/cell_shape.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -62,7 +64,8 @@ std::vector<std::string> CellDiagnostics::columns() const {
                                  "largest_relative_volume_change"};
   for (std::size_t c = 0; c < initial_volumes_.size(); ++c) {
     const std::string cell = "cell" + std::to_string(c) + "_";
-    for (const char* name : {"volume_um3", "centroid_x_um", "centroid_y_um", "centroid_z_um"})
+    for (const char* name : {"volume_um3", "centroid_x_um", "centroid_y_um", "centroid_z_um", "inclination_deg",
+                             "taylor_deformation"})
       names.push_back(cell + name);
   }
   return names;
@@ -74,10 +77,12 @@ std::vector<double> CellDiagnostics::row(const CaseCells& cells) const {
   const double rebuilds = cells.interaction ? cells.interaction->rebuild_count() : 0.0;
   double largest_change = 0.0;
   const std::vector<CellMeasures> now = cells.population->measures();
+  const std::vector<ShearPlaneShape> shapes = shear_plane_shapes(*cells.population, now);
   std::vector<double> values{elastic, interaction, rebuilds, 0.0};
   for (std::size_t c = 0; c < now.size(); ++c) {
     largest_change = std::max(largest_change, std::fabs(now[c].volume / initial_volumes_[c] - 1.0));
-    values.insert(values.end(), {now[c].volume, now[c].centroid[0], now[c].centroid[1], now[c].centroid[2]});
+    values.insert(values.end(), {now[c].volume, now[c].centroid[0], now[c].centroid[1], now[c].centroid[2],
+                                 shapes[c].inclination_deg, shapes[c].taylor_deformation});
   }
   values[3] = largest_change;
   return values;

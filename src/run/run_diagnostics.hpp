@@ -1,7 +1,8 @@
 #pragma once
 // The columns of diagnostics.csv and how each row is measured: the fluid (solver effort,
 // residuals, mean velocity, kinetic energy, wall shear stress and the relative apparent
-// viscosity), the cells (energies, volumes and their drift, centroids) and the coupling
+// viscosity), the cells (energies, volumes and their drift, centroids, inclination and
+// Taylor deformation in the shear plane) and the coupling
 // (power spread and interpolated, speeds, time per stage since the previous row).
 #include <string>
 #include <vector>

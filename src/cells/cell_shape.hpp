@@ -1,0 +1,27 @@
+#pragma once
+// Shape measures of each cell in the shear plane (x–y), from its outer-surface nodes:
+//   inclination  the angle from +x of the major axis of the in-plane gyration tensor
+//                G = Σ_n w_n r_n r_nᵀ (r_n = (x_n − x_c, y_n − y_c), w_n the nodes' area
+//                weights), in degrees in (−90, 90];
+//   L, B         the largest and smallest distance to the centroid among the outer-surface
+//                nodes in a slab |z − z_c| < δ about the cell's mid-plane, δ = 0.6 × the
+//                mean outer-surface edge (DESIGN.md, capsule test);
+//   D            the Taylor deformation (L − B) / (L + B).
+#include <vector>
+
+#include "cells/cell_population.hpp"
+
+namespace rouleau {
+
+struct ShearPlaneShape {
+  double inclination_deg = 0.0;
+  double length = 0.0;   // L [μm]
+  double breadth = 0.0;  // B [μm]
+  double taylor_deformation = 0.0;
+};
+
+// One entry per cell; `measures` are population.measures() at the same positions.
+std::vector<ShearPlaneShape> shear_plane_shapes(const CellPopulation& population,
+                                                const std::vector<CellMeasures>& measures);
+
+}  // namespace rouleau

@@ -1,0 +1,76 @@
+#include "run/simulation.hpp"
+
+#include <sstream>
+
+#include "config/derived.hpp"
+#include "util/errors.hpp"
+
+namespace rouleau {
+
+FluidMesh make_case_mesh(const CaseConfig& config) {
+  const DomainConfig& domain = config.domain;
+  std::array<bool, 3> periodic{};
+  for (int d = 0; d < 3; ++d) periodic[d] = domain.boundary[2 * d].type == BoundaryType::periodic;
+  return make_box_mesh(domain.lower, domain.upper, domain.elements, domain.wall_grading, periodic);
+}
+
+Simulation::Simulation(const CaseConfig& config, const std::string& mesh_cache_dir)
+    : config_(config), derived_(derive_quantities(config)) {
+  FluidScales scales;
+  scales.length = derived_.length_scale;
+  scales.velocity = derived_.velocity_scale;
+  scales.pressure = derived_.pressure_scale;
+  scales.reynolds = derived_.reynolds;
+  mesh_ = times_.time("mesh", [&] { return make_case_mesh(config_); });
+  fluid_ = times_.time("fluid setup", [&] {
+    return std::make_unique<FluidSolver>(mesh_, config_.fluid, config_.domain.boundary, config_.solver, scales,
+                                         derived_.stokes);
+  });
+  cells_ = times_.time("cell meshes", [&] { return make_case_cells(config_, mesh_cache_dir); });
+  // The cells move with the fluid in a time loop; a steady solve keeps them in place.
+  if (cells_.population && config_.time.mode == TimeMode::transient)
+    coupling_ = times_.time("coupling setup", [&] { return std::make_unique<ImmersedCoupling>(*fluid_, cells_, config_); });
+}
+
+void Simulation::diverged(const std::string& stage, const std::string& what) const {
+  std::ostringstream msg;
+  msg << "diverged at step " << steps_ + 1 << " (t = " << fluid_->time() << " s), stage " << stage << ": " << what;
+  throw DivergenceError(msg.str());
+}
+
+namespace {
+std::string fluid_failure(const FluidSolveReport& report) {
+  std::ostringstream msg;
+  msg << report.failure << "; residual momentum " << report.momentum_residual << ", continuity "
+      << report.continuity_residual << " (scaled)";
+  return msg.str();
+}
+}  // namespace
+
+const ImmersedCoupling::StepReport& Simulation::advance() {
+  const TimeConfig& time = config_.time;
+  if (coupling_) {
+    try {
+      last_report_ = coupling_->advance(time.dt, time.scheme, times_);
+    } catch (const std::runtime_error& error) {
+      diverged("coupling", error.what());
+    }
+  } else {
+    last_report_ = ImmersedCoupling::StepReport{};
+    last_report_.fluid = times_.time(ImmersedCoupling::fluid_stage, [&] { return fluid_->advance(time.dt, time.scheme); });
+  }
+  if (!last_report_.fluid.converged) diverged("fluid", fluid_failure(last_report_.fluid));
+  if (!last_report_.finite) diverged(ImmersedCoupling::move_stage, "a cell node's interpolated velocity is NaN or Inf");
+  ++steps_;
+  return last_report_;
+}
+
+const ImmersedCoupling::StepReport& Simulation::solve_steady() {
+  last_report_ = ImmersedCoupling::StepReport{};
+  last_report_.fluid = times_.time(ImmersedCoupling::fluid_stage, [&] { return fluid_->solve_steady(); });
+  if (!last_report_.fluid.converged) diverged("fluid", fluid_failure(last_report_.fluid));
+  ++steps_;
+  return last_report_;
+}
+
+}  // namespace rouleau

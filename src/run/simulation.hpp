@@ -1,0 +1,61 @@
+#pragma once
+// A case built and ready to step: the fluid mesh and solver, the cells and their
+// interaction, the immersed coupling, and the stage times. run_case() drives one with
+// output around it; tests and case drivers drive one directly and read its state.
+#include <memory>
+#include <string>
+
+#include "cells/cells_from_case.hpp"
+#include "config/case_config.hpp"
+#include "coupling/immersed_coupling.hpp"
+#include "fluid/fluid_solver.hpp"
+#include "mesh/fluid_mesh.hpp"
+#include "run/stage_times.hpp"
+
+namespace rouleau {
+
+class Simulation {
+ public:
+  // Builds everything the case's stages need (cell meshes from `mesh_cache_dir`). The
+  // case must have been loaded by load_case() (so it is valid).
+  Simulation(const CaseConfig& config, const std::string& mesh_cache_dir);
+
+  // One time step of config.time.dt: the coupled step when there are cells, the fluid
+  // alone otherwise. Throws DivergenceError naming the step, the stage and the values
+  // when the fluid solve fails, a cell node leaves the fluid or its velocity is not finite.
+  const ImmersedCoupling::StepReport& advance();
+  // The steady solve (cells, if any, stay in place). Throws DivergenceError on failure.
+  const ImmersedCoupling::StepReport& solve_steady();
+
+  int steps() const { return steps_; }
+  double time() const { return fluid_->time(); }
+  const CaseConfig& config() const { return config_; }
+  const DerivedQuantities& derived() const { return derived_; }
+  const FluidMesh& mesh() const { return mesh_; }
+  FluidSolver& fluid() { return *fluid_; }
+  const FluidSolver& fluid() const { return *fluid_; }
+  const CaseCells& cells() const { return cells_; }
+  // The coupling, or nullptr (no cells, or a steady case).
+  ImmersedCoupling* coupling() { return coupling_.get(); }
+  const ImmersedCoupling::StepReport& last_report() const { return last_report_; }
+  StageTimes& times() { return times_; }
+  const StageTimes& times() const { return times_; }
+
+ private:
+  [[noreturn]] void diverged(const std::string& stage, const std::string& what) const;
+
+  CaseConfig config_;
+  DerivedQuantities derived_;
+  StageTimes times_;
+  FluidMesh mesh_;
+  std::unique_ptr<FluidSolver> fluid_;
+  CaseCells cells_;
+  std::unique_ptr<ImmersedCoupling> coupling_;
+  ImmersedCoupling::StepReport last_report_;
+  int steps_ = 0;
+};
+
+// The fluid mesh a case describes (a box of hexahedra, periodic where the case says).
+FluidMesh make_case_mesh(const CaseConfig& config);
+
+}  // namespace rouleau

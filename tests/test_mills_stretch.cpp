@@ -1,0 +1,420 @@
+// The optical-tweezers stretch of one red blood cell (Mills, Qie, Dao, Lim & Suresh 2004,
+// Mech. Chem. Biosystems 1, 169) as a static solve of the solid alone (DESIGN.md,
+// Decisions → Cells): the "normal" kind (hollow Evans–Fung shell, h = 0.36 μm,
+// G_s = 4.2 pN/μm, ν = 0.45, the paper's mesh resolution: 1238 nodes, 3767 tetrahedra)
+// pulled by a force F spread as a uniform traction over the outer-surface nodes within a
+// 2 μm contact patch at each end of a diameter (x), along the line through the patches'
+// centres (src/cells/static_equilibrium.hpp).
+//
+// Diameters as Mills et al. measured them on the images: axial = the largest extent along
+// the pull, transverse = the largest extent across it in the plane of the disc (y).
+//
+// Mills et al. 2004 (healthy cells, their figure of diameters against force, mean and
+// error bar), as digitised in the RBC-stretch data of the Korali/Mirheo examples
+// (Mills.2004.txt): force [pN], axial mean [lower, upper], transverse mean [lower, upper]
+// [μm]. The error bars are used as they are, not widened.
+//
+// What this model gives (measured, paper mesh; DISABLED_MillsStretch.ParameterStudy):
+// inside the bars at 0 and 16 pN, but at 68 pN axial 18.0 μm (bar 10.9–13.8) and at
+// 193 pN about 54 μm (bar 13.0–17.7), while the transverse diameters (5.8 and 4.3 μm)
+// stay inside theirs. The cause is the membrane law, not the solver, the mesh (coarse /
+// paper / fine: 18.8 / 18.0 / 18.0 μm at 68 pN) or the load patch: the 3D neo-Hookean
+// shell is strain-softening and area-extensible (small-strain area modulus
+// K_A = G_s (1+ν)/(1−ν) ≈ 2.6 G_s, against ~10⁵ G_s for the real membrane; DESIGN.md lists
+// area extensibility as a limitation). Its area grows by 33 % at 68 pN and 150 % at
+// 193 pN, while Mills' axial × transverse products (60, 61, 65 μm²) show a cell that keeps
+// its area. No G_s (4.2–16 pN/μm) or ν (0.45–0.49), with or without the enclosed volume
+// held, puts both diameters inside the bars at 68 and 193 pN: a G_s stiff enough for the
+// axial bar leaves the transverse diameter too wide. (Scratch runs outside this suite, with
+// a strain-hardening term C3 (J1 − 3)³, C3 = G/30, added to the force kernel and the total
+// area and volume held: G_s = 5.3 pN/μm, Mills' fitted value, lands inside every bar from
+// 0 to 193 pN; either ingredient alone does not.) So the strict comparison is
+// DISABLED_MillsStretch.InsideMillsErrorBarsAt0_68_193pN (it fails today);
+// MillsStretch.DiametersAgainstMillsEtAl2004 prints the comparison and checks what the
+// model does satisfy.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <Kokkos_Core.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "cells/cell_population.hpp"
+#include "cells/static_equilibrium.hpp"
+#include "config/cell_kinds.hpp"
+#include "geometry/cell_mesh.hpp"
+
+namespace rouleau {
+namespace {
+
+// ---- Mills et al. 2004
+
+struct MillsPoint {
+  double force;                                           // [pN]
+  double axial, axial_lower, axial_upper;                 // [μm]
+  double transverse, transverse_lower, transverse_upper;  // [μm]
+};
+// Digitised from Mills et al. 2004 (see the head of this file); forces as digitised.
+const std::vector<MillsPoint> mills_2004 = {
+    {0.000, 7.738, 7.160, 8.492, 7.740, 7.113, 8.355},      {15.987, 9.155, 8.344, 9.995, 6.707, 5.942, 7.451},
+    {38.365, 10.905, 9.718, 12.080, 5.944, 5.093, 6.823},   {67.964, 12.322, 10.898, 13.796, 4.963, 3.874, 6.067},
+    {130.513, 14.062, 12.144, 16.056, 4.529, 3.448, 5.511}, {192.688, 15.261, 12.954, 17.650, 4.257, 3.440, 5.091},
+};
+const MillsPoint& mills_point_near(double force) {
+  return *std::min_element(mills_2004.begin(), mills_2004.end(), [&](const MillsPoint& a, const MillsPoint& b) {
+    return std::fabs(a.force - force) < std::fabs(b.force - force);
+  });
+}
+
+// ---- the cell
+
+const double contact_diameter = 2.0;  // [μm], the beads' contact patch (Mills et al., Dao et al.)
+
+const CellKindConfig& normal_kind() {
+  static const CellKindConfig kind = builtin_cell_kinds()[0];
+  return kind;
+}
+// The "normal" kind's mesh at the paper's resolution, made once (Gmsh, ~0.3 s).
+const CellMesh& paper_mesh() {
+  static const CellMesh mesh = [] {
+    CellKindConfig kind = normal_kind();
+    kind.resolution = MeshResolution::paper;
+    return make_cell_mesh(kind);
+  }();
+  return mesh;
+}
+
+struct Membrane {
+  double shear_modulus = 4.2;  // G_s [pN/μm]
+  double poisson_ratio = 0.45;
+};
+
+PlacedCell placed_cell(const Membrane& membrane) {
+  PlacedCell cell;
+  cell.mesh = &paper_mesh();
+  const double g = membrane.shear_modulus / normal_kind().shell_thickness;  // G = G_s / h
+  cell.material = NeoHookeanMaterial::from_moduli(g, bulk_modulus_from_poisson(g, membrane.poisson_ratio));
+  return cell;
+}
+
+// One cell with its end patches and its solver.
+struct StretchSetup {
+  std::unique_ptr<CellPopulation> cells;
+  std::unique_ptr<StretchPatches> patches;
+  std::unique_ptr<StaticEquilibrium> solver;
+  explicit StretchSetup(const Membrane& membrane = {}) {
+    cells = std::make_unique<CellPopulation>(std::vector<PlacedCell>{placed_cell(membrane)});
+    patches = std::make_unique<StretchPatches>(*cells, 0, std::array<double, 3>{1.0, 0.0, 0.0},
+                                               std::array<double, 3>{0.0, 1.0, 0.0}, contact_diameter);
+    solver = std::make_unique<StaticEquilibrium>(*cells);
+  }
+};
+
+struct StretchResult {
+  double force = 0.0;
+  StretchDiameters diameters;
+  StaticEquilibriumReport report;
+  double area = 0.0, reference_area = 0.0, volume = 0.0, reference_volume = 0.0;
+};
+
+StretchResult stretch(double force, const Membrane& membrane = {}, bool volume_constraint = false,
+                      const StaticEquilibriumOptions& options = {}) {
+  StretchSetup setup(membrane);
+  const CellMeasures before = setup.cells->measures()[0];
+  setup.solver->set_pull(setup.patches->signed_weights(), force);
+  if (volume_constraint) setup.solver->set_volume_constraint(10.0);
+  StretchResult result;
+  result.force = force;
+  result.report = setup.solver->solve(options);
+  result.diameters = setup.patches->diameters(*setup.cells);
+  const CellMeasures after = setup.cells->measures()[0];
+  result.reference_area = before.area;
+  result.area = after.area;
+  result.reference_volume = before.volume;
+  result.volume = after.volume;
+  return result;
+}
+
+bool inside(double value, double lower, double upper) { return value >= lower && value <= upper; }
+
+void print(const StretchResult& r) {
+  const MillsPoint& m = mills_point_near(r.force);
+  std::printf(
+      "  Mills stretch %3.0f pN: axial %5.2f um (Mills %5.2f, bar %5.2f-%5.2f) %s, transverse %4.2f um (Mills %4.2f, "
+      "bar %4.2f-%4.2f) %s; area %+.0f %%, volume %+.1f %%; %s after %d iterations (%d force evaluations), residual "
+      "%.2g pN (tolerance %.2g), %.2f s\n",
+      r.force, r.diameters.axial, m.axial, m.axial_lower, m.axial_upper,
+      inside(r.diameters.axial, m.axial_lower, m.axial_upper) ? "inside" : "OUTSIDE", r.diameters.transverse,
+      m.transverse, m.transverse_lower, m.transverse_upper,
+      inside(r.diameters.transverse, m.transverse_lower, m.transverse_upper) ? "inside" : "OUTSIDE",
+      100.0 * (r.area / r.reference_area - 1.0), 100.0 * (r.volume / r.reference_volume - 1.0),
+      r.report.converged ? "converged" : r.report.stop_reason.c_str(), r.report.iterations, r.report.force_evaluations,
+      r.report.max_residual, r.report.tolerance, r.report.seconds);
+  std::fflush(stdout);
+}
+
+// Host copy of a View (node, 3) as Eigen points.
+std::vector<Eigen::Vector3d> host_points(const Kokkos::View<double* [3]>& view) {
+  auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), view);
+  std::vector<Eigen::Vector3d> points(h.extent(0));
+  for (std::size_t a = 0; a < h.extent(0); ++a) points[a] = Eigen::Vector3d(h(a, 0), h(a, 1), h(a, 2));
+  return points;
+}
+
+// The largest distance between corresponding points after the best rigid alignment of
+// `moved` onto `reference` (Kabsch: translation of the centroids, rotation from the SVD of
+// the covariance).
+double distance_after_rigid_alignment(const std::vector<Eigen::Vector3d>& moved,
+                                      const std::vector<Eigen::Vector3d>& reference) {
+  Eigen::Vector3d cm = Eigen::Vector3d::Zero(), cr = Eigen::Vector3d::Zero();
+  for (std::size_t a = 0; a < moved.size(); ++a) {
+    cm += moved[a];
+    cr += reference[a];
+  }
+  cm /= moved.size();
+  cr /= moved.size();
+  Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
+  for (std::size_t a = 0; a < moved.size(); ++a) h += (moved[a] - cm) * (reference[a] - cr).transpose();
+  Eigen::JacobiSVD<Eigen::Matrix3d> svd(h, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d d = Eigen::Matrix3d::Identity();
+  d(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0 ? -1.0 : 1.0;
+  const Eigen::Matrix3d r = svd.matrixV() * d * svd.matrixU().transpose();
+  double largest = 0.0;
+  for (std::size_t a = 0; a < moved.size(); ++a)
+    largest = std::max(largest, (r * (moved[a] - cm) + cr - reference[a]).norm());
+  return largest;
+}
+
+// ---- tests
+
+TEST(MillsStretch, PatchesHoldAFewPercentOfTheSurfaceNodesAtEachEnd) {
+  StretchSetup setup;
+  const StretchPatches& patches = *setup.patches;
+  auto w = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), patches.signed_weights());
+  double positive = 0.0, negative = 0.0;
+  for (std::size_t a = 0; a < w.extent(0); ++a) (w(a) > 0 ? positive : negative) += w(a);
+  const int surface = patches.cell_surface_nodes();
+  std::printf(
+      "  contact patches (d_c = %.1f um): %d and %d of %d outer-surface nodes (%.1f %%, %.1f %%), areas %.2f "
+      "and %.2f um^2 (a flat disc of d_c: %.2f um^2); weights sum to %+.15f and %+.15f\n",
+      contact_diameter, patches.node_count(1), patches.node_count(-1), surface, 100.0 * patches.node_count(1) / surface,
+      100.0 * patches.node_count(-1) / surface, patches.patch_area(1), patches.patch_area(-1),
+      M_PI * 0.25 * contact_diameter * contact_diameter, positive, negative);
+  for (const int side : {1, -1}) {
+    EXPECT_GE(patches.node_count(side), 0.01 * surface);
+    EXPECT_LE(patches.node_count(side), 0.05 * surface);
+  }
+  EXPECT_NEAR(positive, 1.0, 1e-12);
+  EXPECT_NEAR(negative, -1.0, 1e-12);
+}
+
+TEST(MillsStretch, ZeroForceKeepsTheReferenceShape) {
+  // (a) Unloaded and at rest in the reference configuration: already in equilibrium, not
+  // one node moves.
+  {
+    StretchSetup setup;
+    setup.solver->set_pull(setup.patches->signed_weights(), 0.0);
+    const StaticEquilibriumReport report = setup.solver->solve();
+    const auto x = host_points(setup.cells->positions()), x0 = host_points(setup.cells->reference_positions());
+    double moved = 0.0;
+    for (std::size_t a = 0; a < x.size(); ++a) moved = std::max(moved, (x[a] - x0[a]).norm());
+    const StretchDiameters d = setup.patches->diameters(*setup.cells);
+    std::printf(
+        "  0 pN from rest: %s after %d iterations, residual %.2g pN, largest move %.2g um, diameters %.3f x "
+        "%.3f um\n",
+        report.stop_reason.c_str(), report.iterations, report.max_residual, moved, d.axial, d.transverse);
+    EXPECT_TRUE(report.converged);
+    EXPECT_EQ(report.iterations, 0);
+    EXPECT_EQ(moved, 0.0);
+    EXPECT_NEAR(d.axial, normal_kind().diameter, 0.05);  // nodes on the rim of the faceted mesh
+    EXPECT_NEAR(d.transverse, normal_kind().diameter, 0.05);
+  }
+  // (b) Unloaded but started from a distorted shape (10 % longer along x, 5 % thinner along
+  // y, nodes jittered by up to 0.02 μm): relaxes back to the reference shape, up to a rigid
+  // motion, and its mass-weighted centroid does not move (no rigid mode is excited).
+  {
+    StretchSetup setup;
+    const auto x0 = host_points(setup.cells->reference_positions());
+    std::mt19937 rng(2004);
+    std::uniform_real_distribution<double> jitter(-0.02, 0.02);
+    auto start = Kokkos::create_mirror_view(setup.cells->positions());
+    for (std::size_t a = 0; a < x0.size(); ++a) {
+      start(a, 0) = 1.10 * x0[a].x() + jitter(rng);
+      start(a, 1) = 0.95 * x0[a].y() + jitter(rng);
+      start(a, 2) = x0[a].z() + jitter(rng);
+    }
+    Kokkos::deep_copy(setup.cells->positions(), start);
+    auto mass = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), setup.solver->fictitious_masses());
+    auto centroid = [&](const std::vector<Eigen::Vector3d>& x) {
+      Eigen::Vector3d c = Eigen::Vector3d::Zero();
+      double m = 0.0;
+      for (std::size_t a = 0; a < x.size(); ++a) {
+        c += mass(a) * x[a];
+        m += mass(a);
+      }
+      return Eigen::Vector3d(c / m);
+    };
+    const Eigen::Vector3d centroid_before = centroid(host_points(setup.cells->positions()));
+    const double distortion = distance_after_rigid_alignment(host_points(setup.cells->positions()), x0);
+    const StaticEquilibriumReport report = setup.solver->solve();
+    const auto x = host_points(setup.cells->positions());
+    const double distance = distance_after_rigid_alignment(x, x0);
+    const double drift = (centroid(x) - centroid_before).norm();
+    std::printf(
+        "  0 pN from a distorted shape (%.3f um off): %s after %d iterations (%.2f s), residual %.2g pN; "
+        "%.2g um off the reference shape after rigid alignment, centroid moved %.2g um\n",
+        distortion, report.stop_reason.c_str(), report.iterations, report.seconds, report.max_residual, distance,
+        drift);
+    EXPECT_TRUE(report.converged);
+    EXPECT_LT(distance, 1e-3);
+    EXPECT_LT(drift, 1e-10);
+  }
+}
+
+TEST(MillsStretch, SolverReachesATrueEquilibrium) {
+  // At 68 pN: the solver's own residual, then an independent check from the population's
+  // internal forces and the patch weights on the host: r_a = f_int,a + F w_a p̂,
+  // max_a |r_a| ≤ 1e-5 F; the applied loads balance (Σ f_ext = 0, Σ (x − c) × f_ext = 0);
+  // and a tenfold tighter tolerance moves the diameters by less than 0.01 μm.
+  const double force = 68.0;
+  StretchSetup setup;
+  setup.solver->set_pull(setup.patches->signed_weights(), force);
+  const StaticEquilibriumReport report = setup.solver->solve();
+  ASSERT_TRUE(report.converged) << report.stop_reason;
+  const StretchDiameters d = setup.patches->diameters(*setup.cells);
+
+  setup.cells->compute_internal_forces();
+  const auto x = host_points(setup.cells->positions());
+  const auto f = host_points(setup.cells->internal_forces());
+  auto w = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), setup.patches->signed_weights());
+  Eigen::Vector3d p = Eigen::Vector3d::Zero(), c = Eigen::Vector3d::Zero();
+  for (std::size_t a = 0; a < x.size(); ++a) {
+    p += w(a) * x[a];
+    c += x[a];
+  }
+  c /= x.size();
+  const Eigen::Vector3d pull = force * p.normalized();
+  double largest = 0.0;
+  Eigen::Vector3d total_load = Eigen::Vector3d::Zero(), load_moment = Eigen::Vector3d::Zero();
+  for (std::size_t a = 0; a < x.size(); ++a) {
+    const Eigen::Vector3d load = w(a) * pull;
+    largest = std::max(largest, (f[a] + load).norm());
+    total_load += load;
+    load_moment += (x[a] - c).cross(load);
+  }
+  StaticEquilibriumOptions tighter;
+  tighter.relative_tolerance = 1e-6;
+  const StaticEquilibriumReport tight = setup.solver->solve(tighter);
+  const StretchDiameters dt = setup.patches->diameters(*setup.cells);
+  std::printf(
+      "  68 pN: %d iterations, %d force evaluations, %.2f s; residual %.3g pN (solver) / %.3g pN (host), "
+      "tolerance %.3g pN; sum of loads %.2g pN, their moment %.2g pN um; tolerance 1e-6 (%d more "
+      "iterations): axial %.4f -> %.4f um, transverse %.4f -> %.4f um\n",
+      report.iterations, report.force_evaluations, report.seconds, report.max_residual, largest, report.tolerance,
+      total_load.norm(), load_moment.norm(), tight.iterations, d.axial, dt.axial, d.transverse, dt.transverse);
+  EXPECT_LE(report.max_residual, 1e-5 * force);
+  EXPECT_LE(largest, 1e-5 * force * (1.0 + 1e-9));
+  EXPECT_LT(total_load.norm(), 1e-12 * force);
+  EXPECT_LT(load_moment.norm(), 1e-10 * force);
+  EXPECT_TRUE(tight.converged);
+  EXPECT_LT(std::fabs(dt.axial - d.axial), 0.01);
+  EXPECT_LT(std::fabs(dt.transverse - d.transverse), 0.01);
+}
+
+TEST(MillsStretch, VolumeConstraintHoldsTheEnclosedVolume) {
+  // The optional incompressible-cytoplasm constraint: at 68 pN the free shell loses about
+  // 12 % of its volume; held, the volume stays within 1e-4 of V0 by a positive (inflating)
+  // pressure, and the solve is still a true equilibrium (pressure forces included). The
+  // soft penalty (k = 1 pN/μm⁵: 6e-4 off after the first relaxation) makes the augmented
+  // Lagrangian update its multiplier.
+  StretchSetup setup;
+  const double v0 = setup.cells->measures()[0].volume;
+  setup.solver->set_pull(setup.patches->signed_weights(), 68.0);
+  setup.solver->set_volume_constraint(1.0);
+  const StaticEquilibriumReport report = setup.solver->solve();
+  const double v = setup.cells->measures()[0].volume;
+  const double residual = setup.solver->compute_residual();
+  const double pressure = setup.solver->cell_pressures()[0];
+  std::printf(
+      "  68 pN, volume held: %s, %d iterations, %d multiplier updates, %.2f s; V %.3f -> %.3f um^3 "
+      "(%.1e), pressure %.4f Pa, residual %.2g pN (tolerance %.2g)\n",
+      report.stop_reason.c_str(), report.iterations, report.volume_updates, report.seconds, v0, v,
+      std::fabs(v / v0 - 1.0), pressure, residual, report.tolerance);
+  EXPECT_TRUE(report.converged);
+  EXPECT_GE(report.volume_updates, 1);
+  EXPECT_LE(std::fabs(v / v0 - 1.0), 1e-4);
+  EXPECT_GT(pressure, 0.0);
+  EXPECT_LE(residual, report.tolerance * (1.0 + 1e-9));
+}
+
+TEST(MillsStretch, DiametersAgainstMillsEtAl2004) {
+  // Prints the comparison at Mills' forces; checks what the model satisfies: every solve
+  // converges, the unloaded cell is inside the bars, the axial diameter grows and the
+  // transverse one shrinks with the force, and the transverse diameter stays inside the
+  // bars at 68 and 193 pN. The axial diameter at 38 pN and above is outside the bars (see
+  // the head of this file and DISABLED_MillsStretch.InsideMillsErrorBarsAt0_68_193pN).
+  std::vector<StretchResult> results;
+  for (const double force : {0.0, 16.0, 38.0, 68.0, 130.0, 193.0}) {
+    results.push_back(stretch(force));
+    print(results.back());
+    EXPECT_TRUE(results.back().report.converged) << force << " pN: " << results.back().report.stop_reason;
+  }
+  const MillsPoint& unloaded = mills_2004.front();
+  EXPECT_TRUE(inside(results[0].diameters.axial, unloaded.axial_lower, unloaded.axial_upper));
+  EXPECT_TRUE(inside(results[0].diameters.transverse, unloaded.transverse_lower, unloaded.transverse_upper));
+  for (std::size_t k = 1; k < results.size(); ++k) {
+    EXPECT_GT(results[k].diameters.axial, results[k - 1].diameters.axial);
+    EXPECT_LT(results[k].diameters.transverse, results[k - 1].diameters.transverse);
+  }
+  for (const StretchResult& r : results)
+    if (r.force == 68.0 || r.force == 193.0) {
+      const MillsPoint& m = mills_point_near(r.force);
+      EXPECT_TRUE(inside(r.diameters.transverse, m.transverse_lower, m.transverse_upper)) << r.force << " pN";
+    }
+}
+
+// The target: inside Mills' error bars at 0, 68 and 193 pN. Fails with the
+// project's membrane (G_s = 4.2 pN/μm, ν = 0.45): axial 18.0 μm at 68 pN and ~54 μm at
+// 193 pN. Enable it when the membrane law can hold its area (see the head of this file).
+TEST(MillsStretch, DISABLED_InsideMillsErrorBarsAt0_68_193pN) {
+  for (const double force : {0.0, 68.0, 193.0}) {
+    const StretchResult r = stretch(force);
+    print(r);
+    const MillsPoint& m = mills_point_near(force);
+    EXPECT_TRUE(r.report.converged);
+    EXPECT_TRUE(inside(r.diameters.axial, m.axial_lower, m.axial_upper))
+        << force << " pN: axial " << r.diameters.axial << " um, Mills " << m.axial_lower << "-" << m.axial_upper;
+    EXPECT_TRUE(inside(r.diameters.transverse, m.transverse_lower, m.transverse_upper))
+        << force << " pN: transverse " << r.diameters.transverse << " um, Mills " << m.transverse_lower << "-"
+        << m.transverse_upper;
+  }
+}
+
+// The evidence behind the head of this file: membrane shear modulus (the paper's 4.2, the
+// 5.3 Mills et al. fitted with their law, stiffer), Poisson ratio (DESIGN.md's 0.45–0.49)
+// and an enclosed-volume constraint (the incompressible cytoplasm) at 68 and 193 pN.
+// About 10 s on 2 cores: run with --gtest_also_run_disabled_tests.
+TEST(MillsStretch, DISABLED_ParameterStudy) {
+  struct Case {
+    Membrane membrane;
+    bool volume_constraint;
+  };
+  const std::vector<Case> cases = {
+      {{4.2, 0.45}, false}, {{4.2, 0.49}, false},  {{4.2, 0.45}, true},   {{5.3, 0.45}, false},
+      {{8.0, 0.45}, false}, {{12.0, 0.45}, false}, {{12.0, 0.49}, false}, {{16.0, 0.45}, false},
+  };
+  for (const Case& c : cases) {
+    std::printf("  G_s = %.1f pN/um, nu = %.2f%s:\n", c.membrane.shear_modulus, c.membrane.poisson_ratio,
+                c.volume_constraint ? ", enclosed volume held" : "");
+    for (const double force : {68.0, 193.0}) print(stretch(force, c.membrane, c.volume_constraint));
+  }
+}
+
+}  // namespace
+}  // namespace rouleau

@@ -104,7 +104,7 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
     try {
       rkpm_.update(population_.positions());
     } catch (const std::runtime_error& error) {
-      throw std::runtime_error(std::string("stage ") + spread_stage + ": " + error.what());
+      throw std::runtime_error(std::string(spread_stage) + ": " + error.what());
     }
     Kokkos::deep_copy(fluid_load_, 0.0);
     rkpm_.spread(fsi_forces_, fluid_load_, fluid_unknowns_per_node);

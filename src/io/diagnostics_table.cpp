@@ -31,8 +31,12 @@ void create_parent_directory(const std::string& path) {
 
 }  // namespace
 
-DiagnosticsTable::DiagnosticsTable(std::string path, std::vector<std::string> columns, std::size_t rows_per_flush)
-    : path_(std::move(path)), columns_(std::move(columns)), rows_per_flush_(rows_per_flush) {
+DiagnosticsTable::DiagnosticsTable(std::string path, std::vector<std::string> columns, std::size_t rows_per_flush,
+                                   double seconds_per_flush)
+    : path_(std::move(path)),
+      columns_(std::move(columns)),
+      rows_per_flush_(rows_per_flush),
+      seconds_per_flush_(seconds_per_flush) {
   check_column_names(path_, columns_);
   create_parent_directory(path_);
   flush();
@@ -54,7 +58,11 @@ void DiagnosticsTable::add_row(const std::vector<double>& values) {
                                 " columns");
   values_.insert(values_.end(), values.begin(), values.end());
   ++unflushed_rows_;
-  if (rows_per_flush_ > 0 && unflushed_rows_ >= rows_per_flush_) flush();
+  const bool rows_due = rows_per_flush_ > 0 && unflushed_rows_ >= rows_per_flush_;
+  const bool time_due =
+      seconds_per_flush_ > 0 &&
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - last_flush_).count() >= seconds_per_flush_;
+  if (rows_due || time_due) flush();
 }
 
 void DiagnosticsTable::flush() {
@@ -73,6 +81,7 @@ void DiagnosticsTable::flush() {
   }
   write_file_atomically(path_, text);
   unflushed_rows_ = 0;
+  last_flush_ = std::chrono::steady_clock::now();
 }
 
 }  // namespace rouleau

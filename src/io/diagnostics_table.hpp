@@ -2,6 +2,7 @@
 // The diagnostics time series of a run: one CSV row per step (time, energies, volumes,
 // residuals, ...). Rows stay in memory; every flush rewrites the whole file through PATH.tmp
 // and a rename, so the file on disk is always a complete table. Host-only: no Kokkos header.
+#include <chrono>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -13,9 +14,12 @@ class DiagnosticsTable {
   // A table written to `path` (its directory is created if missing) with these column
   // names, which must be non-empty, unique, and free of ',', '"' and line breaks. The file
   // is written at once with the header line only. add_row flushes by itself after every
-  // `rows_per_flush` rows (0: only explicit flushes and the destructor).
+  // `rows_per_flush` rows (0: only explicit flushes and the destructor), and when
+  // `seconds_per_flush` of wall time have passed since the last flush (0: never), so that
+  // a long run's file follows it.
   // Throws std::invalid_argument for bad columns, std::runtime_error if the file cannot be written.
-  DiagnosticsTable(std::string path, std::vector<std::string> columns, std::size_t rows_per_flush = 100);
+  DiagnosticsTable(std::string path, std::vector<std::string> columns, std::size_t rows_per_flush = 100,
+                   double seconds_per_flush = 10.0);
 
   // Flushes unwritten rows; an error is reported on stderr, never thrown.
   ~DiagnosticsTable();
@@ -41,6 +45,8 @@ class DiagnosticsTable {
   std::vector<std::string> columns_;
   std::vector<double> values_;  // row-major, row_count() x columns_.size()
   std::size_t rows_per_flush_;
+  double seconds_per_flush_;
+  std::chrono::steady_clock::time_point last_flush_;
   std::size_t unflushed_rows_ = 0;
 };
 

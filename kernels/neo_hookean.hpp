@@ -1,12 +1,18 @@
 #pragma once
 // The cells' compressible neo-Hookean solid (paper eq. 2) and its nodal internal forces
-// on 4-node tetrahedra in total-Lagrangian form (paper eqs. 9–10).
+// on 4-node tetrahedra in total-Lagrangian form (paper eqs. 9–10), with an optional
+// strain-hardening term (Mills, Qie, Dao, Lim & Suresh 2004, the third-order Yeoh term;
+// off, C3 = 0, in the paper's scenes):
 //
-//   W(F) = C1 (J1 − 3) + C2/2 (J2 − 1)²,  J1 = I1 I3^(−1/3),  J2 = I3^(1/2),
+//   W(F) = C1 (J1 − 3) + C3 (J1 − 3)³ + C2/2 (J2 − 1)²,  J1 = I1 I3^(−1/3),  J2 = I3^(1/2),
 //   I1 = tr C = F : F,  I3 = det C = J²,  J = det F,  C = FᵀF,
-// with C1 = G/2 and C2 = K (small-strain shear and bulk moduli). Its first
-// Piola–Kirchhoff stress P = ∂W/∂F, with ∂I1/∂F = 2F, ∂J/∂F = cof F = J F⁻ᵀ:
-//   P = C1 [2 J^(−2/3) F − (2/3) I1 J^(−5/3) cof F] + C2 (J − 1) cof F,
+// with C1 = G/2 and C2 = K (small-strain shear and bulk moduli; the C3 term is of fourth
+// order in the strain, J1 − 3 ≥ 0 being of second order, so it leaves G and K unchanged)
+// and C3 = r G, r the kind's strain_hardening_ratio (Mills et al.: C3 = G/30).
+// Its first Piola–Kirchhoff stress P = ∂W/∂F, with ∂I1/∂F = 2F, ∂J/∂F = cof F = J F⁻ᵀ,
+// ∂J1/∂F = 2 J^(−2/3) F − (2/3) I1 J^(−5/3) cof F:
+//   P = C1' [2 J^(−2/3) F − (2/3) I1 J^(−5/3) cof F] + C2 (J − 1) cof F,
+//   C1' = C1 + 3 C3 (J1 − 3)²,
 // and the internal (elastic) force on node a of an element, f_a = −∂(V0 W)/∂x_a:
 //   f_a = −V0 P ∇_X N_a.
 // The element's strain energy is V0 W(F).
@@ -22,9 +28,12 @@ namespace rouleau {
 struct NeoHookeanMaterial {
   double c1 = 0.0;  // C1 = G/2 [Pa]
   double c2 = 0.0;  // C2 = K [Pa]
+  double c3 = 0.0;  // C3 = r G, the strain-hardening coefficient [Pa] (0: the paper's law)
 
-  static NeoHookeanMaterial from_moduli(double shear_modulus, double bulk_modulus) {
-    return {0.5 * shear_modulus, bulk_modulus};
+  // From G, K and the strain-hardening ratio r = C3/G (Mills et al. 2004: 1/30).
+  static NeoHookeanMaterial from_moduli(double shear_modulus, double bulk_modulus,
+                                        double strain_hardening_ratio = 0.0) {
+    return {0.5 * shear_modulus, bulk_modulus, strain_hardening_ratio * shear_modulus};
   }
 
   // The invariants W and P are built from: J = det F, I1 = F : F, J^(−2/3).
@@ -37,17 +46,20 @@ struct NeoHookeanMaterial {
     return {j, frobenius_product(f, f), 1.0 / (cube_root * cube_root)};
   }
 
-  // W(F) [Pa = pN·μm/μm³]
+  // W(F) = C1 (J1 − 3) + C3 (J1 − 3)³ + C2/2 (J − 1)² [Pa = pN·μm/μm³]
   KOKKOS_INLINE_FUNCTION double energy_density(const Invariants& v) const {
-    return c1 * (v.i1 * v.j_minus_two_thirds - 3.0) + 0.5 * c2 * (v.j - 1.0) * (v.j - 1.0);
+    const double distortion = v.i1 * v.j_minus_two_thirds - 3.0;  // J1 − 3
+    return (c1 + c3 * distortion * distortion) * distortion + 0.5 * c2 * (v.j - 1.0) * (v.j - 1.0);
   }
   KOKKOS_INLINE_FUNCTION double energy_density(const Mat3& f) const { return energy_density(invariants(f)); }
 
-  // P(F) = ∂W/∂F [Pa]
+  // P(F) = ∂W/∂F = C1' ∂J1/∂F + C2 (J − 1) cof F, C1' = C1 + 3 C3 (J1 − 3)² [Pa]
   KOKKOS_INLINE_FUNCTION Mat3 first_piola(const Mat3& f, const Invariants& v) const {
     const Mat3 cof = cofactor(f);
-    const double deviatoric = 2.0 * c1 * v.j_minus_two_thirds;
-    const double volumetric = -(2.0 / 3.0) * c1 * v.i1 * v.j_minus_two_thirds / v.j + c2 * (v.j - 1.0);
+    const double distortion = v.i1 * v.j_minus_two_thirds - 3.0;  // J1 − 3
+    const double c1_effective = c1 + 3.0 * c3 * distortion * distortion;
+    const double deviatoric = 2.0 * c1_effective * v.j_minus_two_thirds;
+    const double volumetric = -(2.0 / 3.0) * c1_effective * v.i1 * v.j_minus_two_thirds / v.j + c2 * (v.j - 1.0);
     Mat3 p;
     for (int i = 0; i < 3; ++i)
       for (int k = 0; k < 3; ++k) p.m[i][k] = deviatoric * f.m[i][k] + volumetric * cof.m[i][k];

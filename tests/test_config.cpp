@@ -115,6 +115,8 @@ void expect_identical_cases(const CaseConfig& a, const CaseConfig& b) {
     EXPECT_EQ(first.poisson_ratio, second.poisson_ratio);
     EXPECT_EQ(first.density, second.density);
     EXPECT_EQ(first.morse_well_depth_factor, second.morse_well_depth_factor);
+    EXPECT_EQ(first.strain_hardening_ratio, second.strain_hardening_ratio);
+    EXPECT_EQ(first.area_modulus, second.area_modulus);
   }
   ASSERT_EQ(a.cells.size(), b.cells.size());
   for (std::size_t i = 0; i < a.cells.size(); ++i) {
@@ -534,6 +536,16 @@ TEST(ConfigCoupling, StableStepIsViscosityTimesElementOverMembraneModulus) {
   EXPECT_NO_THROW(rouleau::load_case(good_case, with_step(0.9 * expected, false)));
   EXPECT_EQ(load_error(good_case, with_step(1.1 * expected, false)).key(), "time.dt_s");
   EXPECT_NO_THROW(rouleau::load_case(good_case, with_step(1.1 * expected, true)));
+  // strain hardening (C3 = r G) and a global area modulus k_A stiffen it:
+  // G_eff = G_s (1 + 30 r) + k_A κ h_f / R, κ = 0.014 for a sphere
+  std::vector<std::string> stiffer = one_capsule;
+  stiffer.insert(stiffer.end(), {"cell_kinds.capsule.strain_hardening_ratio=0.05",
+                                 "cell_kinds.capsule.area_modulus_pN_um=1000"});
+  const CaseConfig hardened = rouleau::load_case(good_case, stiffer);
+  const double effective = capsule.shear_modulus * capsule.shell_thickness * (1.0 + 30.0 * 0.05) +
+                           1000.0 * 0.014 * h_f / (0.5 * capsule.diameter);
+  EXPECT_NEAR(rouleau::derive_quantities(hardened).stable_dt, 0.5 * config.fluid.viscosity * h_f / effective,
+              1e-15 * expected);
   // no cells, or a steady solve: no coupling step to bound
   EXPECT_EQ(rouleau::derive_quantities(rouleau::load_case(good_case)).stable_dt, 0.0);
 }
@@ -551,6 +563,18 @@ TEST(ConfigCells, OverridesReachKindsAndCells) {
   const InputError entry_error = load_error(good_case, {"cells=[{center_um=[1, 2, 3]}, {kind=\"nromal\", center_um=[0, 0, 0]}]"});
   EXPECT_EQ(entry_error.file(), "--set");
   EXPECT_EQ(entry_error.key(), "cells[1].kind");
+  // The membrane options beyond the paper's law: off in every built-in kind, set per kind.
+  for (const CellKindConfig& kind : config.cell_kinds) {
+    EXPECT_EQ(kind.strain_hardening_ratio, 0.0) << kind.name;
+    EXPECT_EQ(kind.area_modulus, 0.0) << kind.name;
+  }
+  const CaseConfig mills = rouleau::load_case(
+      good_case, {"cell_kinds.normal.strain_hardening_ratio=0.0333", "cell_kinds.normal.area_modulus_pN_um=300"});
+  EXPECT_DOUBLE_EQ(kind_of(mills, "normal").strain_hardening_ratio, 0.0333);
+  EXPECT_DOUBLE_EQ(kind_of(mills, "normal").area_modulus, 300.0);
+  EXPECT_EQ(kind_of(mills, "sickle").area_modulus, 0.0);
+  EXPECT_EQ(load_error(good_case, {"cell_kinds.capsule.strain_hardening_ratio=-0.1"}).key(),
+            "cell_kinds.capsule.strain_hardening_ratio");
 }
 
 TEST(ConfigInteraction, DefaultsGiveTheStatedAdhesionEnergy) {
@@ -589,7 +613,9 @@ TEST(ConfigResolved, RoundTripGivesAnIdenticalCase) {
        " {center_um=[30, 0.7, 10]}, {kind=\"stiff-1\", center_um=[20, -3, 10]}, {kind=\"ball\", center_um=[3, 2, 3]}]",
        "interaction.enabled=true", "interaction.quadrature=gauss6", "interaction.strength_multiplier=5", "interaction.beta_per_um=3.7",
        "interaction.pair=[{kind_a=\"sickle\", kind_b=\"ball\", well_depth_pN_um3=17.1, cutoff_um=2.2}]",
-       "cell_kinds.ball.morse_well_depth_factor=0.3", "coupling.support_elements=2.5",
+       "cell_kinds.ball.morse_well_depth_factor=0.3", "cell_kinds.normal.strain_hardening_ratio=0.0333",
+       "cell_kinds.normal.area_modulus_pN_um=250.3", "cell_kinds.stiff-1.area_modulus_pN_um=17",
+       "coupling.support_elements=2.5",
        "coupling.stable_step_factor=0.37", "coupling.allow_unstable_step=true",
        "coupling.gravity_m_s2=[0.1, -9.81, 0.3]", "scene.skip_unneeded_stages=false"},
   };

@@ -1,5 +1,6 @@
-// The neo-Hookean solid (paper eqs. 2, 9, 10) on 4-node tetrahedra, and the cells'
-// surface measures, against exact facts and a plain serial reference.
+// The neo-Hookean solid (paper eqs. 2, 9, 10) on 4-node tetrahedra, with and without the
+// strain-hardening term C3 (J1 − 3)³, the global area constraint of a cell, and the cells'
+// surface measures, against exact facts, finite differences and a plain serial reference.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -24,6 +25,10 @@ using Population = CellPopulation;
 const double shear_modulus = 4.2 / 0.36;
 const double bulk_modulus = 2.0 * shear_modulus * 1.45 / (3.0 * 0.1);
 const NeoHookeanMaterial material = NeoHookeanMaterial::from_moduli(shear_modulus, bulk_modulus);
+// The same with Mills et al. 2004's strain hardening, C3 = G/30, and with an exaggerated
+// one, C3 = 3G, where the C3 term dominates the stress at the tests' strains.
+const NeoHookeanMaterial mills_material = NeoHookeanMaterial::from_moduli(shear_modulus, bulk_modulus, 1.0 / 30.0);
+const NeoHookeanMaterial hardening_material = NeoHookeanMaterial::from_moduli(shear_modulus, bulk_modulus, 3.0);
 
 Mat3 to_mat3(const Eigen::Matrix3d& a) {
   Mat3 m;
@@ -48,78 +53,106 @@ Eigen::Matrix3d rotation(double angle, Eigen::Vector3d axis) {
   return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
 }
 
-// The reference stress by another route: S = 2 ∂W/∂C, with ∂I1/∂C = I, ∂I3/∂C = I3 C⁻¹:
-//   S = 2 C1 J^(−2/3) (I − I1/3 C⁻¹) + C2 J (J − 1) C⁻¹,   P = F S,   σ = J⁻¹ F S Fᵀ.
+// The reference stress by another route: S = 2 ∂W/∂C, with ∂I1/∂C = I, ∂I3/∂C = I3 C⁻¹,
+// ∂J1/∂C = J^(−2/3) (I − I1/3 C⁻¹), and C1' = C1 + 3 C3 (J1 − 3)²:
+//   S = 2 C1' J^(−2/3) (I − I1/3 C⁻¹) + C2 J (J − 1) C⁻¹,   P = F S,   σ = J⁻¹ F S Fᵀ.
 Eigen::Matrix3d reference_first_piola(const Eigen::Matrix3d& f, const NeoHookeanMaterial& m) {
   const Eigen::Matrix3d c = f.transpose() * f;
   const double j = f.determinant();
   const double i1 = c.trace();
+  const double j1 = i1 * std::pow(j, -2.0 / 3.0);
+  const double c1 = m.c1 + 3.0 * m.c3 * (j1 - 3.0) * (j1 - 3.0);
   const Eigen::Matrix3d c_inverse = c.inverse();
-  const Eigen::Matrix3d s = 2.0 * m.c1 * std::pow(j, -2.0 / 3.0) * (Eigen::Matrix3d::Identity() - i1 / 3.0 * c_inverse) +
+  const Eigen::Matrix3d s = 2.0 * c1 * std::pow(j, -2.0 / 3.0) * (Eigen::Matrix3d::Identity() - i1 / 3.0 * c_inverse) +
                             m.c2 * j * (j - 1.0) * c_inverse;
   return f * s;
 }
+// W = C1 (J1 − 3) + C3 (J1 − 3)³ + C2/2 (J − 1)², written out with Eigen.
+double reference_energy_density(const Eigen::Matrix3d& f, const NeoHookeanMaterial& m) {
+  const double j = f.determinant();
+  const double j1 = (f.transpose() * f).trace() * std::pow(j, -2.0 / 3.0);
+  return m.c1 * (j1 - 3.0) + m.c3 * std::pow(j1 - 3.0, 3) + 0.5 * m.c2 * (j - 1.0) * (j - 1.0);
+}
 
 TEST(NeoHookeanMaterial, StressIsTheDerivativeOfTheEnergyDensity) {
-  // P = ∂W/∂F by central differences of W, step 1e-6.
-  std::mt19937 rng(7);
-  double worst = 0.0;
-  for (int sample = 0; sample < 20; ++sample) {
-    const Eigen::Matrix3d f = random_deformation_gradient(rng, 0.3);
-    const Mat3 p = material.first_piola(to_mat3(f));
-    const double step = 1e-6;
-    double error = 0.0, norm = 0.0;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        Eigen::Matrix3d plus = f, minus = f;
-        plus(i, j) += step;
-        minus(i, j) -= step;
-        const double derivative =
-            (material.energy_density(to_mat3(plus)) - material.energy_density(to_mat3(minus))) / (2 * step);
-        error += std::pow(derivative - p.m[i][j], 2);
-        norm += p.m[i][j] * p.m[i][j];
-      }
-    worst = std::max(worst, std::sqrt(error / norm));
+  // P = ∂W/∂F by central differences of W, step 1e-6, for the paper's law and with the
+  // strain-hardening term (Mills' C3 = G/30 and C3 = 3G).
+  for (const NeoHookeanMaterial& m : {material, mills_material, hardening_material}) {
+    NeoHookeanMaterial without_hardening = m;
+    without_hardening.c3 = 0.0;
+    std::mt19937 rng(7);
+    double worst = 0.0, hardening_share = 0.0;
+    for (int sample = 0; sample < 20; ++sample) {
+      const Eigen::Matrix3d f = random_deformation_gradient(rng, 0.3);
+      const Mat3 p = m.first_piola(to_mat3(f));
+      const Eigen::Matrix3d hardening_part = to_eigen(p) - to_eigen(without_hardening.first_piola(to_mat3(f)));
+      hardening_share = std::max(hardening_share, hardening_part.norm() / to_eigen(p).norm());
+      const double step = 1e-6;
+      double error = 0.0, norm = 0.0;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+          Eigen::Matrix3d plus = f, minus = f;
+          plus(i, j) += step;
+          minus(i, j) -= step;
+          const double derivative =
+              (m.energy_density(to_mat3(plus)) - m.energy_density(to_mat3(minus))) / (2 * step);
+          error += std::pow(derivative - p.m[i][j], 2);
+          norm += p.m[i][j] * p.m[i][j];
+        }
+      worst = std::max(worst, std::sqrt(error / norm));
+    }
+    std::cout << "  C3/G = " << m.c3 / shear_modulus << ": P vs central-difference ∂W/∂F: worst relative error "
+              << worst << " (the C3 term up to " << hardening_share << " of |P|)\n";
+    EXPECT_LT(worst, 1e-6);
+    if (m.c3 > 0.0) EXPECT_GT(hardening_share, m.c3 > shear_modulus ? 0.3 : 1e-3);  // the term is exercised
   }
-  std::cout << "  P vs central-difference ∂W/∂F: worst relative error " << worst << "\n";
-  EXPECT_LT(worst, 1e-6);
 }
 
 TEST(NeoHookeanMaterial, StressMatchesTheSecondPiolaKirchhoffRoute) {
-  std::mt19937 rng(11);
-  double worst = 0.0;
-  for (int sample = 0; sample < 50; ++sample) {
-    const Eigen::Matrix3d f = random_deformation_gradient(rng, 0.4);
-    const Eigen::Matrix3d expected = reference_first_piola(f, material);
-    worst = std::max(worst, (to_eigen(material.first_piola(to_mat3(f))) - expected).norm() / expected.norm());
+  for (const NeoHookeanMaterial& m : {material, mills_material, hardening_material}) {
+    std::mt19937 rng(11);
+    double worst = 0.0, worst_energy = 0.0;
+    for (int sample = 0; sample < 50; ++sample) {
+      const Eigen::Matrix3d f = random_deformation_gradient(rng, 0.4);
+      const Eigen::Matrix3d expected = reference_first_piola(f, m);
+      worst = std::max(worst, (to_eigen(m.first_piola(to_mat3(f))) - expected).norm() / expected.norm());
+      worst_energy =
+          std::max(worst_energy, std::fabs(m.energy_density(to_mat3(f)) / reference_energy_density(f, m) - 1.0));
+    }
+    std::cout << "  C3/G = " << m.c3 / shear_modulus << ": P vs F·S (2 ∂W/∂C): worst relative difference " << worst
+              << ", W vs the written-out W " << worst_energy << "\n";
+    EXPECT_LT(worst, 1e-13);
+    EXPECT_LT(worst_energy, 1e-12);
   }
-  std::cout << "  P vs F·S (2 ∂W/∂C): worst relative difference " << worst << "\n";
-  EXPECT_LT(worst, 1e-13);
 }
 
 TEST(NeoHookeanMaterial, SmallStrainsRecoverTheShearAndBulkModuli) {
   // Linear elasticity: σ = 2G ε_dev + K tr(ε) I. Uniaxial strain ε along x:
   //   σ_xx = (K + 4G/3) ε, σ_yy = (K − 2G/3) ε  ⇒  G = (σ_xx − σ_yy)/(2ε), K = (σ_xx + 2σ_yy)/(3ε);
   // simple shear γ: σ_xy = G γ; hydrostatic stretch (1+ε)I: σ_ii = 3K ε.
-  const double strain = 1e-7;
-  Mat3 uniaxial = Mat3::identity();
-  uniaxial.m[0][0] += strain;
-  const Mat3 sigma = material.cauchy_stress(uniaxial);
-  const double g_uniaxial = (sigma.m[0][0] - sigma.m[1][1]) / (2.0 * strain);
-  const double k_uniaxial = (sigma.m[0][0] + 2.0 * sigma.m[1][1]) / (3.0 * strain);
-  Mat3 shear = Mat3::identity();
-  shear.m[0][1] = strain;
-  const double g_shear = material.cauchy_stress(shear).m[0][1] / strain;
-  Mat3 hydrostatic = Mat3::identity();
-  for (int i = 0; i < 3; ++i) hydrostatic.m[i][i] += strain;
-  const double k_hydrostatic = material.cauchy_stress(hydrostatic).m[0][0] / (3.0 * strain);
-  std::cout << "  uniaxial: G " << g_uniaxial << " K " << k_uniaxial << "; simple shear G " << g_shear
-            << "; hydrostatic K " << k_hydrostatic << " (exact G " << shear_modulus << ", K " << bulk_modulus << ")\n";
-  // The O(ε) nonlinear terms relative to the moduli are ~ε·K/G ≈ 1e-6.
-  EXPECT_NEAR(g_uniaxial / shear_modulus, 1.0, 1e-5);
-  EXPECT_NEAR(k_uniaxial / bulk_modulus, 1.0, 1e-5);
-  EXPECT_NEAR(g_shear / shear_modulus, 1.0, 1e-5);
-  EXPECT_NEAR(k_hydrostatic / bulk_modulus, 1.0, 1e-5);
+  // The C3 term is of fourth order in the strain: the moduli are the same with it.
+  for (const NeoHookeanMaterial& m : {material, hardening_material}) {
+    const double strain = 1e-7;
+    Mat3 uniaxial = Mat3::identity();
+    uniaxial.m[0][0] += strain;
+    const Mat3 sigma = m.cauchy_stress(uniaxial);
+    const double g_uniaxial = (sigma.m[0][0] - sigma.m[1][1]) / (2.0 * strain);
+    const double k_uniaxial = (sigma.m[0][0] + 2.0 * sigma.m[1][1]) / (3.0 * strain);
+    Mat3 shear = Mat3::identity();
+    shear.m[0][1] = strain;
+    const double g_shear = m.cauchy_stress(shear).m[0][1] / strain;
+    Mat3 hydrostatic = Mat3::identity();
+    for (int i = 0; i < 3; ++i) hydrostatic.m[i][i] += strain;
+    const double k_hydrostatic = m.cauchy_stress(hydrostatic).m[0][0] / (3.0 * strain);
+    std::cout << "  C3/G = " << m.c3 / shear_modulus << ": uniaxial: G " << g_uniaxial << " K " << k_uniaxial
+              << "; simple shear G " << g_shear << "; hydrostatic K " << k_hydrostatic << " (exact G "
+              << shear_modulus << ", K " << bulk_modulus << ")\n";
+    // The O(ε) nonlinear terms relative to the moduli are ~ε·K/G ≈ 1e-6.
+    EXPECT_NEAR(g_uniaxial / shear_modulus, 1.0, 1e-5);
+    EXPECT_NEAR(k_uniaxial / bulk_modulus, 1.0, 1e-5);
+    EXPECT_NEAR(g_shear / shear_modulus, 1.0, 1e-5);
+    EXPECT_NEAR(k_hydrostatic / bulk_modulus, 1.0, 1e-5);
+  }
 }
 
 // ---- the element kernel on whole meshes
@@ -154,10 +187,12 @@ void deform(Population& cells, Map map) {
   Kokkos::deep_copy(cells.positions(), x);
 }
 
-std::vector<PlacedCell> one_cell(const CellMesh& mesh, Eigen::Vector3d center = Eigen::Vector3d::Zero()) {
+std::vector<PlacedCell> one_cell(const CellMesh& mesh, Eigen::Vector3d center = Eigen::Vector3d::Zero(),
+                                 const NeoHookeanMaterial& cell_material = material, double area_modulus = 0.0) {
   PlacedCell cell;
   cell.mesh = &mesh;
-  cell.material = material;
+  cell.material = cell_material;
+  cell.area_modulus = area_modulus;
   for (int i = 0; i < 3; ++i) cell.center[i] = center[i];
   return {cell};
 }
@@ -171,15 +206,12 @@ void deform_randomly(Population& cells, std::uint32_t seed, double jitter) {
   deform(cells, [&](const Eigen::Vector3d& x) { return Eigen::Vector3d(f * x + Eigen::Vector3d(u(rng), u(rng), u(rng))); });
 }
 
-TEST(NeoHookeanForces, AreMinusTheGradientOfTheStrainEnergy) {
-  // f = −∂E/∂x by central differences of E = Σ V0 W at every coordinate of 30 nodes.
-  const CellMesh mesh = testing::tetrahedral_box(3, 3.0);
-  Population cells(one_cell(mesh));
-  deform_randomly(cells, 3, 0.08);
+// max over 30 nodes' coordinates of the relative error of f against −∂E/∂x by central
+// differences of E (E = Σ V0 W + E_A, compute_internal_forces_and_energy).
+double force_vs_energy_gradient(Population& cells, double step = 1e-6) {
   cells.compute_internal_forces();
   const auto force = host_copy(cells.internal_forces());
   const auto x = host_copy(cells.positions());
-  const double step = 1e-6;
   double error = 0.0, norm = 0.0;
   for (int node = 0; node < cells.num_nodes(); node += std::max(1, cells.num_nodes() / 30))
     for (int i = 0; i < 3; ++i) {
@@ -194,9 +226,22 @@ TEST(NeoHookeanForces, AreMinusTheGradientOfTheStrainEnergy) {
       error += std::pow(derivative - force(node, i), 2);
       norm += force(node, i) * force(node, i);
     }
-  const double relative = std::sqrt(error / norm);
-  std::cout << "  nodal force vs −∂E/∂x (central differences): relative error " << relative << "\n";
-  EXPECT_LT(relative, 1e-6);
+  Kokkos::deep_copy(cells.positions(), x);
+  return std::sqrt(error / norm);
+}
+
+TEST(NeoHookeanForces, AreMinusTheGradientOfTheStrainEnergy) {
+  // f = −∂E/∂x by central differences of E = Σ V0 W at every coordinate of 30 nodes, for
+  // the paper's law and with strain hardening.
+  const CellMesh mesh = testing::tetrahedral_box(3, 3.0);
+  for (const NeoHookeanMaterial& m : {material, mills_material, hardening_material}) {
+    Population cells(one_cell(mesh, Eigen::Vector3d::Zero(), m));
+    deform_randomly(cells, 3, 0.08);
+    const double relative = force_vs_energy_gradient(cells);
+    std::cout << "  C3/G = " << m.c3 / shear_modulus
+              << ": nodal force vs −∂E/∂x (central differences): relative error " << relative << "\n";
+    EXPECT_LT(relative, 1e-6);
+  }
 }
 
 TEST(NeoHookeanForces, RigidMotionsGiveNoForceAndNoEnergy) {
@@ -308,41 +353,41 @@ TEST(NeoHookeanForces, ConserveMomentumAndAngularMomentum) {
 
 TEST(NeoHookeanForces, MatchAPlainSerialReference) {
   // The reference: per element F = D_s D_m⁻¹ with Eigen, P = F S from the S route,
-  // f_a = −V0 P ∇N_a summed in a plain loop.
+  // f_a = −V0 P ∇N_a summed in a plain loop; the paper's law and with strain hardening.
   const CellMesh mesh = testing::tetrahedral_box(3, 3.0);
-  Population cells(one_cell(mesh));
-  deform_randomly(cells, 19, 0.1);
-  const double energy = cells.compute_internal_forces_and_energy();
-  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.positions());
-  Kokkos::View<double* [3], Kokkos::HostSpace> expected("expected", cells.num_nodes());
-  double expected_energy = 0.0;
-  for (const auto& t : mesh.tetrahedra) {
-    Eigen::Matrix3d dm, ds;
-    for (int k = 0; k < 3; ++k)
-      for (int i = 0; i < 3; ++i) {
-        dm(i, k) = mesh.nodes[t[k + 1]][i] - mesh.nodes[t[0]][i];
-        ds(i, k) = x(t[k + 1], i) - x(t[0], i);
+  for (const NeoHookeanMaterial& m : {material, mills_material, hardening_material}) {
+    Population cells(one_cell(mesh, Eigen::Vector3d::Zero(), m));
+    deform_randomly(cells, 19, 0.1);
+    const double energy = cells.compute_internal_forces_and_energy();
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.positions());
+    Kokkos::View<double* [3], Kokkos::HostSpace> expected("expected", cells.num_nodes());
+    double expected_energy = 0.0;
+    for (const auto& t : mesh.tetrahedra) {
+      Eigen::Matrix3d dm, ds;
+      for (int k = 0; k < 3; ++k)
+        for (int i = 0; i < 3; ++i) {
+          dm(i, k) = mesh.nodes[t[k + 1]][i] - mesh.nodes[t[0]][i];
+          ds(i, k) = x(t[k + 1], i) - x(t[0], i);
+        }
+      const Eigen::Matrix3d f = ds * dm.inverse();
+      const Eigen::Matrix3d p = reference_first_piola(f, m);
+      const double volume = dm.determinant() / 6.0;
+      Eigen::Matrix<double, 3, 4> gradients;  // columns ∇N_a
+      gradients.rightCols<3>() = dm.inverse().transpose();
+      gradients.col(0) = -gradients.rightCols<3>().rowwise().sum();
+      for (int a = 0; a < 4; ++a) {
+        const Eigen::Vector3d fa = -volume * p * gradients.col(a);
+        for (int i = 0; i < 3; ++i) expected(t[a], i) += fa[i];
       }
-    const Eigen::Matrix3d f = ds * dm.inverse();
-    const Eigen::Matrix3d p = reference_first_piola(f, material);
-    const double volume = dm.determinant() / 6.0;
-    Eigen::Matrix<double, 3, 4> gradients;  // columns ∇N_a
-    gradients.rightCols<3>() = dm.inverse().transpose();
-    gradients.col(0) = -gradients.rightCols<3>().rowwise().sum();
-    for (int a = 0; a < 4; ++a) {
-      const Eigen::Vector3d fa = -volume * p * gradients.col(a);
-      for (int i = 0; i < 3; ++i) expected(t[a], i) += fa[i];
+      expected_energy += volume * reference_energy_density(f, m);
     }
-    const double j = f.determinant();
-    expected_energy += volume * (material.c1 * ((f.transpose() * f).trace() * std::pow(j, -2.0 / 3.0) - 3.0) +
-                                 0.5 * material.c2 * (j - 1.0) * (j - 1.0));
+    auto computed = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.internal_forces());
+    const double difference = testing::relativeDifference(flat(computed), flat(expected));
+    std::cout << "  C3/G = " << m.c3 / shear_modulus << ": kernel vs serial reference: forces " << difference
+              << ", energy " << std::fabs(energy / expected_energy - 1.0) << " (relative)\n";
+    EXPECT_LT(difference, 1e-12);
+    EXPECT_NEAR(energy / expected_energy, 1.0, 1e-12);
   }
-  auto computed = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.internal_forces());
-  const double difference = testing::relativeDifference(flat(computed), flat(expected));
-  std::cout << "  kernel vs serial reference: forces " << difference << ", energy "
-            << std::fabs(energy / expected_energy - 1.0) << " (relative)\n";
-  EXPECT_LT(difference, 1e-12);
-  EXPECT_NEAR(energy / expected_energy, 1.0, 1e-12);
 }
 
 #if defined(KOKKOS_ENABLE_SERIAL) && defined(KOKKOS_ENABLE_OPENMP) && !defined(KOKKOS_ENABLE_CUDA)
@@ -365,6 +410,143 @@ TEST(NeoHookeanForces, SerialAndThreadedRunsAgree) {
   EXPECT_NEAR(threaded_energy / serial_energy, 1.0, 1e-14);
 }
 #endif
+
+// ---- the global area constraint of a cell (kernels/area_constraint.hpp)
+
+const double area_modulus = 300.0;       // k_A [pN/μm]
+const NeoHookeanMaterial no_elasticity;  // zero moduli: the forces are the area constraint's alone
+
+// The serial reference: per triangle A_t = |(x1 − x0) × (x2 − x0)|/2 and
+// ∂A_t/∂x_k = ½ n̂ × (x_{k+2} − x_{k+1}); T = k_A (A − A0)/A0, f = −T ∂A/∂x,
+// E_A = k_A (A − A0)²/(2 A0), for the cell whose surface is `mesh` placed at `offset`.
+struct AreaReference {
+  double area = 0.0, energy = 0.0;
+  std::vector<Eigen::Vector3d> forces;
+};
+template <class HostPositions>
+AreaReference reference_area_forces(const CellMesh& mesh, const HostPositions& x, int offset, double k_a,
+                                    double reference_area) {
+  AreaReference r;
+  r.forces.assign(mesh.nodes.size(), Eigen::Vector3d::Zero());
+  std::vector<std::array<Eigen::Vector3d, 3>> gradients;
+  for (const auto& t : mesh.outer_surface) {
+    Eigen::Vector3d y[3];
+    for (int k = 0; k < 3; ++k) y[k] = Eigen::Vector3d(x(offset + t[k], 0), x(offset + t[k], 1), x(offset + t[k], 2));
+    const Eigen::Vector3d normal = (y[1] - y[0]).cross(y[2] - y[0]);
+    r.area += 0.5 * normal.norm();
+    const Eigen::Vector3d unit = normal.normalized();
+    std::array<Eigen::Vector3d, 3> g;
+    for (int k = 0; k < 3; ++k) g[k] = 0.5 * unit.cross(y[(k + 2) % 3] - y[(k + 1) % 3]);
+    gradients.push_back(g);
+  }
+  const double strain = (r.area - reference_area) / reference_area;
+  r.energy = 0.5 * k_a * reference_area * strain * strain;
+  for (std::size_t t = 0; t < mesh.outer_surface.size(); ++t)
+    for (int k = 0; k < 3; ++k) r.forces[mesh.outer_surface[t][k]] -= k_a * strain * gradients[t][k];
+  return r;
+}
+
+TEST(AreaConstraint, VanishesAtTheReferenceAndUnderRigidMotions) {
+  // The box [−1.5, 1.5]³: A0 = 54 μm². At rest, and moved rigidly, E_A = 0 and no force.
+  const CellMesh mesh = testing::tetrahedral_box(3, 3.0);
+  Population cells(one_cell(mesh, {5.0, -2.0, 1.0}, no_elasticity, area_modulus));
+  ASSERT_TRUE(cells.has_area_constraint());
+  const double a0 = host_copy(cells.reference_areas())(0);
+  double worst_force = 0.0, worst_energy = 0.0, worst_tension = 0.0;
+  for (const double angle : {0.0, 0.4, 2.5}) {
+    const Eigen::Matrix3d r = rotation(angle, Eigen::Vector3d(1.0, -2.0, 0.5));
+    const Eigen::Vector3d shift(3.0, 1.0, -7.0);
+    if (angle > 0.0) deform(cells, [&](const Eigen::Vector3d& x) { return Eigen::Vector3d(r * x + shift); });
+    const double energy = cells.compute_internal_forces_and_energy();
+    const auto f = host_copy(cells.internal_forces());
+    for (int n = 0; n < cells.num_nodes(); ++n)
+      for (int i = 0; i < 3; ++i) worst_force = std::max(worst_force, std::fabs(f(n, i)));
+    worst_energy = std::max(worst_energy, std::fabs(energy));
+    worst_tension = std::max(worst_tension, std::fabs(host_copy(cells.area_tensions())(0)));
+    if (angle == 0.0) {
+      EXPECT_EQ(energy, 0.0);
+      EXPECT_EQ(worst_force, 0.0);
+    }
+  }
+  // Scale: a 1 % area change gives T = 3 pN/μm and forces of T × 1 μm = 3 pN.
+  std::cout << "  area constraint, k_A = " << area_modulus << " pN/um, A0 = " << a0
+            << " um^2: at rest and moved rigidly, largest force " << worst_force << " pN, tension " << worst_tension
+            << " pN/um, energy " << worst_energy << " pN um\n";
+  EXPECT_NEAR(a0, 54.0, 1e-12);
+  EXPECT_LT(worst_force, 1e-11 * area_modulus);
+  EXPECT_LT(worst_tension, 1e-11 * area_modulus);
+  EXPECT_LT(worst_energy, 1e-20 * area_modulus * a0);
+  // Off (k_A = 0): not built, and the population says so.
+  EXPECT_FALSE(Population(one_cell(mesh)).has_area_constraint());
+  EXPECT_THROW(Population(one_cell(mesh, Eigen::Vector3d::Zero(), material, -1.0)), std::invalid_argument);
+}
+
+TEST(AreaConstraint, ForcesAreMinusTheGradientOfTheEnergy) {
+  // f = −∂E/∂x by central differences, the area term alone and with the elastic one; and
+  // the exact energy of a uniform dilation by s (the faces stay flat): A = s² A0,
+  // E_A = k_A (s² − 1)² A0 / 2, T = k_A (s² − 1).
+  const CellMesh mesh = testing::tetrahedral_box(3, 3.0);
+  for (const NeoHookeanMaterial& m : {no_elasticity, mills_material}) {
+    Population cells(one_cell(mesh, Eigen::Vector3d::Zero(), m, area_modulus));
+    deform_randomly(cells, 29, 0.08);
+    cells.compute_internal_forces_and_energy();
+    const double relative = force_vs_energy_gradient(cells);
+    std::cout << "  area constraint" << (m.c1 > 0.0 ? " + elastic forces" : " alone") << " (area "
+              << std::showpos << 100.0 * host_copy(cells.area_tensions())(0) / area_modulus << std::noshowpos
+              << " %): nodal force vs −∂E/∂x, relative error " << relative << "\n";
+    EXPECT_LT(relative, 1e-6);
+  }
+  Population cells(one_cell(mesh, Eigen::Vector3d::Zero(), no_elasticity, area_modulus));
+  const double s = 1.1, a0 = 54.0;
+  deform(cells, [&](const Eigen::Vector3d& x) { return Eigen::Vector3d(s * x); });
+  const double energy = cells.compute_internal_forces_and_energy();
+  const double expected = 0.5 * area_modulus * (s * s - 1.0) * (s * s - 1.0) * a0;
+  std::cout << "  uniform dilation by " << s << ": E_A " << energy << " pN um (exact " << expected << "), T "
+            << host_copy(cells.area_tensions())(0) << " pN/um (exact " << area_modulus * (s * s - 1.0) << ")\n";
+  EXPECT_NEAR(energy / expected, 1.0, 1e-12);
+  EXPECT_NEAR(cells.area_energy() / expected, 1.0, 1e-12);
+  EXPECT_NEAR(host_copy(cells.area_tensions())(0) / (area_modulus * (s * s - 1.0)), 1.0, 1e-12);
+}
+
+TEST(AreaConstraint, MatchesAPlainSerialReferenceAndConservesMomentum) {
+  // Two cells, the first with the constraint, the second without: the kernel's forces
+  // against the serial reference, none on the second cell, and Σ f = 0, Σ x × f = 0.
+  const CellMesh mesh = testing::tetrahedral_box(3, 3.0);
+  std::vector<PlacedCell> placed = one_cell(mesh, {2.0, 1.0, -1.0}, no_elasticity, area_modulus);
+  placed.push_back(one_cell(mesh, {-4.0, 0.0, 0.0}, no_elasticity, 0.0)[0]);
+  Population cells(placed);
+  deform_randomly(cells, 31, 0.1);
+  const double energy = cells.compute_internal_forces_and_energy();
+  const auto x = host_copy(cells.positions());
+  const auto f = host_copy(cells.internal_forces());
+  const AreaReference expected = reference_area_forces(mesh, x, 0, area_modulus, 54.0);
+  Kokkos::View<double* [3], Kokkos::HostSpace> expected_forces("expected", cells.num_nodes());
+  for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
+    for (int i = 0; i < 3; ++i) expected_forces(n, i) = expected.forces[n][i];
+  const double difference = testing::relativeDifference(flat(f), flat(expected_forces));
+  double second_cell = 0.0, magnitude = 0.0, moment_magnitude = 0.0;
+  Eigen::Vector3d total = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
+  for (int n = 0; n < cells.num_nodes(); ++n) {
+    const Eigen::Vector3d fn(f(n, 0), f(n, 1), f(n, 2)), xn(x(n, 0), x(n, 1), x(n, 2));
+    if (n >= static_cast<int>(mesh.nodes.size())) second_cell = std::max(second_cell, fn.norm());
+    total += fn;
+    moment += xn.cross(fn);
+    magnitude += fn.norm();
+    moment_magnitude += xn.norm() * fn.norm();
+  }
+  const std::vector<CellMeasures> measures = cells.measures();
+  std::cout << "  area constraint vs serial reference: forces " << difference << ", energy "
+            << std::fabs(energy / expected.energy - 1.0) << ", area " << measures[0].area << " (reference "
+            << expected.area << ") um^2; second cell's largest force " << second_cell << " pN; Σ f = " << total.norm()
+            << " pN, Σ x × f = " << moment.norm() << " pN um\n";
+  EXPECT_LT(difference, 1e-12);
+  EXPECT_NEAR(energy / expected.energy, 1.0, 1e-12);
+  EXPECT_NEAR(measures[0].area / expected.area, 1.0, 1e-13);
+  EXPECT_EQ(second_cell, 0.0);
+  EXPECT_EQ(host_copy(cells.area_tensions())(1), 0.0);
+  EXPECT_LT(total.norm(), 1e-13 * magnitude);
+  EXPECT_LT(moment.norm(), 1e-13 * moment_magnitude);
+}
 
 // ---- surface measures
 

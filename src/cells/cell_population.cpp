@@ -39,6 +39,10 @@ BasicCellPopulation<ExecSpace>::BasicCellPopulation(const std::vector<PlacedCell
   surface_area_weights_ = Kokkos::View<double*>("rouleau::CellPopulation::surface_area_weights", node_count);
   cell_sums_ = Kokkos::View<double* [5]>("rouleau::CellPopulation::cell_sums", cells.size());
   cell_origins_ = NodeVectors("rouleau::CellPopulation::cell_origins", cells.size());
+  area_moduli_ = Kokkos::View<double*>("rouleau::CellPopulation::area_moduli", cells.size());
+  reference_areas_ = Kokkos::View<double*>("rouleau::CellPopulation::reference_areas", cells.size());
+  cell_areas_ = Kokkos::View<double*>("rouleau::CellPopulation::cell_areas", cells.size());
+  area_tensions_ = Kokkos::View<double*>("rouleau::CellPopulation::area_tensions", cells.size());
 
   auto x = Kokkos::create_mirror_view(reference_positions_);
   auto node_cell = Kokkos::create_mirror_view(node_cell_);
@@ -48,6 +52,7 @@ BasicCellPopulation<ExecSpace>::BasicCellPopulation(const std::vector<PlacedCell
   auto triangles = Kokkos::create_mirror_view(surface_triangles_);
   auto triangle_cell = Kokkos::create_mirror_view(triangle_cell_);
   auto first_node = Kokkos::create_mirror_view(cell_first_node_);
+  auto area_moduli = Kokkos::create_mirror_view(area_moduli_);
   std::size_t node = 0, element = 0, triangle = 0;
   for (int c = 0; c < num_cells_; ++c) {
     const PlacedCell& cell = cells[c];
@@ -57,6 +62,14 @@ BasicCellPopulation<ExecSpace>::BasicCellPopulation(const std::vector<PlacedCell
     cell_first_node_host_.push_back(offset);
     cell_node_count_host_.push_back(static_cast<int>(mesh.nodes.size()));
     materials(c) = cell.material;
+    if (!(cell.area_modulus >= 0.0)) {
+      std::ostringstream msg;
+      msg << "rouleau::CellPopulation: cell " << c << " has area modulus " << cell.area_modulus
+          << " pN/um (must be >= 0)";
+      throw std::invalid_argument(msg.str());
+    }
+    area_moduli(c) = cell.area_modulus;
+    area_constraint_ = area_constraint_ || cell.area_modulus > 0.0;
     // x_world = center + R x_body
     for (const auto& p : mesh.nodes) {
       for (int i = 0; i < 3; ++i)
@@ -81,6 +94,7 @@ BasicCellPopulation<ExecSpace>::BasicCellPopulation(const std::vector<PlacedCell
   Kokkos::deep_copy(surface_triangles_, triangles);
   Kokkos::deep_copy(triangle_cell_, triangle_cell);
   Kokkos::deep_copy(cell_first_node_, first_node);
+  Kokkos::deep_copy(area_moduli_, area_moduli);
 
   // Reference data of the tetrahedra, once (total-Lagrangian).
   Tet4ReferenceFunctor<NodeVectors, Kokkos::View<int* [4]>, Kokkos::View<double* [3][3]>, Kokkos::View<double*>>
@@ -106,6 +120,14 @@ BasicCellPopulation<ExecSpace>::BasicCellPopulation(const std::vector<PlacedCell
 
   force_scatter_ = Scatter("rouleau::CellPopulation::force_scatter", node_count);
   cell_sums_scatter_ = CellSumsScatter("rouleau::CellPopulation::cell_sums_scatter", cells.size());
+
+  // Reference areas A0_c of the outer surfaces (for the area constraint).
+  cell_area_scatter_ = CellScatter("rouleau::CellPopulation::cell_area_scatter", cells.size());
+  CellAreaFunctor<CellScatter> reference_areas{reference_positions_, surface_triangles_, triangle_cell_,
+                                               cell_area_scatter_};
+  Kokkos::parallel_for("rouleau::CellPopulation::reference_areas",
+                       Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(triangle_count)), reference_areas);
+  gather_into(reference_areas_, cell_area_scatter_);
 }
 
 template <class ExecSpace>
@@ -121,7 +143,33 @@ double BasicCellPopulation<ExecSpace>::run_force_kernel(const char* label) {
     Kokkos::parallel_reduce(label, policy, forces, energy);
   else
     Kokkos::parallel_for(label, policy, forces);
+  if (area_constraint_) energy += add_area_constraint_forces<Tag>();
   gather_into(internal_forces_, force_scatter_);
+  return energy;
+}
+
+template <class ExecSpace>
+template <class Tag>
+double BasicCellPopulation<ExecSpace>::add_area_constraint_forces() {
+  ProfilingRegion region("rouleau::CellPopulation::area_constraint");
+  // A_c, then T_c = k_A (A_c − A0_c) / A0_c (and E_A), then f_a −= T_c ∂A_c/∂x_a.
+  cell_area_scatter_.reset();
+  const Kokkos::RangePolicy<ExecSpace> triangles(0, num_surface_triangles());
+  CellAreaFunctor<CellScatter> areas{positions_, surface_triangles_, triangle_cell_, cell_area_scatter_};
+  Kokkos::parallel_for("rouleau::CellPopulation::cell_areas", triangles, areas);
+  gather_into(cell_areas_, cell_area_scatter_);
+  AreaTensionFunctor tensions{cell_areas_, reference_areas_, area_moduli_, area_tensions_};
+  const Kokkos::RangePolicy<ExecSpace, Tag> cells(0, num_cells_);
+  double energy = 0.0;
+  if constexpr (std::is_same_v<Tag, ForcesAndEnergy>) {
+    Kokkos::parallel_reduce("rouleau::CellPopulation::area_tensions_and_energy", cells, tensions, energy);
+    area_energy_ = energy;
+  } else {
+    Kokkos::parallel_for("rouleau::CellPopulation::area_tensions", cells, tensions);
+  }
+  AreaConstraintForceFunctor<Scatter> forces{positions_, surface_triangles_, triangle_cell_, area_tensions_,
+                                             force_scatter_};
+  Kokkos::parallel_for("rouleau::CellPopulation::area_constraint_forces", triangles, forces);
   return energy;
 }
 

@@ -1,7 +1,9 @@
 #pragma once
 // All cells of a scene on the device: their tetrahedral meshes concatenated, reference
 // data computed once (total-Lagrangian), current positions and velocities, the elastic
-// (neo-Hookean) internal forces, and per-cell measures from the outer surfaces.
+// internal forces (neo-Hookean, optionally strain-hardening, kernels/neo_hookean.hpp;
+// plus the optional global area constraint of each cell, kernels/area_constraint.hpp),
+// and per-cell measures from the outer surfaces.
 #include <Kokkos_Core.hpp>
 #include <Kokkos_ScatterView.hpp>
 #include <array>
@@ -10,17 +12,21 @@
 
 #include "geometry/cell_mesh.hpp"
 #include "io/xdmf_writer.hpp"
+#include "kernels/area_constraint.hpp"
 #include "kernels/neo_hookean.hpp"
 
 namespace rouleau {
 
 // One cell to place: its mesh in the body frame, x_world = center + rotation · x_body,
-// and its material.
+// its material and its area modulus.
 struct PlacedCell {
   const CellMesh* mesh = nullptr;
   std::array<std::array<double, 3>, 3> rotation{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
   std::array<double, 3> center{0.0, 0.0, 0.0};  // [μm]
   NeoHookeanMaterial material;
+  // k_A of the global area constraint E_A = k_A (A − A0)² / (2 A0) on the outer surface
+  // [pN/μm]; 0 = off (the paper's law).
+  double area_modulus = 0.0;
   int kind = 0;  // index of the cell's kind (for output)
 };
 
@@ -39,9 +45,12 @@ class BasicCellPopulation {
                                                     typename ExecSpace::device_type>;
   using CellSumsScatter = Kokkos::Experimental::ScatterView<double* [5], typename NodeVectors::array_layout,
                                                             typename ExecSpace::device_type>;
+  using CellScatter = Kokkos::Experimental::ScatterView<double*, typename Kokkos::View<double*>::array_layout,
+                                                        typename ExecSpace::device_type>;
 
   // Places the cells (reference = current configuration at rest, velocities zero).
-  // Throws std::invalid_argument when a mesh has an inverted or degenerate tetrahedron.
+  // Throws std::invalid_argument when a mesh has an inverted or degenerate tetrahedron or
+  // an area modulus is negative.
   explicit BasicCellPopulation(const std::vector<PlacedCell>& cells);
 
   int num_cells() const { return num_cells_; }
@@ -72,10 +81,19 @@ class BasicCellPopulation {
   const std::vector<int>& cell_node_count() const { return cell_node_count_host_; }
 
   // internal_forces() = f, f_a = −Σ_e V0 P(F_e) ∇N_a (paper eqs. 2, 9, 10) at the
-  // current positions.
+  // current positions, plus −T_c ∂A_c/∂x_a of the cells with an area constraint.
   void compute_internal_forces();
-  // The same, returning the total strain energy Σ_e V0 W(F_e) [pN·μm].
+  // The same, returning the total elastic energy Σ_e V0 W(F_e) + E_A [pN·μm].
   double compute_internal_forces_and_energy();
+
+  // The global area constraint (kernels/area_constraint.hpp): whether any cell has one,
+  // k_A and A0 per cell, the tensions T_c of the last force evaluation [pN/μm] (zero for
+  // cells without one), and E_A of the last compute_internal_forces_and_energy() [pN·μm].
+  bool has_area_constraint() const { return area_constraint_; }
+  const Kokkos::View<double*>& area_moduli() const { return area_moduli_; }
+  const Kokkos::View<double*>& reference_areas() const { return reference_areas_; }
+  const Kokkos::View<double*>& area_tensions() const { return area_tensions_; }
+  double area_energy() const { return area_energy_; }
 
   // Per-cell volume, area and centroid at the current positions (a small host copy).
   std::vector<CellMeasures> measures() const;
@@ -94,6 +112,9 @@ class BasicCellPopulation {
   // (0 for ForcesOnly).
   template <class Tag>
   double run_force_kernel(const char* label);
+  // Adds the area-constraint forces into force_scatter_; returns E_A (0 for ForcesOnly).
+  template <class Tag>
+  double add_area_constraint_forces();
 
   int num_cells_ = 0;
   NodeVectors reference_positions_, positions_, velocities_, internal_forces_;
@@ -106,11 +127,15 @@ class BasicCellPopulation {
   Kokkos::View<int*> triangle_cell_, cell_first_node_;
   Kokkos::View<double*> surface_area_weights_;
   Kokkos::View<double* [5]> cell_sums_;
+  Kokkos::View<double*> area_moduli_, reference_areas_, cell_areas_, area_tensions_;  // per cell
+  bool area_constraint_ = false;
+  double area_energy_ = 0.0;
   NodeVectors cell_origins_;  // the point each cell's surface sums are taken from
   std::vector<int> cell_first_node_host_, cell_node_count_host_;
   // Persistent scatter buffers (per-thread copies on CPUs, the atomic target on GPUs).
   mutable Scatter force_scatter_;
   mutable CellSumsScatter cell_sums_scatter_;
+  CellScatter cell_area_scatter_;
 };
 
 using CellPopulation = BasicCellPopulation<Kokkos::DefaultExecutionSpace>;

@@ -65,7 +65,9 @@ CaseCells make_case_cells(const CaseConfig& config, const std::string& mesh_cach
     cell.mesh = &mesh->second;
     cell.rotation = placement_rotation(placement);
     cell.center = placement.center;
-    cell.material = NeoHookeanMaterial::from_moduli(kind->shear_modulus, kind->bulk_modulus);
+    cell.material =
+        NeoHookeanMaterial::from_moduli(kind->shear_modulus, kind->bulk_modulus, kind->strain_hardening_ratio);
+    cell.area_modulus = kind->area_modulus;
     cell.kind = static_cast<int>(kind - config.cell_kinds.data());
     placed.push_back(cell);
     cell_kind.push_back(cell.kind);

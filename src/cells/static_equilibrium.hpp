@@ -2,10 +2,12 @@
 // Static equilibrium of the cells under prescribed external forces, for the solid alone
 // (no fluid): find the positions x with
 //
-//   r(x) = f_int(x) + f_ext(x) = 0,   f_int = −∂W/∂x (neo-Hookean, paper eqs. 2, 9, 10),
+//   r(x) = f_int(x) + f_ext(x) = 0,   f_int = −∂W/∂x (the population's internal forces:
+//   neo-Hookean, paper eqs. 2, 9, 10, with the kind's optional strain hardening and global
+//   area constraint),
 //
 // i.e. a stationary point of the total potential energy Π = W + Π_ext (f_ext = −∂Π_ext/∂x;
-// W the strain energy). Used for
+// W the elastic energy, strain energy plus area term). Used for
 // the optical-tweezers stretching test (Mills et al. 2004; DESIGN.md, Decisions → Cells:
 // "a static solve of the solid alone ... forces spread over the nodes within a 2 μm patch
 // at each end").
@@ -98,7 +100,7 @@ struct StaticEquilibriumReport {
   double applied_load = 0.0;          // [pN] L
   double largest_eigenvalue = 0.0;    // last λ_max estimate of M^(−1/2) K M^(−1/2) [pN/μm²]
   double final_step = 0.0;            // Δt at the end (mass-scaled units)
-  double strain_energy = 0.0;         // W at the end [pN·μm]
+  double strain_energy = 0.0;         // W at the end (strain energy + area term) [pN·μm]
   double seconds = 0.0;               // wall time of the solve
   std::string stop_reason;            // "converged", "max_iterations", "uphill", "not finite",
                                       // "volume" (the volume constraint did not converge)

@@ -120,6 +120,15 @@ struct CellKindConfig {
   double bulk_modulus = 0.0;          // K [Pa]; set from poisson_ratio when not given
   double poisson_ratio = 0.45;        // ν, the one that gives K from G (reported)
   double density = 1.1e-9;            // [pN·s²/μm⁴]   key density_kg_m3 (RBC: 1100 kg/m³)
+  // Options beyond the paper's law (0 = off, the default), for a membrane that hardens
+  // and keeps its area (Mills et al. 2004's stretch; kernels/neo_hookean.hpp,
+  // kernels/area_constraint.hpp):
+  // C3 / G of the strain-hardening term W += C3 (J1 − 3)³ (Mills et al.: 1/30)
+  //                                                          key strain_hardening_ratio
+  double strain_hardening_ratio = 0.0;
+  // k_A of the global area constraint E_A = k_A (A − A0)² / (2 A0) on each cell's outer
+  // surface [pN/μm]                                          key area_modulus_pN_um
+  double area_modulus = 0.0;
   // The Morse well depth of this kind relative to [interaction]'s: the depth between
   // kinds a and b is De √(f_a f_b) unless an [[interaction.pair]] sets it (sickle: 5,
   // "stickier", DESIGN.md).                                  key morse_well_depth_factor

@@ -19,8 +19,9 @@ inline constexpr double paper_membrane_shear_modulus = 4.2;  // [pN/μm]
 inline constexpr double paper_bending_modulus = 0.18;  // [pN·μm]
 // The paper's area dilation modulus, 500 dyn/cm = 5e5 pN/μm. Deliberately NOT used for the
 // bulk modulus (DESIGN.md, Decisions → Cells): a thin neo-Hookean shell cannot represent it
-// and it would cut the explicit time step by ~1e5; area extensibility is a documented
-// limitation. K comes from a Poisson ratio instead.
+// and it would cut the explicit time step by ~1e5. K comes from a Poisson ratio instead;
+// a kind's area_modulus_pN_um (a global area constraint, off by default) holds the area
+// where a scene needs it (the Mills stretch).
 inline constexpr double paper_area_dilation_modulus = 5e5;  // [pN/μm] (documentation only)
 // Shell thickness h from κ = G_s h²/3: h = sqrt(3κ/G_s) = sqrt(3 · 0.18 / 4.2) = 0.3586 μm,
 // rounded to 0.36 μm as in DESIGN.md.

@@ -71,10 +71,22 @@ double smallest_fluid_element(const DomainConfig& domain) {
   return smallest;
 }
 
+// The radius over which a kind's area-constraint mode varies, times ⟨4(H − H̄)²⟩ R/π R:
+// the shape factor κ of that mode's stiffness (below), measured on the meshes: 1.6 for the
+// Evans–Fung disc (⟨4(H − H̄)²⟩ = 0.33 /μm² at R = 3.91 μm), 0.014 for a sphere (only
+// inflation, which the cavity blocks, changes its area); the sickle is taken as the disc.
+double area_mode_shape_factor(CellShape shape) { return shape == CellShape::sphere ? 0.014 : 1.6; }
+
 // The explicit coupling's stable step (DESIGN.md, "Coupling"): a membrane of modulus G_s
 // relaxes a wrinkle of the fluid mesh's wavelength h_f through fluid of viscosity μ at the
-// rate G_s / (μ h_f), so Δt ≤ C μ h_f / G_s. A shell's G_s = G h; a filled body is taken as
-// a layer one fluid element thick (the fluid resolves nothing thinner): G_s = G h_f.
+// rate G_s / (μ h_f), so Δt ≤ C μ h_f / G_eff, with
+//   G_eff = G_s (1 + 30 r) + k_A κ h_f / R:
+// G_s = G h for a shell; a filled body is taken as a layer one fluid element thick (the
+// fluid resolves nothing thinner): G_s = G h_f. Strain hardening C3 = r G stiffens the
+// tangent modulus to G [1 + 30 r (J1 − 3)²], bounded here by (J1 − 3) ≤ 1. The global area
+// constraint k_A adds a cell-sized normal mode (the cavity blocks its uniform part) of
+// stiffness k_A ⟨4(H − H̄)²⟩ per area and mobility R/(4μ), i.e. a grid-scale modulus of
+// k_A κ h_f / R (κ: area_mode_shape_factor).
 void derive_stable_step(const CaseConfig& config, DerivedQuantities& derived) {
   if (config.cells.empty() || config.time.mode == TimeMode::steady) return;
   const double h_f = smallest_fluid_element(config.domain);
@@ -83,15 +95,17 @@ void derive_stable_step(const CaseConfig& config, DerivedQuantities& derived) {
   for (const CellPlacement& cell : config.cells) {
     const CellKindConfig& kind = *find_cell_kind(config, cell.kind);
     const double layer = kind.body == CellBody::shell ? kind.shell_thickness : h_f;
-    const double membrane_modulus = kind.shear_modulus * layer;
-    if (membrane_modulus > stiffest) {
-      stiffest = membrane_modulus;
+    const double radius = 0.5 * (kind.shape == CellShape::sickle ? kind.width : kind.diameter);
+    const double effective_modulus = kind.shear_modulus * layer * (1.0 + 30.0 * kind.strain_hardening_ratio) +
+                                     kind.area_modulus * area_mode_shape_factor(kind.shape) * h_f / radius;
+    if (effective_modulus > stiffest) {
+      stiffest = effective_modulus;
       stiffest_kind = kind.name;
     }
   }
   const double C = config.coupling.stable_step_factor;
   derived.stable_dt = C * config.fluid.viscosity * h_f / stiffest;
-  derived.stable_dt_reason = "C mu h_f / G_s = " + formatted("%g", C) + " x " +
+  derived.stable_dt_reason = "C mu h_f / G_eff = " + formatted("%g", C) + " x " +
                              formatted("%g", config.fluid.viscosity) + " Pa s x " + formatted("%g", h_f) +
                              " um / " + formatted("%g", stiffest) + " pN/um (kind " + stiffest_kind +
                              ", the stiffest membrane; smallest fluid element h_f)";

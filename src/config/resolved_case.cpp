@@ -109,6 +109,9 @@ void write_cell_kind(TomlWriter& toml_file, const CellKindConfig& kind) {
     toml_file.key("bulk_modulus_Pa", kind.bulk_modulus, "ν = (3K−2G)/(2(3K+G)) = " + toml_float(kind.poisson_ratio));
   toml_file.key("density_kg_m3", in_file_units(kind.density, density_kg_m3_to_internal));
   toml_file.key("morse_well_depth_factor", kind.morse_well_depth_factor);
+  toml_file.key("strain_hardening_ratio", kind.strain_hardening_ratio,
+                "C3/G of W += C3 (J1 − 3)³; 0 = off (Mills et al. 2004: 1/30)");
+  toml_file.key("area_modulus_pN_um", kind.area_modulus, "k_A of E_A = k_A (A − A0)² / (2 A0); 0 = off");
 }
 
 void write_morse(TomlWriter& toml_file, const MorseConfig& morse) {

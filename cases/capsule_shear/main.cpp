@@ -22,14 +22,16 @@ int main(int argc, char** argv) {
   const double shear_rate = (domain.boundary[rouleau::y_max].velocity[0] - domain.boundary[rouleau::y_min].velocity[0]) /
                             (domain.upper[1] - domain.lower[1]);
   const double radius = 0.5 * capsule.diameter;
-  const double membrane_modulus = capsule.shear_modulus * capsule.shell_thickness;
-  const double ca = config.fluid.viscosity * shear_rate * radius / membrane_modulus;
+  // Ca as the references define it, with the neo-Hookean membrane's surface Young's
+  // modulus E_s = 3 G_s (G_s = G h, the shell's membrane shear modulus).
+  const double surface_young_modulus = 3.0 * capsule.shear_modulus * capsule.shell_thickness;
+  const double ca = config.fluid.viscosity * shear_rate * radius / surface_young_modulus;
   const double h = (domain.upper[0] - domain.lower[0]) / domain.elements[0];
   const auto last = rouleau::read_last_diagnostics(run.options.output_dir + "/diagnostics.csv");
   // Published steady D of a thin neo-Hookean capsule (Ramanujan & Pozrikidis 1998; Doddi &
   // Bagchi 2008), where the issue quotes them.
   const double published = std::fabs(ca - 0.05) < 1e-3 ? 0.27 : std::fabs(ca - 0.1) < 1e-3 ? 0.39 : NAN;
-  std::printf("Ca = %.4f (shear rate %.2f /s, a/h = %.2f), gamma t = %.2f: D = %.4f; small-deformation 25/4 Ca = "
+  std::printf("Ca = mu gamma a / E_s = %.4f (shear rate %.2f /s, a/h = %.2f), gamma t = %.2f: D = %.4f; small-deformation 25/4 Ca = "
               "%.4f; published %s%.2f; inclination %.1f deg; largest volume change %.2e\n",
               ca, shear_rate, radius / h, shear_rate * last.at("time_s"), last.at("cell0_taylor_deformation"),
               25.0 / 4.0 * ca, std::isnan(published) ? "(none at this Ca) " : "", published,

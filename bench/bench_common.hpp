@@ -57,4 +57,20 @@ inline void add_kokkos_context() {
                                                     std::to_string(KOKKOS_VERSION % 100));
 }
 
+// The common body of a benchmark program's main, inside its Kokkos scope: Google
+// Benchmark's options, the Kokkos context and `extra_context()`, the run, and then
+// `release()` of the Views the benchmarks cached (they must go before Kokkos::finalize).
+// Returns main's exit code.
+template <class ExtraContext, class Release>
+int run_benchmarks(int& argc, char** argv, const ExtraContext& extra_context, const Release& release) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  add_kokkos_context();
+  extra_context();
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  release();
+  return 0;
+}
+
 }  // namespace rouleau::bench

@@ -128,10 +128,5 @@ BENCHMARK(BM_CoupledStep)
 
 int main(int argc, char** argv) {
   Kokkos::ScopeGuard kokkos(argc, argv);
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  rouleau::bench::add_kokkos_context();
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return rouleau::bench::run_benchmarks(argc, argv, [] {}, [] {});
 }

@@ -282,11 +282,5 @@ BENCHMARK(BM_StokesSolve)
 
 int main(int argc, char** argv) {
   Kokkos::ScopeGuard kokkos(argc, argv);
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  rouleau::bench::add_kokkos_context();
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  cached_problem.reset();  // Kokkos Views must go before Kokkos::finalize
-  return 0;
+  return rouleau::bench::run_benchmarks(argc, argv, [] {}, [] { cached_problem.reset(); });
 }

@@ -329,23 +329,19 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  rouleau::bench::add_kokkos_context();
-  const auto& mesh = normal_cell_mesh();
-  std::set<int> surface_nodes;
-  for (const auto& triangle : mesh.outer_surface) surface_nodes.insert(triangle.begin(), triangle.end());
-  benchmark::AddCustomContext("cell_mesh", "normal RBC, hollow shell, paper preset: " +
-                                               std::to_string(mesh.nodes.size()) + " nodes, " +
-                                               std::to_string(mesh.tetrahedra.size()) + " tetrahedra, " +
-                                               std::to_string(surface_nodes.size()) + " surface nodes, " +
-                                               std::to_string(mesh.outer_surface.size()) +
-                                               " outer-surface triangles (x3 Gauss points)");
-  benchmark::AddCustomContext("packing", "stacks of 10 (N<10: one stack of N) along z, 3.96 um between centres; "
-                                         "stacks 8.2 um apart on a square x-y grid");
-  benchmark::AddCustomContext("morse", "De 1 pN/um^3, beta 4 /um, r0 0.25 um, cut-off 3 um, skin 0.3 um");
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  cached_problem.reset();  // Kokkos Views must go before Kokkos::finalize
-  return 0;
+  const auto morse_context = [] {
+    const auto& mesh = normal_cell_mesh();
+    std::set<int> surface_nodes;
+    for (const auto& triangle : mesh.outer_surface) surface_nodes.insert(triangle.begin(), triangle.end());
+    benchmark::AddCustomContext("cell_mesh", "normal RBC, hollow shell, paper preset: " +
+                                                 std::to_string(mesh.nodes.size()) + " nodes, " +
+                                                 std::to_string(mesh.tetrahedra.size()) + " tetrahedra, " +
+                                                 std::to_string(surface_nodes.size()) + " surface nodes, " +
+                                                 std::to_string(mesh.outer_surface.size()) +
+                                                 " outer-surface triangles (x3 Gauss points)");
+    benchmark::AddCustomContext("packing", "stacks of 10 (N<10: one stack of N) along z, 3.96 um between centres; "
+                                           "stacks 8.2 um apart on a square x-y grid");
+    benchmark::AddCustomContext("morse", "De 1 pN/um^3, beta 4 /um, r0 0.25 um, cut-off 3 um, skin 0.3 um");
+  };
+  return rouleau::bench::run_benchmarks(argc, argv, morse_context, [] { cached_problem.reset(); });
 }

@@ -180,15 +180,11 @@ BENCHMARK(BM_InternalForcesAndEnergy)->Apply(cell_counts);
 
 int main(int argc, char** argv) {
   Kokkos::ScopeGuard kokkos(argc, argv);
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  rouleau::bench::add_kokkos_context();
-  const auto& mesh = normal_cell_mesh();
-  benchmark::AddCustomContext("cell_mesh", "normal RBC, hollow shell, paper preset: " +
-                                               std::to_string(mesh.nodes.size()) + " nodes, " +
-                                               std::to_string(mesh.tetrahedra.size()) + " tetrahedra");
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  cached_problem.reset();  // Kokkos Views must go before Kokkos::finalize
-  return 0;
+  const auto mesh_context = [] {
+    const auto& mesh = normal_cell_mesh();
+    benchmark::AddCustomContext("cell_mesh", "normal RBC, hollow shell, paper preset: " +
+                                                 std::to_string(mesh.nodes.size()) + " nodes, " +
+                                                 std::to_string(mesh.tetrahedra.size()) + " tetrahedra");
+  };
+  return rouleau::bench::run_benchmarks(argc, argv, mesh_context, [] { cached_problem.reset(); });
 }

@@ -28,13 +28,8 @@ struct CellAreaFunctor {
   Scatter areas;                              // (cell) [μm²]
 
   KOKKOS_INLINE_FUNCTION void operator()(const int t) const {
-    double y[3][3];
-    for (int k = 0; k < 3; ++k)
-      for (int i = 0; i < 3; ++i) y[k][i] = positions(triangles(t, k), i);
-    double n[3];
-    triangle_area_vector(y, n);
     auto access = areas.access();
-    access(triangle_cell(t)) += sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    access(triangle_cell(t)) += triangle_area(positions, triangles, t);
   }
 };
 

@@ -25,6 +25,17 @@ KOKKOS_INLINE_FUNCTION void triangle_area_vector(const double y[3][3], double n[
   n[2] = 0.5 * (e1[0] * e2[1] - e1[1] * e2[0]);
 }
 
+// A_t = |(x1 − x0) × (x2 − x0)| / 2 of surface triangle t at `positions`.
+template <class Positions, class Triangles>
+KOKKOS_INLINE_FUNCTION double triangle_area(const Positions& positions, const Triangles& triangles, const int t) {
+  double y[3][3];
+  for (int k = 0; k < 3; ++k)
+    for (int i = 0; i < 3; ++i) y[k][i] = positions(triangles(t, k), i);
+  double n[3];
+  triangle_area_vector(y, n);
+  return sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+}
+
 // Per cell: sums(cell, CellSurfaceSum) over its outer-surface triangles.
 template <class Scatter>
 struct CellSurfaceSumsFunctor {
@@ -62,12 +73,7 @@ struct SurfaceAreaWeightsFunctor {
   Scatter weights;  // (node)
 
   KOKKOS_INLINE_FUNCTION void operator()(const int t) const {
-    double y[3][3];
-    for (int k = 0; k < 3; ++k)
-      for (int i = 0; i < 3; ++i) y[k][i] = positions(triangles(t, k), i);
-    double n[3];
-    triangle_area_vector(y, n);
-    const double third_of_area = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) / 3.0;
+    const double third_of_area = triangle_area(positions, triangles, t) / 3.0;
     auto access = weights.access();
     for (int k = 0; k < 3; ++k) access(triangles(t, k)) += third_of_area;
   }

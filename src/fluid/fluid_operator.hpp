@@ -78,8 +78,6 @@ class BasicFluidOperator {
   const Kokkos::View<double***>& geometry() const { return geometry_; }
   const Kokkos::View<double*>& element_size() const { return element_size_; }
   double length_scale() const { return length_scale_; }
-  // ∫ N_a dV per dof node (scaled volume), the lumped mass.
-  const Kokkos::View<double*>& lumped_mass() const { return lumped_mass_; }
 
  private:
   using Scatter = Kokkos::Experimental::ScatterView<double*, typename Vector::array_layout,

@@ -98,6 +98,38 @@ TEST(CliParse, HelpAndVersionFinishWithExitCode0) {
   EXPECT_NE(out.find(ROULEAU_VERSION), std::string::npos);
 }
 
+TEST(CliParse, CaseDriverTakesTheRunOptionsWithItsOwnDefaults) {
+  auto parse_driver = [](std::vector<const char*> arguments, std::string* err_text = nullptr) {
+    arguments.insert(arguments.begin(), "case_capsule_shear");
+    std::ostringstream out, err;
+    const auto result = rouleau::parse_driver_command_line(static_cast<int>(arguments.size()), arguments.data(),
+                                                           "cases/capsule_shear/case.toml", "runs/capsule_shear",
+                                                           out, err);
+    if (err_text) *err_text = err.str();
+    return result;
+  };
+  const auto defaults = parse_driver({});
+  EXPECT_EQ(defaults.command, rouleau::Command::run);
+  EXPECT_EQ(defaults.case_path, "cases/capsule_shear/case.toml");
+  EXPECT_EQ(defaults.output_dir, "runs/capsule_shear");
+  EXPECT_TRUE(defaults.progress);
+
+  const auto every = parse_driver({"other.toml", "--out", "runs/ca01", "--set", "time.end_s=0.01", "--set",
+                                   "case.name=x", "--no-progress", "--explain"});
+  EXPECT_EQ(every.command, rouleau::Command::run);
+  EXPECT_EQ(every.case_path, "other.toml");
+  EXPECT_EQ(every.output_dir, "runs/ca01");
+  EXPECT_EQ(every.overrides, (std::vector<std::string>{"time.end_s=0.01", "case.name=x"}));
+  EXPECT_FALSE(every.progress);
+  EXPECT_TRUE(every.explain);
+
+  std::string err;
+  const auto unknown = parse_driver({"--threads", "2"}, &err);  // Kokkos's flags set a driver's threads
+  EXPECT_EQ(unknown.command, rouleau::Command::finished);
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_FALSE(err.empty());
+}
+
 TEST(CliParse, KokkosThreadsFlagDependsOnTheKokkosVersion) {
   EXPECT_EQ(rouleau::kokkos_threads_flag(4, 30401), "--kokkos-threads=4");
   EXPECT_EQ(rouleau::kokkos_threads_flag(4, 40600), "--kokkos-num-threads=4");

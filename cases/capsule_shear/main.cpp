@@ -1,7 +1,7 @@
 // A spherical capsule in simple shear: runs cases/capsule_shear/case.toml (or the file
 // given) and compares the steady Taylor deformation with the small-deformation theory and
 // the published thin-membrane values at the case's capillary number.
-//   case_capsule_shear [CASE.toml] [OUT_DIR]
+//   case_capsule_shear [CASE.toml] [--out DIR] [--set KEY=VALUE]... (the options of `rouleau run`)
 #include <Kokkos_Core.hpp>
 #include <cmath>
 #include <cstdio>
@@ -14,7 +14,7 @@ int main(int argc, char** argv) {
   Kokkos::ScopeGuard kokkos(argc, argv);
   // Inputs and run
   const auto run = rouleau::run_case_driver(argc, argv, ROULEAU_CASE_DIR "/case.toml", "runs/capsule_shear");
-  if (run.status != 0) return run.status;
+  if (!run.ran) return run.status;
   // What is special to this case: Ca and the steady Taylor deformation.
   const rouleau::CaseConfig& config = run.config;
   const rouleau::CellKindConfig& capsule = *rouleau::find_cell_kind(config, config.cells.at(0).kind);

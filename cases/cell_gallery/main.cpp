@@ -1,6 +1,6 @@
 // The cell bodies side by side: runs cases/cell_gallery/case.toml (or the file given) and
 // prints, for each kind used, its mesh and how close the meshed body is to the exact one.
-//   case_cell_gallery [CASE.toml] [OUT_DIR]
+//   case_cell_gallery [CASE.toml] [--out DIR] [--set KEY=VALUE]... (the options of `rouleau run`)
 #include <Kokkos_Core.hpp>
 #include <cstdio>
 
@@ -13,7 +13,7 @@ int main(int argc, char** argv) {
   Kokkos::ScopeGuard kokkos(argc, argv);
   // Inputs and run
   const auto run = rouleau::run_case_driver(argc, argv, ROULEAU_CASE_DIR "/case.toml", "runs/cell_gallery");
-  if (run.status != 0) return run.status;
+  if (!run.ran) return run.status;
   // What is special to this case: each cell's meshed volume and area against the exact body.
   const rouleau::CaseCells cells = rouleau::make_case_cells(run.config, rouleau::default_mesh_cache_dir());
   const auto measures = cells.population->measures();

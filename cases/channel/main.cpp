@@ -1,6 +1,6 @@
 // Pressure-driven plane channel: runs cases/channel/case.toml (or the file given) and
 // compares the mean velocity with Hagen–Poiseuille, U = Δp H² / (12 μ L).
-//   case_channel [CASE.toml] [OUT_DIR]
+//   case_channel [CASE.toml] [--out DIR] [--set KEY=VALUE]... (the options of `rouleau run`)
 #include <Kokkos_Core.hpp>
 #include <cmath>
 #include <cstdio>
@@ -12,7 +12,7 @@ int main(int argc, char** argv) {
   Kokkos::ScopeGuard kokkos(argc, argv);
   // Inputs and run
   const auto run = rouleau::run_case_driver(argc, argv, ROULEAU_CASE_DIR "/case.toml", "runs/channel");
-  if (run.status != 0) return run.status;
+  if (!run.ran) return run.status;
   // What is special to this case: the flow rate against Hagen–Poiseuille.
   const auto& d = run.config.domain;
   const double height = d.upper[1] - d.lower[1], length = d.upper[0] - d.lower[0];

@@ -1,6 +1,6 @@
 // One red blood cell in simple shear: runs cases/rbc_shear/case.toml (or the file given)
 // and reports how the cell turned and deformed, and how well its volume was kept.
-//   case_rbc_shear [CASE.toml] [OUT_DIR]
+//   case_rbc_shear [CASE.toml] [--out DIR] [--set KEY=VALUE]... (the options of `rouleau run`)
 #include <Kokkos_Core.hpp>
 #include <cstdio>
 
@@ -11,7 +11,7 @@ int main(int argc, char** argv) {
   Kokkos::ScopeGuard kokkos(argc, argv);
   // Inputs and run
   const auto run = rouleau::run_case_driver(argc, argv, ROULEAU_CASE_DIR "/case.toml", "runs/rbc_shear");
-  if (run.status != 0) return run.status;
+  if (!run.ran) return run.status;
   // What is special to this case: the cell's inclination, deformation and volume.
   const auto last = rouleau::read_last_diagnostics(run.options.output_dir + "/diagnostics.csv");
   std::printf("t = %.4g s: inclination %.2f deg (placed at 45 deg disc axis, i.e. -45 deg major axis), Taylor "

@@ -16,11 +16,38 @@ namespace {
 
 constexpr int usage_error_exit_code = static_cast<int>(ExitCode::bad_input);
 
-void add_case_arguments(CLI::App& command, CommandLine& result) {
-  command.add_option("case", result.case_path, "Case file (TOML)")->required()->type_name("CASE.toml");
+
+// The options `run` and a case driver share: --out, --explain, --no-progress.
+void add_run_options(CLI::App& command, CommandLine& result, bool& no_progress) {
+  command.add_option("--out", result.output_dir, "Output folder")->type_name("DIR")->capture_default_str();
+  command.add_flag("--explain", result.explain, "Print the stages with the reason for each skip, then stop");
+  command.add_flag("--no-progress", no_progress, "Do not show the progress line");
+}
+
+void add_overrides_option(CLI::App& command, CommandLine& result) {
   command.add_option("--set", result.overrides, "Override a case key, e.g. --set time.dt_s=0.01 (repeatable)")
       ->type_name("KEY=VALUE")
       ->allow_extra_args(false);
+}
+
+// Parses argv into `result` through `app`; a parse error or --help gives
+// Command::finished with its exit code. Returns whether parsing succeeded.
+bool parse_or_finish(CLI::App& app, int argc, const char* const* argv, std::ostream& out, std::ostream& err,
+                     CommandLine& result) {
+  try {
+    app.parse(argc, argv);
+    return true;
+  } catch (const CLI::ParseError& error) {
+    result.command = Command::finished;
+    const int cli_exit_code = app.exit(error, out, err);
+    result.exit_code = cli_exit_code == 0 ? 0 : usage_error_exit_code;
+    return false;
+  }
+}
+
+void add_case_arguments(CLI::App& command, CommandLine& result) {
+  command.add_option("case", result.case_path, "Case file (TOML)")->required()->type_name("CASE.toml");
+  add_overrides_option(command, result);
 }
 
 void add_threads_option(CLI::App& command, CommandLine& result) {
@@ -44,11 +71,9 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
 
   CLI::App* run = app.add_subcommand("run", "Run a case: validate it, then simulate and write outputs");
   add_case_arguments(*run, result);
-  run->add_option("--out", result.output_dir, "Output folder")->type_name("DIR")->capture_default_str();
-  add_threads_option(*run, result);
-  run->add_flag("--explain", result.explain, "Print the stages with the reason for each skip, then stop");
   bool no_progress = false;
-  run->add_flag("--no-progress", no_progress, "Do not show the progress line");
+  add_run_options(*run, result, no_progress);
+  add_threads_option(*run, result);
 
   CLI::App* check = app.add_subcommand("check", "Validate a case and print its summary (no simulation)");
   add_case_arguments(*check, result);
@@ -56,16 +81,26 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   CLI::App* info = app.add_subcommand("info", "Print versions and the Kokkos configuration");
   add_threads_option(*info, result);
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& error) {
-    result.command = Command::finished;
-    const int cli_exit_code = app.exit(error, out, err);
-    result.exit_code = cli_exit_code == 0 ? 0 : usage_error_exit_code;
-    return result;
-  }
+  if (!parse_or_finish(app, argc, argv, out, err, result)) return result;
   result.progress = !no_progress;
   result.command = run->parsed() ? Command::run : check->parsed() ? Command::check : Command::info;
+  return result;
+}
+
+CommandLine parse_driver_command_line(int argc, const char* const* argv, const std::string& default_case,
+                                      const std::string& default_output_dir, std::ostream& out, std::ostream& err) {
+  CommandLine result;
+  result.case_path = default_case;
+  result.output_dir = default_output_dir;
+  const std::string program = argc > 0 ? argv[0] : "case";
+  CLI::App app("Runs a case and checks what is special to it (the options of `rouleau run`)", program);
+  app.add_option("case", result.case_path, "Case file (TOML)")->type_name("CASE.toml")->capture_default_str();
+  add_overrides_option(app, result);
+  bool no_progress = false;
+  add_run_options(app, result, no_progress);
+  if (!parse_or_finish(app, argc, argv, out, err, result)) return result;
+  result.progress = !no_progress;
+  result.command = Command::run;
   return result;
 }
 

@@ -36,6 +36,14 @@ struct CommandLine {
 // Command::finished with exit_code 0 (help, version) or 2 (usage error).
 CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& out, std::ostream& err);
 
+// A case driver's command line (cases/NAME/main.cpp), the options of `rouleau run`:
+//   case_NAME [CASE.toml] [--out DIR] [--set KEY=VALUE]... [--explain] [--no-progress]
+// with the driver's own case file and output folder as defaults. Kokkos's own flags
+// (--kokkos-...) are taken by Kokkos before this sees argv. Gives Command::run, or
+// Command::finished for --help and usage errors as parse_command_line.
+CommandLine parse_driver_command_line(int argc, const char* const* argv, const std::string& default_case,
+                                      const std::string& default_output_dir, std::ostream& out, std::ostream& err);
+
 // `rouleau check`: loads and validates the case with its overrides, derives its scales
 // and prints a short summary (name, mesh, Re, Stokes) to `out`. Throws InputError.
 int check_case(const CommandLine& command_line, std::ostream& out);

@@ -1,5 +1,7 @@
 #include "run/run_case.hpp"
 
+#include "cli/cli.hpp"
+
 #include <Kokkos_Core.hpp>
 #include <chrono>
 #include <algorithm>
@@ -215,9 +217,22 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
 CaseDriverRun run_case_driver(int argc, char** argv, const std::string& default_case,
                               const std::string& default_output_dir) {
   CaseDriverRun run;
-  run.config = load_case(argc > 1 ? argv[1] : default_case);
-  run.options.output_dir = argc > 2 ? argv[2] : default_output_dir;
-  run.status = run_case(run.config, run.options);
+  const CommandLine command_line =
+      parse_driver_command_line(argc, argv, default_case, default_output_dir, std::cout, std::cerr);
+  if (command_line.command != Command::run) {  // --help or a usage error
+    run.status = command_line.exit_code;
+    return run;
+  }
+  run.options.output_dir = command_line.output_dir;
+  run.options.explain = command_line.explain;
+  run.options.progress = command_line.progress;
+  run.status = run_reporting_errors(
+      [&] {
+        run.config = load_case(command_line.case_path, command_line.overrides);
+        return run_case(run.config, run.options);
+      },
+      std::cerr);
+  run.ran = run.status == 0 && !run.options.explain;
   return run;
 }
 

@@ -19,13 +19,17 @@ struct RunOptions {
 // Returns the process exit code (ExitCode); throws InputError for bad input found late.
 int run_case(const CaseConfig& config, const RunOptions& options);
 
-// What a case driver (cases/NAME/main.cpp) runs: `driver [CASE.toml] [OUT_DIR]`, with
-// the driver's own case file and output folder as defaults. Loads the case and runs it;
-// the driver then checks what is special to its case.
+// What a case driver (cases/NAME/main.cpp) runs:
+//   case_NAME [CASE.toml] [--out DIR] [--set KEY=VALUE]... [--explain] [--no-progress]
+// with the driver's own case file and output folder as defaults. Loads the case and runs
+// it, reporting errors as `rouleau run` does (one line, exit code); the driver then checks
+// what is special to its case when status is 0.
 struct CaseDriverRun {
   CaseConfig config;
   RunOptions options;
-  int status = 0;  // run_case's exit code
+  int status = 0;       // the process exit code (ExitCode)
+  bool ran = false;     // the case ran to its end: the driver checks its results
+
 };
 CaseDriverRun run_case_driver(int argc, char** argv, const std::string& default_case,
                               const std::string& default_output_dir);

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "config/load_case.hpp"
+#include "cells/cell_shape.hpp"
 #include "run/simulation.hpp"
 
 namespace {
@@ -82,6 +83,46 @@ TEST(Coupling, CellAtRestInQuiescentFluidStaysAtRest) {
   EXPECT_LT(largest_displacement, 1e-12);
   EXPECT_LT(largest_speed, 1e-9);
   EXPECT_LT(simulation.fluid().kinetic_energy(), 1e-20);
+}
+
+TEST(Coupling, TaylorDeformationIsMeasuredOnTheMembraneMidSurface) {
+  // A capsule shell (outer radius a = 2.82 μm, thickness h = 0.36 μm) placed so that its
+  // mid-surface (radius a_m = a − h/2) becomes the ellipsoid a_m R diag(α, 1/α, 1) Rᵀ n
+  // (R a turn by 30° about z) with the thickness kept along each node's radial direction
+  // n: D = (α − 1/α) / (α + 1/α) and the inclination 30° exactly; the outer surface alone
+  // would give (a_m α − a_m/α) / (a_m α + a_m/α + h), 0.014 lower.
+  const CaseConfig config = load_text(shear_box(12.0, 4, 0.0) + "[time]\ndt_s = 1e-4\nend_s = 1e-3\n"
+                                      "[cell_kinds.capsule]\nresolution = \"coarse\"\n"
+                                      "[[cells]]\nkind = \"capsule\"\ncenter_um = [0, 0, 0]\n");
+  Simulation simulation(config, scratch("meshes"));
+  const auto& cells = simulation.cells();
+  const double outer_radius = 2.82, thickness = 0.36, mid_radius = outer_radius - 0.5 * thickness;
+  ASSERT_EQ(cells.membrane_depth, std::vector<double>{0.5 * thickness});
+  const double stretch = 1.25, angle = 30.0 * M_PI / 180.0, c = std::cos(angle), s = std::sin(angle);
+  const double m_xx = stretch * c * c + s * s / stretch, m_yy = stretch * s * s + c * c / stretch,
+               m_xy = (stretch - 1.0 / stretch) * c * s;
+  auto x = host(cells.population->reference_positions());
+  for (std::size_t node = 0; node < x.extent(0); ++node) {
+    const double r = std::hypot(x(node, 0), x(node, 1), x(node, 2));
+    const double n[3] = {x(node, 0) / r, x(node, 1) / r, x(node, 2) / r};
+    const double mid[3] = {mid_radius * (m_xx * n[0] + m_xy * n[1]), mid_radius * (m_xy * n[0] + m_yy * n[1]),
+                           mid_radius * n[2]};
+    for (int k = 0; k < 3; ++k) x(node, k) = mid[k] + (r - mid_radius) * n[k];
+  }
+  Kokkos::deep_copy(cells.population->positions(), x);
+  const auto measures = cells.population->measures();
+  const auto shape = rouleau::shear_plane_shapes(*cells.population, measures, cells.membrane_depth).at(0);
+  const auto outer = rouleau::shear_plane_shapes(*cells.population, measures).at(0);
+  const double exact = (stretch - 1.0 / stretch) / (stretch + 1.0 / stretch);
+  std::printf("mid-surface D %.4f, inclination %.2f deg (exact %.4f, 30 deg); outer-surface D %.4f\n",
+              shape.taylor_deformation, shape.inclination_deg, exact, outer.taylor_deformation);
+  // Tolerance: the nodes sample the tips at the coarse mesh's spacing (≈ 0.5 μm, an angle
+  // of ≈ 0.1 rad, a relative distance error 1 − cos 0.1 ≈ 0.005 at most).
+  EXPECT_NEAR(shape.taylor_deformation, exact, 0.005);
+  EXPECT_NEAR(shape.length, mid_radius * stretch, 0.03);
+  EXPECT_NEAR(shape.breadth, mid_radius / stretch, 0.03);
+  EXPECT_NEAR(shape.inclination_deg, 30.0, 0.5);
+  EXPECT_GT(shape.taylor_deformation - outer.taylor_deformation, 0.01);
 }
 
 // The angular velocity about z of the cell's nodes, fitted to rigid rotation about the

@@ -6,7 +6,8 @@
 namespace rouleau {
 
 std::vector<ShearPlaneShape> shear_plane_shapes(const CellPopulation& population,
-                                                const std::vector<CellMeasures>& measures) {
+                                                const std::vector<CellMeasures>& measures,
+                                                const std::vector<double>& membrane_depth) {
   auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), population.positions());
   auto weight = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), population.surface_area_weights());
   auto triangles = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), population.surface_triangles());
@@ -42,9 +43,10 @@ std::vector<ShearPlaneShape> shear_plane_shapes(const CellPopulation& population
     ShearPlaneShape& shape = shapes[c];
     shape.inclination_deg = 0.5 * std::atan2(2.0 * gxy, gxx - gyy) * 180.0 / M_PI;
     if (largest > 0.0) {
-      shape.length = largest;
-      shape.breadth = smallest;
-      shape.taylor_deformation = (largest - smallest) / (largest + smallest);
+      const double depth = membrane_depth.empty() ? 0.0 : membrane_depth.at(c);
+      shape.length = largest - depth;
+      shape.breadth = smallest - depth;
+      shape.taylor_deformation = (shape.length - shape.breadth) / (shape.length + shape.breadth);
     }
   }
   return shapes;

@@ -3,9 +3,14 @@
 //   inclination  the angle from +x of the major axis of the in-plane gyration tensor
 //                G = Σ_n w_n r_n r_nᵀ (r_n = (x_n − x_c, y_n − y_c), w_n the nodes' area
 //                weights), in degrees in (−90, 90];
-//   L, B         the largest and smallest distance to the centroid among the outer-surface
-//                nodes in a slab |z − z_c| < δ about the cell's mid-plane, δ = 0.6 × the
-//                mean outer-surface edge (DESIGN.md, capsule test);
+//   L, B         the largest and smallest distance to the centroid of the membrane's
+//                mid-surface in the shear plane (DESIGN.md, capsule test): among the
+//                outer-surface nodes in a slab |z − z_c| < δ about the cell's mid-plane,
+//                δ = 0.6 × the mean outer-surface edge, the largest and smallest distance
+//                less the membrane's depth below the outer surface (half the thickness of
+//                a hollow shell, whose mid-surface is the thin membrane it stands for; the
+//                shell thins where it stretches, which this leaves out: for a 0.18 μm
+//                shell stretched 20 %, 0.015 μm of a 3 μm radius);
 //   D            the Taylor deformation (L − B) / (L + B).
 #include <vector>
 
@@ -20,8 +25,10 @@ struct ShearPlaneShape {
   double taylor_deformation = 0.0;
 };
 
-// One entry per cell; `measures` are population.measures() at the same positions.
+// One entry per cell; `measures` are population.measures() at the same positions;
+// membrane_depth per cell [μm] (CaseCells::membrane_depth), empty = 0 for every cell.
 std::vector<ShearPlaneShape> shear_plane_shapes(const CellPopulation& population,
-                                                const std::vector<CellMeasures>& measures);
+                                                const std::vector<CellMeasures>& measures,
+                                                const std::vector<double>& membrane_depth = {});
 
 }  // namespace rouleau

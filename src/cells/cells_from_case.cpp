@@ -71,6 +71,7 @@ CaseCells make_case_cells(const CaseConfig& config, const std::string& mesh_cach
     cell.kind = static_cast<int>(kind - config.cell_kinds.data());
     placed.push_back(cell);
     cell_kind.push_back(cell.kind);
+    result.membrane_depth.push_back(kind->body == CellBody::shell ? 0.5 * kind->shell_thickness : 0.0);
   }
   result.population = std::make_unique<CellPopulation>(placed);
   if (config.interaction.enabled) {

@@ -18,6 +18,10 @@ struct CaseCells {
   std::unique_ptr<CellPopulation> population;
   std::unique_ptr<SurfaceInteraction> interaction;  // when [interaction] is enabled
   SurfaceQuadrature quadrature = SurfaceQuadrature::nodes;  // the interaction's, as chosen
+  // Per cell: how far the membrane's mid-surface lies inside the outer surface [μm], half
+  // the shell thickness of a hollow shell (the thin membrane it stands for), 0 for a
+  // filled body.
+  std::vector<double> membrane_depth;
 };
 
 // The interaction's surface points for `choice`; "auto": nodes when the meshes' surface

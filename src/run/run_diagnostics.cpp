@@ -77,7 +77,7 @@ std::vector<double> CellDiagnostics::row(const CaseCells& cells) const {
   const double rebuilds = cells.interaction ? cells.interaction->rebuild_count() : 0.0;
   double largest_change = 0.0;
   const std::vector<CellMeasures> now = cells.population->measures();
-  const std::vector<ShearPlaneShape> shapes = shear_plane_shapes(*cells.population, now);
+  const std::vector<ShearPlaneShape> shapes = shear_plane_shapes(*cells.population, now, cells.membrane_depth);
   std::vector<double> values{elastic, interaction, rebuilds, 0.0};
   for (std::size_t c = 0; c < now.size(); ++c) {
     largest_change = std::max(largest_change, std::fabs(now[c].volume / initial_volumes_[c] - 1.0));

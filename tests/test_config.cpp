@@ -117,6 +117,7 @@ void expect_identical_cases(const CaseConfig& a, const CaseConfig& b) {
     EXPECT_EQ(first.morse_well_depth_factor, second.morse_well_depth_factor);
     EXPECT_EQ(first.strain_hardening_ratio, second.strain_hardening_ratio);
     EXPECT_EQ(first.area_modulus, second.area_modulus);
+    EXPECT_EQ(first.volume_modulus, second.volume_modulus);
   }
   ASSERT_EQ(a.cells.size(), b.cells.size());
   for (std::size_t i = 0; i < a.cells.size(); ++i) {
@@ -567,12 +568,15 @@ TEST(ConfigCells, OverridesReachKindsAndCells) {
   for (const CellKindConfig& kind : config.cell_kinds) {
     EXPECT_EQ(kind.strain_hardening_ratio, 0.0) << kind.name;
     EXPECT_EQ(kind.area_modulus, 0.0) << kind.name;
+    EXPECT_EQ(kind.volume_modulus, 0.0) << kind.name;
   }
   const CaseConfig mills = rouleau::load_case(
       good_case, {"cell_kinds.normal.strain_hardening_ratio=0.0333", "cell_kinds.normal.area_modulus_pN_um=300"});
   EXPECT_DOUBLE_EQ(kind_of(mills, "normal").strain_hardening_ratio, 0.0333);
   EXPECT_DOUBLE_EQ(kind_of(mills, "normal").area_modulus, 300.0);
   EXPECT_EQ(kind_of(mills, "sickle").area_modulus, 0.0);
+  EXPECT_DOUBLE_EQ(rouleau::load_case(good_case, {"cell_kinds.capsule.volume_modulus_Pa=40"})
+                       .cell_kinds[2].volume_modulus, 40.0);
   EXPECT_EQ(load_error(good_case, {"cell_kinds.capsule.strain_hardening_ratio=-0.1"}).key(),
             "cell_kinds.capsule.strain_hardening_ratio");
 }
@@ -615,6 +619,7 @@ TEST(ConfigResolved, RoundTripGivesAnIdenticalCase) {
        "interaction.pair=[{kind_a=\"sickle\", kind_b=\"ball\", well_depth_pN_um3=17.1, cutoff_um=2.2}]",
        "cell_kinds.ball.morse_well_depth_factor=0.3", "cell_kinds.normal.strain_hardening_ratio=0.0333",
        "cell_kinds.normal.area_modulus_pN_um=250.3", "cell_kinds.stiff-1.area_modulus_pN_um=17",
+       "cell_kinds.capsule.volume_modulus_Pa=31.5",
        "coupling.support_elements=2.5",
        "coupling.stable_step_factor=0.37", "coupling.allow_unstable_step=true",
        "coupling.gravity_m_s2=[0.1, -9.81, 0.3]", "scene.skip_unneeded_stages=false"},

@@ -476,7 +476,7 @@ TEST(MillsStretch, MillsMembraneKindFromACaseFile) {
     return cells.compute_internal_forces_and_energy();
   };
   const double energy = stretched_energy(*from_case.population, config.cells[0].center);
-  const double area_energy = from_case.population->area_energy();
+  const double area_energy = from_case.population->constraint_energy();
   const std::array<double, 3> origin{0.0, 0.0, 0.0};
   CellPopulation expected(std::vector<PlacedCell>{placed_cell(mills_membrane)});
   const double expected_energy = stretched_energy(expected, origin);

@@ -188,11 +188,13 @@ void deform(Population& cells, Map map) {
 }
 
 std::vector<PlacedCell> one_cell(const CellMesh& mesh, Eigen::Vector3d center = Eigen::Vector3d::Zero(),
-                                 const NeoHookeanMaterial& cell_material = material, double area_modulus = 0.0) {
+                                 const NeoHookeanMaterial& cell_material = material, double area_modulus = 0.0,
+                                 double volume_modulus = 0.0) {
   PlacedCell cell;
   cell.mesh = &mesh;
   cell.material = cell_material;
   cell.area_modulus = area_modulus;
+  cell.volume_modulus = volume_modulus;
   for (int i = 0; i < 3; ++i) cell.center[i] = center[i];
   return {cell};
 }
@@ -411,48 +413,62 @@ TEST(NeoHookeanForces, SerialAndThreadedRunsAgree) {
 }
 #endif
 
-// ---- the global area constraint of a cell (kernels/area_constraint.hpp)
+// ---- the global area and volume constraints of a cell (kernels/global_constraints.hpp)
 
 const double area_modulus = 300.0;       // k_A [pN/μm]
-const NeoHookeanMaterial no_elasticity;  // zero moduli: the forces are the area constraint's alone
+const double volume_modulus = 40.0;      // k_V [Pa]
+const NeoHookeanMaterial no_elasticity;  // zero moduli: the forces are the constraints' alone
 
-// The serial reference: per triangle A_t = |(x1 − x0) × (x2 − x0)|/2 and
-// ∂A_t/∂x_k = ½ n̂ × (x_{k+2} − x_{k+1}); T = k_A (A − A0)/A0, f = −T ∂A/∂x,
-// E_A = k_A (A − A0)²/(2 A0), for the cell whose surface is `mesh` placed at `offset`.
-struct AreaReference {
-  double area = 0.0, energy = 0.0;
+// The serial reference: per triangle A_t = |(x1 − x0) × (x2 − x0)|/2,
+// ∂A_t/∂x_k = ½ n̂ × (x_{k+2} − x_{k+1}), V_t = x0 · (x1 × x2)/6, ∂V_t/∂x_k = x_{k+1} × x_{k+2}/6;
+// T = k_A (A − A0)/A0, P = k_V (V − V0)/V0, f = −T ∂A/∂x − P ∂V/∂x,
+// E = k_A (A − A0)²/(2 A0) + k_V (V − V0)²/(2 V0), for the cell whose surface is `mesh`
+// placed at `offset`.
+struct ConstraintReference {
+  double area = 0.0, volume = 0.0, energy = 0.0;
   std::vector<Eigen::Vector3d> forces;
 };
 template <class HostPositions>
-AreaReference reference_area_forces(const CellMesh& mesh, const HostPositions& x, int offset, double k_a,
-                                    double reference_area) {
-  AreaReference r;
+ConstraintReference reference_constraint_forces(const CellMesh& mesh, const HostPositions& x, int offset,
+                                                double k_a, double reference_area, double k_v,
+                                                double reference_volume) {
+  ConstraintReference r;
   r.forces.assign(mesh.nodes.size(), Eigen::Vector3d::Zero());
-  std::vector<std::array<Eigen::Vector3d, 3>> gradients;
+  std::vector<std::array<Eigen::Vector3d, 3>> area_gradients, volume_gradients;
   for (const auto& t : mesh.outer_surface) {
     Eigen::Vector3d y[3];
     for (int k = 0; k < 3; ++k) y[k] = Eigen::Vector3d(x(offset + t[k], 0), x(offset + t[k], 1), x(offset + t[k], 2));
     const Eigen::Vector3d normal = (y[1] - y[0]).cross(y[2] - y[0]);
     r.area += 0.5 * normal.norm();
+    r.volume += y[0].dot(y[1].cross(y[2])) / 6.0;
     const Eigen::Vector3d unit = normal.normalized();
-    std::array<Eigen::Vector3d, 3> g;
-    for (int k = 0; k < 3; ++k) g[k] = 0.5 * unit.cross(y[(k + 2) % 3] - y[(k + 1) % 3]);
-    gradients.push_back(g);
+    std::array<Eigen::Vector3d, 3> ga, gv;
+    for (int k = 0; k < 3; ++k) {
+      ga[k] = 0.5 * unit.cross(y[(k + 2) % 3] - y[(k + 1) % 3]);
+      gv[k] = y[(k + 1) % 3].cross(y[(k + 2) % 3]) / 6.0;
+    }
+    area_gradients.push_back(ga);
+    volume_gradients.push_back(gv);
   }
-  const double strain = (r.area - reference_area) / reference_area;
-  r.energy = 0.5 * k_a * reference_area * strain * strain;
+  const double area_strain = (r.area - reference_area) / reference_area;
+  const double volume_strain = (r.volume - reference_volume) / reference_volume;
+  r.energy = 0.5 * k_a * reference_area * area_strain * area_strain +
+             0.5 * k_v * reference_volume * volume_strain * volume_strain;
   for (std::size_t t = 0; t < mesh.outer_surface.size(); ++t)
-    for (int k = 0; k < 3; ++k) r.forces[mesh.outer_surface[t][k]] -= k_a * strain * gradients[t][k];
+    for (int k = 0; k < 3; ++k)
+      r.forces[mesh.outer_surface[t][k]] -=
+          k_a * area_strain * area_gradients[t][k] + k_v * volume_strain * volume_gradients[t][k];
   return r;
 }
 
-TEST(AreaConstraint, VanishesAtTheReferenceAndUnderRigidMotions) {
-  // The box [−1.5, 1.5]³: A0 = 54 μm². At rest, and moved rigidly, E_A = 0 and no force.
+TEST(GlobalConstraints, VanishAtTheReferenceAndUnderRigidMotions) {
+  // The box [−1.5, 1.5]³: A0 = 54 μm², V0 = 27 μm³. At rest, and moved rigidly, E = 0 and
+  // no force, for the area and the volume constraint together.
   const CellMesh mesh = testing::tetrahedral_box(3, 3.0);
-  Population cells(one_cell(mesh, {5.0, -2.0, 1.0}, no_elasticity, area_modulus));
-  ASSERT_TRUE(cells.has_area_constraint());
-  const double a0 = host_copy(cells.reference_areas())(0);
-  double worst_force = 0.0, worst_energy = 0.0, worst_tension = 0.0;
+  Population cells(one_cell(mesh, {5.0, -2.0, 1.0}, no_elasticity, area_modulus, volume_modulus));
+  ASSERT_TRUE(cells.has_global_constraints());
+  const double a0 = host_copy(cells.reference_areas())(0), v0 = host_copy(cells.reference_volumes())(0);
+  double worst_force = 0.0, worst_energy = 0.0, worst_tension = 0.0, worst_pressure = 0.0;
   for (const double angle : {0.0, 0.4, 2.5}) {
     const Eigen::Matrix3d r = rotation(angle, Eigen::Vector3d(1.0, -2.0, 0.5));
     const Eigen::Vector3d shift(3.0, 1.0, -7.0);
@@ -463,63 +479,82 @@ TEST(AreaConstraint, VanishesAtTheReferenceAndUnderRigidMotions) {
       for (int i = 0; i < 3; ++i) worst_force = std::max(worst_force, std::fabs(f(n, i)));
     worst_energy = std::max(worst_energy, std::fabs(energy));
     worst_tension = std::max(worst_tension, std::fabs(host_copy(cells.area_tensions())(0)));
+    worst_pressure = std::max(worst_pressure, std::fabs(host_copy(cells.volume_pressures())(0)));
     if (angle == 0.0) {
       EXPECT_EQ(energy, 0.0);
       EXPECT_EQ(worst_force, 0.0);
     }
   }
   // Scale: a 1 % area change gives T = 3 pN/μm and forces of T × 1 μm = 3 pN.
-  std::cout << "  area constraint, k_A = " << area_modulus << " pN/um, A0 = " << a0
-            << " um^2: at rest and moved rigidly, largest force " << worst_force << " pN, tension " << worst_tension
-            << " pN/um, energy " << worst_energy << " pN um\n";
+  std::cout << "  global constraints, k_A = " << area_modulus << " pN/um, A0 = " << a0 << " um^2, k_V = "
+            << volume_modulus << " Pa, V0 = " << v0 << " um^3: at rest and moved rigidly, largest force "
+            << worst_force << " pN, tension " << worst_tension << " pN/um, pressure " << worst_pressure
+            << " Pa, energy " << worst_energy << " pN um\n";
   EXPECT_NEAR(a0, 54.0, 1e-12);
+  EXPECT_NEAR(v0, 27.0, 1e-12);
   EXPECT_LT(worst_force, 1e-11 * area_modulus);
   EXPECT_LT(worst_tension, 1e-11 * area_modulus);
+  EXPECT_LT(worst_pressure, 1e-11 * volume_modulus);
   EXPECT_LT(worst_energy, 1e-20 * area_modulus * a0);
-  // Off (k_A = 0): not built, and the population says so.
-  EXPECT_FALSE(Population(one_cell(mesh)).has_area_constraint());
+  // Off (k_A = k_V = 0): not built, and the population says so.
+  EXPECT_FALSE(Population(one_cell(mesh)).has_global_constraints());
+  EXPECT_TRUE(Population(one_cell(mesh, Eigen::Vector3d::Zero(), material, 0.0, 1.0)).has_global_constraints());
   EXPECT_THROW(Population(one_cell(mesh, Eigen::Vector3d::Zero(), material, -1.0)), std::invalid_argument);
+  EXPECT_THROW(Population(one_cell(mesh, Eigen::Vector3d::Zero(), material, 0.0, -1.0)), std::invalid_argument);
 }
 
-TEST(AreaConstraint, ForcesAreMinusTheGradientOfTheEnergy) {
-  // f = −∂E/∂x by central differences, the area term alone and with the elastic one; and
-  // the exact energy of a uniform dilation by s (the faces stay flat): A = s² A0,
-  // E_A = k_A (s² − 1)² A0 / 2, T = k_A (s² − 1).
+TEST(GlobalConstraints, ForcesAreMinusTheGradientOfTheEnergy) {
+  // f = −∂E/∂x by central differences, each constraint alone, both, and with the elastic
+  // forces; and the exact energy of a uniform dilation by s (the faces stay flat):
+  // A = s² A0, V = s³ V0, E = k_A (s² − 1)² A0/2 + k_V (s³ − 1)² V0/2, T = k_A (s² − 1),
+  // P = k_V (s³ − 1).
   const CellMesh mesh = testing::tetrahedral_box(3, 3.0);
-  for (const NeoHookeanMaterial& m : {no_elasticity, mills_material}) {
-    Population cells(one_cell(mesh, Eigen::Vector3d::Zero(), m, area_modulus));
+  struct Variant {
+    const char* name;
+    NeoHookeanMaterial material;
+    double k_a, k_v;
+  };
+  for (const Variant& v : {Variant{"area alone", no_elasticity, area_modulus, 0.0},
+                           Variant{"volume alone", no_elasticity, 0.0, volume_modulus},
+                           Variant{"area, volume and elastic", mills_material, area_modulus, volume_modulus}}) {
+    Population cells(one_cell(mesh, Eigen::Vector3d::Zero(), v.material, v.k_a, v.k_v));
     deform_randomly(cells, 29, 0.08);
     cells.compute_internal_forces_and_energy();
     const double relative = force_vs_energy_gradient(cells);
-    std::cout << "  area constraint" << (m.c1 > 0.0 ? " + elastic forces" : " alone") << " (area "
-              << std::showpos << 100.0 * host_copy(cells.area_tensions())(0) / area_modulus << std::noshowpos
+    const CellMeasures measures = cells.measures()[0];
+    std::cout << "  " << v.name << " (area " << std::showpos << 100.0 * (measures.area / 54.0 - 1.0) << " %, volume "
+              << 100.0 * (measures.volume / 27.0 - 1.0) << std::noshowpos
               << " %): nodal force vs −∂E/∂x, relative error " << relative << "\n";
     EXPECT_LT(relative, 1e-6);
   }
-  Population cells(one_cell(mesh, Eigen::Vector3d::Zero(), no_elasticity, area_modulus));
-  const double s = 1.1, a0 = 54.0;
+  Population cells(one_cell(mesh, Eigen::Vector3d::Zero(), no_elasticity, area_modulus, volume_modulus));
+  const double s = 1.1, a0 = 54.0, v0 = 27.0;
   deform(cells, [&](const Eigen::Vector3d& x) { return Eigen::Vector3d(s * x); });
   const double energy = cells.compute_internal_forces_and_energy();
-  const double expected = 0.5 * area_modulus * (s * s - 1.0) * (s * s - 1.0) * a0;
-  std::cout << "  uniform dilation by " << s << ": E_A " << energy << " pN um (exact " << expected << "), T "
-            << host_copy(cells.area_tensions())(0) << " pN/um (exact " << area_modulus * (s * s - 1.0) << ")\n";
-  EXPECT_NEAR(energy / expected, 1.0, 1e-12);
-  EXPECT_NEAR(cells.area_energy() / expected, 1.0, 1e-12);
-  EXPECT_NEAR(host_copy(cells.area_tensions())(0) / (area_modulus * (s * s - 1.0)), 1.0, 1e-12);
+  const double area_energy = 0.5 * area_modulus * (s * s - 1.0) * (s * s - 1.0) * a0;
+  const double volume_energy = 0.5 * volume_modulus * (s * s * s - 1.0) * (s * s * s - 1.0) * v0;
+  const double tension = host_copy(cells.area_tensions())(0), pressure = host_copy(cells.volume_pressures())(0);
+  std::cout << "  uniform dilation by " << s << ": E " << energy << " pN um (exact " << area_energy + volume_energy
+            << "), T " << tension << " pN/um (exact " << area_modulus * (s * s - 1.0) << "), P " << pressure
+            << " Pa (exact " << volume_modulus * (s * s * s - 1.0) << ")\n";
+  EXPECT_NEAR(energy / (area_energy + volume_energy), 1.0, 1e-12);
+  EXPECT_NEAR(cells.constraint_energy() / (area_energy + volume_energy), 1.0, 1e-12);
+  EXPECT_NEAR(tension / (area_modulus * (s * s - 1.0)), 1.0, 1e-12);
+  EXPECT_NEAR(pressure / (volume_modulus * (s * s * s - 1.0)), 1.0, 1e-12);
 }
 
-TEST(AreaConstraint, MatchesAPlainSerialReferenceAndConservesMomentum) {
-  // Two cells, the first with the constraint, the second without: the kernel's forces
+TEST(GlobalConstraints, MatchAPlainSerialReferenceAndConserveMomentum) {
+  // Two cells, the first with both constraints, the second without: the kernel's forces
   // against the serial reference, none on the second cell, and Σ f = 0, Σ x × f = 0.
   const CellMesh mesh = testing::tetrahedral_box(3, 3.0);
-  std::vector<PlacedCell> placed = one_cell(mesh, {2.0, 1.0, -1.0}, no_elasticity, area_modulus);
+  std::vector<PlacedCell> placed = one_cell(mesh, {2.0, 1.0, -1.0}, no_elasticity, area_modulus, volume_modulus);
   placed.push_back(one_cell(mesh, {-4.0, 0.0, 0.0}, no_elasticity, 0.0)[0]);
   Population cells(placed);
   deform_randomly(cells, 31, 0.1);
   const double energy = cells.compute_internal_forces_and_energy();
   const auto x = host_copy(cells.positions());
   const auto f = host_copy(cells.internal_forces());
-  const AreaReference expected = reference_area_forces(mesh, x, 0, area_modulus, 54.0);
+  const ConstraintReference expected = reference_constraint_forces(mesh, x, 0, area_modulus, 54.0, volume_modulus, 27.0);
   Kokkos::View<double* [3], Kokkos::HostSpace> expected_forces("expected", cells.num_nodes());
   for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
     for (int i = 0; i < 3; ++i) expected_forces(n, i) = expected.forces[n][i];
@@ -535,15 +570,18 @@ TEST(AreaConstraint, MatchesAPlainSerialReferenceAndConservesMomentum) {
     moment_magnitude += xn.norm() * fn.norm();
   }
   const std::vector<CellMeasures> measures = cells.measures();
-  std::cout << "  area constraint vs serial reference: forces " << difference << ", energy "
+  std::cout << "  global constraints vs serial reference: forces " << difference << ", energy "
             << std::fabs(energy / expected.energy - 1.0) << ", area " << measures[0].area << " (reference "
-            << expected.area << ") um^2; second cell's largest force " << second_cell << " pN; Σ f = " << total.norm()
+            << expected.area << ") um^2, volume " << measures[0].volume << " (reference " << expected.volume
+            << ") um^3; second cell's largest force " << second_cell << " pN; Σ f = " << total.norm()
             << " pN, Σ x × f = " << moment.norm() << " pN um\n";
   EXPECT_LT(difference, 1e-12);
   EXPECT_NEAR(energy / expected.energy, 1.0, 1e-12);
   EXPECT_NEAR(measures[0].area / expected.area, 1.0, 1e-13);
+  EXPECT_NEAR(measures[0].volume / expected.volume, 1.0, 1e-13);
   EXPECT_EQ(second_cell, 0.0);
   EXPECT_EQ(host_copy(cells.area_tensions())(1), 0.0);
+  EXPECT_EQ(host_copy(cells.volume_pressures())(1), 0.0);
   EXPECT_LT(total.norm(), 1e-13 * magnitude);
   EXPECT_LT(moment.norm(), 1e-13 * moment_magnitude);
 }

@@ -40,9 +40,11 @@ BasicCellPopulation<ExecSpace>::BasicCellPopulation(const std::vector<PlacedCell
   cell_sums_ = Kokkos::View<double* [5]>("rouleau::CellPopulation::cell_sums", cells.size());
   cell_origins_ = NodeVectors("rouleau::CellPopulation::cell_origins", cells.size());
   area_moduli_ = Kokkos::View<double*>("rouleau::CellPopulation::area_moduli", cells.size());
+  volume_moduli_ = Kokkos::View<double*>("rouleau::CellPopulation::volume_moduli", cells.size());
   reference_areas_ = Kokkos::View<double*>("rouleau::CellPopulation::reference_areas", cells.size());
-  cell_areas_ = Kokkos::View<double*>("rouleau::CellPopulation::cell_areas", cells.size());
+  reference_volumes_ = Kokkos::View<double*>("rouleau::CellPopulation::reference_volumes", cells.size());
   area_tensions_ = Kokkos::View<double*>("rouleau::CellPopulation::area_tensions", cells.size());
+  volume_pressures_ = Kokkos::View<double*>("rouleau::CellPopulation::volume_pressures", cells.size());
 
   auto x = Kokkos::create_mirror_view(reference_positions_);
   auto node_cell = Kokkos::create_mirror_view(node_cell_);
@@ -53,6 +55,7 @@ BasicCellPopulation<ExecSpace>::BasicCellPopulation(const std::vector<PlacedCell
   auto triangle_cell = Kokkos::create_mirror_view(triangle_cell_);
   auto first_node = Kokkos::create_mirror_view(cell_first_node_);
   auto area_moduli = Kokkos::create_mirror_view(area_moduli_);
+  auto volume_moduli = Kokkos::create_mirror_view(volume_moduli_);
   std::size_t node = 0, element = 0, triangle = 0;
   for (int c = 0; c < num_cells_; ++c) {
     const PlacedCell& cell = cells[c];
@@ -62,14 +65,16 @@ BasicCellPopulation<ExecSpace>::BasicCellPopulation(const std::vector<PlacedCell
     cell_first_node_host_.push_back(offset);
     cell_node_count_host_.push_back(static_cast<int>(mesh.nodes.size()));
     materials(c) = cell.material;
-    if (!(cell.area_modulus >= 0.0)) {
-      std::ostringstream msg;
-      msg << "rouleau::CellPopulation: cell " << c << " has area modulus " << cell.area_modulus
-          << " pN/um (must be >= 0)";
-      throw std::invalid_argument(msg.str());
-    }
+    for (const auto& [modulus, name] : {std::pair{cell.area_modulus, "area modulus"},
+                                        std::pair{cell.volume_modulus, "volume modulus"}})
+      if (!(modulus >= 0.0)) {
+        std::ostringstream msg;
+        msg << "rouleau::CellPopulation: cell " << c << " has " << name << " " << modulus << " (must be >= 0)";
+        throw std::invalid_argument(msg.str());
+      }
     area_moduli(c) = cell.area_modulus;
-    area_constraint_ = area_constraint_ || cell.area_modulus > 0.0;
+    volume_moduli(c) = cell.volume_modulus;
+    global_constraints_ = global_constraints_ || cell.area_modulus > 0.0 || cell.volume_modulus > 0.0;
     // x_world = center + R x_body
     for (const auto& p : mesh.nodes) {
       for (int i = 0; i < 3; ++i)
@@ -95,6 +100,7 @@ BasicCellPopulation<ExecSpace>::BasicCellPopulation(const std::vector<PlacedCell
   Kokkos::deep_copy(triangle_cell_, triangle_cell);
   Kokkos::deep_copy(cell_first_node_, first_node);
   Kokkos::deep_copy(area_moduli_, area_moduli);
+  Kokkos::deep_copy(volume_moduli_, volume_moduli);
 
   // Reference data of the tetrahedra, once (total-Lagrangian).
   Tet4ReferenceFunctor<NodeVectors, Kokkos::View<int* [4]>, Kokkos::View<double* [3][3]>, Kokkos::View<double*>>
@@ -121,13 +127,20 @@ BasicCellPopulation<ExecSpace>::BasicCellPopulation(const std::vector<PlacedCell
   force_scatter_ = Scatter("rouleau::CellPopulation::force_scatter", node_count);
   cell_sums_scatter_ = CellSumsScatter("rouleau::CellPopulation::cell_sums_scatter", cells.size());
 
-  // Reference areas A0_c of the outer surfaces (for the area constraint).
-  cell_area_scatter_ = CellScatter("rouleau::CellPopulation::cell_area_scatter", cells.size());
-  CellAreaFunctor<CellScatter> reference_areas{reference_positions_, surface_triangles_, triangle_cell_,
-                                               cell_area_scatter_};
-  Kokkos::parallel_for("rouleau::CellPopulation::reference_areas",
-                       Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(triangle_count)), reference_areas);
-  gather_into(reference_areas_, cell_area_scatter_);
+  // Reference areas A0_c and volumes V0_c of the outer surfaces (global constraints).
+  compute_surface_sums(reference_positions_);
+  Kokkos::deep_copy(reference_areas_, Kokkos::subview(cell_sums_, Kokkos::ALL, int(surface_area)));
+  Kokkos::deep_copy(reference_volumes_, Kokkos::subview(cell_sums_, Kokkos::ALL, int(enclosed_volume)));
+}
+
+template <class ExecSpace>
+void BasicCellPopulation<ExecSpace>::compute_surface_sums(const NodeVectors& positions) const {
+  cell_sums_scatter_.reset();
+  CellSurfaceSumsFunctor<CellSumsScatter> sums{positions, surface_triangles_, triangle_cell_, cell_first_node_,
+                                               cell_sums_scatter_};
+  Kokkos::parallel_for("rouleau::CellPopulation::surface_sums",
+                       Kokkos::RangePolicy<ExecSpace>(0, num_surface_triangles()), sums);
+  gather_into(cell_sums_, cell_sums_scatter_);
 }
 
 template <class ExecSpace>
@@ -143,33 +156,31 @@ double BasicCellPopulation<ExecSpace>::run_force_kernel(const char* label) {
     Kokkos::parallel_reduce(label, policy, forces, energy);
   else
     Kokkos::parallel_for(label, policy, forces);
-  if (area_constraint_) energy += add_area_constraint_forces<Tag>();
+  if (global_constraints_) energy += add_global_constraint_forces<Tag>();
   gather_into(internal_forces_, force_scatter_);
   return energy;
 }
 
 template <class ExecSpace>
 template <class Tag>
-double BasicCellPopulation<ExecSpace>::add_area_constraint_forces() {
-  ProfilingRegion region("rouleau::CellPopulation::area_constraint");
-  // A_c, then T_c = k_A (A_c − A0_c) / A0_c (and E_A), then f_a −= T_c ∂A_c/∂x_a.
-  cell_area_scatter_.reset();
-  const Kokkos::RangePolicy<ExecSpace> triangles(0, num_surface_triangles());
-  CellAreaFunctor<CellScatter> areas{positions_, surface_triangles_, triangle_cell_, cell_area_scatter_};
-  Kokkos::parallel_for("rouleau::CellPopulation::cell_areas", triangles, areas);
-  gather_into(cell_areas_, cell_area_scatter_);
-  AreaTensionFunctor tensions{cell_areas_, reference_areas_, area_moduli_, area_tensions_};
+double BasicCellPopulation<ExecSpace>::add_global_constraint_forces() {
+  ProfilingRegion region("rouleau::CellPopulation::global_constraints");
+  // A_c and V_c, then T_c, P_c (and E_A + E_V), then f_a −= T_c ∂A_c/∂x_a + P_c ∂V_c/∂x_a.
+  compute_surface_sums(positions_);
+  GlobalConstraintFunctor multipliers{cell_sums_,     reference_areas_, reference_volumes_, area_moduli_,
+                                      volume_moduli_, area_tensions_,   volume_pressures_};
   const Kokkos::RangePolicy<ExecSpace, Tag> cells(0, num_cells_);
   double energy = 0.0;
   if constexpr (std::is_same_v<Tag, ForcesAndEnergy>) {
-    Kokkos::parallel_reduce("rouleau::CellPopulation::area_tensions_and_energy", cells, tensions, energy);
-    area_energy_ = energy;
+    Kokkos::parallel_reduce("rouleau::CellPopulation::constraint_multipliers_and_energy", cells, multipliers, energy);
+    constraint_energy_ = energy;
   } else {
-    Kokkos::parallel_for("rouleau::CellPopulation::area_tensions", cells, tensions);
+    Kokkos::parallel_for("rouleau::CellPopulation::constraint_multipliers", cells, multipliers);
   }
-  AreaConstraintForceFunctor<Scatter> forces{positions_, surface_triangles_, triangle_cell_, area_tensions_,
-                                             force_scatter_};
-  Kokkos::parallel_for("rouleau::CellPopulation::area_constraint_forces", triangles, forces);
+  GlobalConstraintForceFunctor<Scatter> forces{positions_,     surface_triangles_, triangle_cell_, cell_first_node_,
+                                               area_tensions_, volume_pressures_,  force_scatter_};
+  Kokkos::parallel_for("rouleau::CellPopulation::global_constraint_forces",
+                       Kokkos::RangePolicy<ExecSpace>(0, num_surface_triangles()), forces);
   return energy;
 }
 
@@ -186,12 +197,7 @@ double BasicCellPopulation<ExecSpace>::compute_internal_forces_and_energy() {
 template <class ExecSpace>
 std::vector<CellMeasures> BasicCellPopulation<ExecSpace>::measures() const {
   ProfilingRegion region("rouleau::CellPopulation::measures");
-  cell_sums_scatter_.reset();
-  CellSurfaceSumsFunctor<CellSumsScatter> sums{positions_, surface_triangles_, triangle_cell_, cell_first_node_,
-                                               cell_sums_scatter_};
-  Kokkos::parallel_for("rouleau::CellPopulation::measures",
-                       Kokkos::RangePolicy<ExecSpace>(0, num_surface_triangles()), sums);
-  gather_into(cell_sums_, cell_sums_scatter_);
+  compute_surface_sums(positions_);
   // The origins o of the sums (each cell's first node), gathered on the device.
   auto positions = positions_;
   auto first_node = cell_first_node_;

@@ -2,7 +2,8 @@
 // All cells of a scene on the device: their tetrahedral meshes concatenated, reference
 // data computed once (total-Lagrangian), current positions and velocities, the elastic
 // internal forces (neo-Hookean, optionally strain-hardening, kernels/neo_hookean.hpp;
-// plus the optional global area constraint of each cell, kernels/area_constraint.hpp),
+// plus the optional global area and volume constraints of each cell,
+// kernels/global_constraints.hpp),
 // and per-cell measures from the outer surfaces.
 #include <Kokkos_Core.hpp>
 #include <Kokkos_ScatterView.hpp>
@@ -12,13 +13,13 @@
 
 #include "geometry/cell_mesh.hpp"
 #include "io/xdmf_writer.hpp"
-#include "kernels/area_constraint.hpp"
+#include "kernels/global_constraints.hpp"
 #include "kernels/neo_hookean.hpp"
 
 namespace rouleau {
 
 // One cell to place: its mesh in the body frame, x_world = center + rotation · x_body,
-// its material and its area modulus.
+// its material and its area and volume moduli.
 struct PlacedCell {
   const CellMesh* mesh = nullptr;
   std::array<std::array<double, 3>, 3> rotation{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
@@ -27,6 +28,9 @@ struct PlacedCell {
   // k_A of the global area constraint E_A = k_A (A − A0)² / (2 A0) on the outer surface
   // [pN/μm]; 0 = off (the paper's law).
   double area_modulus = 0.0;
+  // k_V of the global volume constraint E_V = k_V (V − V0)² / (2 V0) on the volume the
+  // outer surface encloses [Pa]; 0 = off (the paper's law).
+  double volume_modulus = 0.0;
   int kind = 0;  // index of the cell's kind (for output)
 };
 
@@ -81,19 +85,22 @@ class BasicCellPopulation {
   const std::vector<int>& cell_node_count() const { return cell_node_count_host_; }
 
   // internal_forces() = f, f_a = −Σ_e V0 P(F_e) ∇N_a (paper eqs. 2, 9, 10) at the
-  // current positions, plus −T_c ∂A_c/∂x_a of the cells with an area constraint.
+  // current positions, plus −T_c ∂A_c/∂x_a − P_c ∂V_c/∂x_a of the cells with global
+  // constraints.
   void compute_internal_forces();
-  // The same, returning the total elastic energy Σ_e V0 W(F_e) + E_A [pN·μm].
+  // The same, returning the total elastic energy Σ_e V0 W(F_e) + E_A + E_V [pN·μm].
   double compute_internal_forces_and_energy();
 
-  // The global area constraint (kernels/area_constraint.hpp): whether any cell has one,
-  // k_A and A0 per cell, the tensions T_c of the last force evaluation [pN/μm] (zero for
-  // cells without one), and E_A of the last compute_internal_forces_and_energy() [pN·μm].
-  bool has_area_constraint() const { return area_constraint_; }
-  const Kokkos::View<double*>& area_moduli() const { return area_moduli_; }
+  // The global area and volume constraints (kernels/global_constraints.hpp): whether any
+  // cell has one, A0 and V0 per cell, the tensions T_c [pN/μm] and pressures P_c [Pa] of
+  // the last force evaluation (zero where off), and E_A + E_V of the last
+  // compute_internal_forces_and_energy() [pN·μm].
+  bool has_global_constraints() const { return global_constraints_; }
   const Kokkos::View<double*>& reference_areas() const { return reference_areas_; }
+  const Kokkos::View<double*>& reference_volumes() const { return reference_volumes_; }
   const Kokkos::View<double*>& area_tensions() const { return area_tensions_; }
-  double area_energy() const { return area_energy_; }
+  const Kokkos::View<double*>& volume_pressures() const { return volume_pressures_; }
+  double constraint_energy() const { return constraint_energy_; }
 
   // Per-cell volume, area and centroid at the current positions (a small host copy).
   std::vector<CellMeasures> measures() const;
@@ -112,9 +119,12 @@ class BasicCellPopulation {
   // (0 for ForcesOnly).
   template <class Tag>
   double run_force_kernel(const char* label);
-  // Adds the area-constraint forces into force_scatter_; returns E_A (0 for ForcesOnly).
+  // Adds the global-constraint forces into force_scatter_; returns E_A + E_V (0 for
+  // ForcesOnly).
   template <class Tag>
-  double add_area_constraint_forces();
+  double add_global_constraint_forces();
+  // The surface sums (CellSurfaceSum) of every cell at `positions` into cell_sums_.
+  void compute_surface_sums(const NodeVectors& positions) const;
 
   int num_cells_ = 0;
   NodeVectors reference_positions_, positions_, velocities_, internal_forces_;
@@ -127,15 +137,16 @@ class BasicCellPopulation {
   Kokkos::View<int*> triangle_cell_, cell_first_node_;
   Kokkos::View<double*> surface_area_weights_;
   Kokkos::View<double* [5]> cell_sums_;
-  Kokkos::View<double*> area_moduli_, reference_areas_, cell_areas_, area_tensions_;  // per cell
-  bool area_constraint_ = false;
-  double area_energy_ = 0.0;
+  // Per cell: k_A, k_V, A0, V0, T_c, P_c.
+  Kokkos::View<double*> area_moduli_, volume_moduli_, reference_areas_, reference_volumes_, area_tensions_,
+      volume_pressures_;
+  bool global_constraints_ = false;
+  double constraint_energy_ = 0.0;
   NodeVectors cell_origins_;  // the point each cell's surface sums are taken from
   std::vector<int> cell_first_node_host_, cell_node_count_host_;
   // Persistent scatter buffers (per-thread copies on CPUs, the atomic target on GPUs).
   mutable Scatter force_scatter_;
   mutable CellSumsScatter cell_sums_scatter_;
-  CellScatter cell_area_scatter_;
 };
 
 using CellPopulation = BasicCellPopulation<Kokkos::DefaultExecutionSpace>;

@@ -68,6 +68,7 @@ CaseCells make_case_cells(const CaseConfig& config, const std::string& mesh_cach
     cell.material =
         NeoHookeanMaterial::from_moduli(kind->shear_modulus, kind->bulk_modulus, kind->strain_hardening_ratio);
     cell.area_modulus = kind->area_modulus;
+    cell.volume_modulus = kind->volume_modulus;
     cell.kind = static_cast<int>(kind - config.cell_kinds.data());
     placed.push_back(cell);
     cell_kind.push_back(cell.kind);

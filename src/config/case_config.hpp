@@ -121,14 +121,17 @@ struct CellKindConfig {
   double poisson_ratio = 0.45;        // ν, the one that gives K from G (reported)
   double density = 1.1e-9;            // [pN·s²/μm⁴]   key density_kg_m3 (RBC: 1100 kg/m³)
   // Options beyond the paper's law (0 = off, the default), for a membrane that hardens
-  // and keeps its area (Mills et al. 2004's stretch; kernels/neo_hookean.hpp,
-  // kernels/area_constraint.hpp):
+  // and keeps its area (Mills et al. 2004's stretch) and a cell that keeps the volume of
+  // the fluid it encloses (kernels/neo_hookean.hpp, kernels/global_constraints.hpp):
   // C3 / G of the strain-hardening term W += C3 (J1 − 3)³ (Mills et al.: 1/30)
   //                                                          key strain_hardening_ratio
   double strain_hardening_ratio = 0.0;
   // k_A of the global area constraint E_A = k_A (A − A0)² / (2 A0) on each cell's outer
   // surface [pN/μm]                                          key area_modulus_pN_um
   double area_modulus = 0.0;
+  // k_V of the global volume constraint E_V = k_V (V − V0)² / (2 V0) on the volume each
+  // cell's outer surface encloses [Pa]                       key volume_modulus_Pa
+  double volume_modulus = 0.0;
   // The Morse well depth of this kind relative to [interaction]'s: the depth between
   // kinds a and b is De √(f_a f_b) unless an [[interaction.pair]] sets it (sickle: 5,
   // "stickier", DESIGN.md).                                  key morse_well_depth_factor

@@ -567,7 +567,7 @@ const std::vector<std::string_view> cell_kind_keys{
     "shape", "body", "diameter_um", "length_um", "width_um", "thickness_um", "arc_radius_um",
     "shell_thickness_um", "resolution", "mesh_size_um", "shear_modulus_Pa", "membrane_shear_modulus_pN_um",
     "bulk_modulus_Pa", "poisson_ratio", "density_kg_m3", "morse_well_depth_factor", "strain_hardening_ratio",
-    "area_modulus_pN_um"};
+    "area_modulus_pN_um", "volume_modulus_Pa"};
 // The keys that apply to a shell body only.
 const std::vector<std::string_view> shell_body_keys{"shell_thickness_um", "membrane_shear_modulus_pN_um"};
 
@@ -681,6 +681,7 @@ void read_cell_kind(const TableReader& reader, CellKindConfig& kind) {
   assign(kind.morse_well_depth_factor, reader.number("morse_well_depth_factor", Range::at_least(0)));
   assign(kind.strain_hardening_ratio, reader.number("strain_hardening_ratio", Range::at_least(0)));
   assign(kind.area_modulus, reader.number("area_modulus_pN_um", Range::at_least(0)));
+  assign(kind.volume_modulus, reader.number("volume_modulus_Pa", Range::at_least(0)));
   check_cell_body(reader, kind);
 }
 

@@ -112,6 +112,7 @@ void write_cell_kind(TomlWriter& toml_file, const CellKindConfig& kind) {
   toml_file.key("strain_hardening_ratio", kind.strain_hardening_ratio,
                 "C3/G of W += C3 (J1 − 3)³; 0 = off (Mills et al. 2004: 1/30)");
   toml_file.key("area_modulus_pN_um", kind.area_modulus, "k_A of E_A = k_A (A − A0)² / (2 A0); 0 = off");
+  toml_file.key("volume_modulus_Pa", kind.volume_modulus, "k_V of E_V = k_V (V − V0)² / (2 V0); 0 = off");
 }
 
 void write_morse(TomlWriter& toml_file, const MorseConfig& morse) {

@@ -86,14 +86,20 @@ double area_mode_shape_factor(CellShape shape) { return shape == CellShape::sphe
 // tangent modulus to G [1 + 30 r (J1 − 3)²], bounded here by (J1 − 3) ≤ 1. The global area
 // constraint k_A adds a cell-sized normal mode (the cavity blocks its uniform part) of
 // stiffness k_A ⟨4(H − H̄)²⟩ per area and mobility R/(4μ), i.e. a grid-scale modulus of
-// k_A κ h_f / R (κ: area_mode_shape_factor).
+// k_A κ h_f / R (κ: area_mode_shape_factor). The global volume constraint k_V is left
+// out, and the reason says so: its uniform-inflation mode is held back by the enclosed
+// fluid as far as the fluid mesh resolves the cell, which no formula here knows (README.md,
+// "The coupling": stable for the capsule at a/h_f 2.7 and 5.5 with k_V = 50 Pa, divergent
+// for a red cell at h_f = 1 μm).
 void derive_stable_step(const CaseConfig& config, DerivedQuantities& derived) {
   if (config.cells.empty() || config.time.mode == TimeMode::steady) return;
   const double h_f = smallest_fluid_element(config.domain);
   double stiffest = 0.0;
   std::string stiffest_kind;
+  bool volume_constraint = false;
   for (const CellPlacement& cell : config.cells) {
     const CellKindConfig& kind = *find_cell_kind(config, cell.kind);
+    volume_constraint = volume_constraint || kind.volume_modulus > 0.0;
     const double layer = kind.body == CellBody::shell ? kind.shell_thickness : h_f;
     const double radius = 0.5 * (kind.shape == CellShape::sickle ? kind.width : kind.diameter);
     const double effective_modulus = kind.shear_modulus * layer * (1.0 + 30.0 * kind.strain_hardening_ratio) +
@@ -108,7 +114,8 @@ void derive_stable_step(const CaseConfig& config, DerivedQuantities& derived) {
   derived.stable_dt_reason = "C mu h_f / G_eff = " + formatted("%g", C) + " x " +
                              formatted("%g", config.fluid.viscosity) + " Pa s x " + formatted("%g", h_f) +
                              " um / " + formatted("%g", stiffest) + " pN/um (kind " + stiffest_kind +
-                             ", the stiffest membrane; smallest fluid element h_f)";
+                             ", the stiffest membrane; smallest fluid element h_f)" +
+                             (volume_constraint ? "; it leaves out the volume constraint (volume_modulus_Pa)" : "");
 }
 
 }  // namespace

@@ -39,11 +39,7 @@ int run_command(const rouleau::CommandLine& command_line) {
   const rouleau::CaseConfig config = rouleau::load_case(command_line.case_path, command_line.overrides);
   rouleau::derive_quantities(config);
   KokkosSession kokkos("rouleau", command_line.threads);
-  rouleau::RunOptions options;
-  options.output_dir = command_line.output_dir;
-  options.explain = command_line.explain;
-  options.progress = command_line.progress;
-  return rouleau::run_case(config, options);
+  return rouleau::run_case(config, rouleau::run_options(command_line));
 }
 
 int info_command(const rouleau::CommandLine& command_line) {

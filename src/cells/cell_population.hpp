@@ -49,8 +49,6 @@ class BasicCellPopulation {
                                                     typename ExecSpace::device_type>;
   using CellSumsScatter = Kokkos::Experimental::ScatterView<double* [5], typename NodeVectors::array_layout,
                                                             typename ExecSpace::device_type>;
-  using CellScatter = Kokkos::Experimental::ScatterView<double*, typename Kokkos::View<double*>::array_layout,
-                                                        typename ExecSpace::device_type>;
 
   // Places the cells (reference = current configuration at rest, velocities zero).
   // Throws std::invalid_argument when a mesh has an inverted or degenerate tetrahedron or

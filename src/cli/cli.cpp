@@ -16,7 +16,6 @@ namespace {
 
 constexpr int usage_error_exit_code = static_cast<int>(ExitCode::bad_input);
 
-
 // The options `run` and a case driver share: --out, --explain, --no-progress.
 void add_run_options(CLI::App& command, CommandLine& result, bool& no_progress) {
   command.add_option("--out", result.output_dir, "Output folder")->type_name("DIR")->capture_default_str();

@@ -1,7 +1,5 @@
 #include "run/run_case.hpp"
 
-#include "cli/cli.hpp"
-
 #include <Kokkos_Core.hpp>
 #include <chrono>
 #include <algorithm>
@@ -223,9 +221,7 @@ CaseDriverRun run_case_driver(int argc, char** argv, const std::string& default_
     run.status = command_line.exit_code;
     return run;
   }
-  run.options.output_dir = command_line.output_dir;
-  run.options.explain = command_line.explain;
-  run.options.progress = command_line.progress;
+  run.options = run_options(command_line);
   run.status = run_reporting_errors(
       [&] {
         run.config = load_case(command_line.case_path, command_line.overrides);

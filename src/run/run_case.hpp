@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "cli/cli.hpp"
 #include "config/case_config.hpp"
 
 namespace rouleau {
@@ -14,6 +15,15 @@ struct RunOptions {
   bool explain = false;            // --explain: print the stage list with reasons, then stop
   bool progress = true;            // show the progress line
 };
+
+// The run options a command line asks for (`rouleau run`, a case driver).
+inline RunOptions run_options(const CommandLine& command_line) {
+  RunOptions options;
+  options.output_dir = command_line.output_dir;
+  options.explain = command_line.explain;
+  options.progress = command_line.progress;
+  return options;
+}
 
 // Builds the scene's stages, runs the time loop, writes outputs into options.output_dir.
 // Returns the process exit code (ExitCode); throws InputError for bad input found late.

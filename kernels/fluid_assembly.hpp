@@ -103,7 +103,7 @@ struct FluidGradientProjectionFunctor {
 
 // Geometry at each quadrature point from scaled nodal coordinates:
 //   J_dk = Σ_a x_a,d ∂N_a/∂ξ_k,  store (J⁻¹)_kd = ∂ξ_k/∂x_d and det J · w_q;
-//   element size h = (Σ_q det J w_q)^(1/3). Counts elements with det J ≤ 0.
+//   element size h = Element::size_from_volume(Σ_q det J w_q). Counts elements with det J ≤ 0.
 template <class Element>
 struct FluidGeometryFunctor {
   Kokkos::View<const double* [3]> coordinates;
@@ -143,7 +143,7 @@ struct FluidGeometryFunctor {
       geometry(e, q, 9) = dv;
       volume += dv;
     }
-    element_size(e) = cbrt(volume);
+    element_size(e) = Element::size_from_volume(volume);
   }
 };
 

@@ -3,6 +3,7 @@
 // rule. Node order is VTK/XDMF "Hexahedron": the bottom face (ζ=-1) counter-clockwise
 // from (-1,-1), then the top face (ζ=+1) in the same order.
 #include <Kokkos_Core.hpp>
+#include <cmath>
 
 namespace rouleau {
 
@@ -38,6 +39,8 @@ struct Hex8 {
   KOKKOS_INLINE_FUNCTION static void quadrature_point(int q, double xi[3]) {
     for (int d = 0; d < 3; ++d) xi[d] = point(q, d);
   }
+  // The element size h in the stabilization: the edge of the cube of the same volume.
+  KOKKOS_INLINE_FUNCTION static double size_from_volume(double volume) { return cbrt(volume); }
 };
 
 }  // namespace rouleau

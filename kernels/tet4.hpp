@@ -1,6 +1,7 @@
 #pragma once
-// The 4-node (linear) tetrahedron in total-Lagrangian form (paper eqs. 9–10): its
-// reference data, computed once, and the deformation gradient.
+// The 4-node (linear) tetrahedron: the fluid element of Gmsh vessel meshes (shape
+// functions and quadrature, as Hex8), and the solid element in total-Lagrangian form
+// (paper eqs. 9–10): its reference data, computed once, and the deformation gradient.
 //
 // With the reference edge matrix D_m = [X1−X0, X2−X0, X3−X0] (columns), the shape
 // functions N1 = ξ, N2 = η, N3 = ζ, N0 = 1 − ξ − η − ζ have the constant gradients
@@ -8,6 +9,7 @@
 // the reference volume is V0 = det(D_m)/6, and the deformation gradient is constant:
 //   F = Σ_a x_a ⊗ ∇_X N_a = D_s D_m⁻¹,  D_s = [x1−x0, x2−x0, x3−x0].
 #include <Kokkos_Core.hpp>
+#include <cmath>
 
 #include "kernels/mat3.hpp"
 
@@ -15,6 +17,32 @@ namespace rouleau {
 
 struct Tet4 {
   static constexpr int nodes = 4;
+
+  // ---- as a fluid element (kernels/fluid_element.hpp), on the reference tetrahedron
+  // ξ, η, ζ ≥ 0, ξ + η + ζ ≤ 1 with N0 = 1 − ξ − η − ζ, N1 = ξ, N2 = η, N3 = ζ and the
+  // symmetric 4-point rule of degree 2 (Hammer, Marlowe & Stroud 1956): the points
+  // (b, b, b), (a, b, b), (b, a, b), (b, b, a) with a = (5 + 3√5)/20, b = (5 − √5)/20,
+  // weight 1/24 each (the reference volume is 1/6). Exact for the mass matrix N_a N_b.
+  static constexpr int quadrature_points = 4;
+  KOKKOS_INLINE_FUNCTION static void quadrature_point(int q, double xi[3]) {
+    constexpr double a = 0.58541019662496845446, b = 0.13819660112501051518;
+    for (int d = 0; d < 3; ++d) xi[d] = q == d + 1 ? a : b;
+  }
+  KOKKOS_INLINE_FUNCTION static double weight(int) { return 1.0 / 24.0; }
+  KOKKOS_INLINE_FUNCTION static double shape(int a, const double xi[3]) {
+    return a == 0 ? 1.0 - xi[0] - xi[1] - xi[2] : xi[a - 1];
+  }
+  // ∂N_a/∂ξ_d: constant.
+  KOKKOS_INLINE_FUNCTION static double shape_gradient(int a, int d, const double*) {
+    return a == 0 ? -1.0 : (a == d + 1 ? 1.0 : 0.0);
+  }
+  // The element size h in the stabilization: the edge of the regular tetrahedron of the
+  // same volume, h = (6√2 V)^(1/3) (a cube's edge for the hexahedron, Hex8).
+  KOKKOS_INLINE_FUNCTION static double size_from_volume(double volume) {
+    return cbrt(8.48528137423857029 * volume);
+  }
+
+  // ---- as a solid element (total-Lagrangian)
 
   // D_m of the points p[a][i] (node a, component i).
   KOKKOS_INLINE_FUNCTION static Mat3 edge_matrix(const double p[4][3]) {

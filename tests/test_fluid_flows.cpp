@@ -137,9 +137,12 @@ struct ManufacturedSolution {
 };
 
 // Solves the manufactured problem on n³ elements; returns relative velocity and pressure errors.
+// On hexahedra, or on tetrahedra (the same nodes, each hexahedron cut in six).
 std::pair<double, double> manufactured_errors(int n, double reynolds, bool stokes, int& gmres_iterations,
-                                              PreconditionerType preconditioner = PreconditionerType::ilu0) {
-  const FluidMesh mesh = make_box_mesh({0, 0, 0}, {1, 1, 1}, {n, n, n}, {1, 1, 1}, {false, false, false});
+                                              PreconditionerType preconditioner = PreconditionerType::ilu0,
+                                              FluidElementType element = FluidElementType::hexahedron8) {
+  FluidMesh mesh = make_box_mesh({0, 0, 0}, {1, 1, 1}, {n, n, n}, {1, 1, 1}, {false, false, false});
+  if (element == FluidElementType::tetrahedron4) mesh = split_into_tetrahedra(mesh);
   const ManufacturedSolution exact{reynolds};
   // Newton to 1e-8 of the initial residual: five orders below the discretization error.
   SolverConfig settings = tight_solver();
@@ -167,12 +170,13 @@ std::pair<double, double> manufactured_errors(int n, double reynolds, bool stoke
   return {e.velocity / e.velocity_norm, e.pressure / e.pressure_norm};
 }
 
-void check_manufactured_convergence(const char* name, double reynolds, bool stokes) {
+void check_manufactured_convergence(const char* name, double reynolds, bool stokes,
+                                    FluidElementType element = FluidElementType::hexahedron8) {
   std::vector<std::pair<double, double>> errors;
   const std::vector<int> sizes{8, 16, 24};
   for (int n : sizes) {
     int iterations = 0;
-    errors.push_back(manufactured_errors(n, reynolds, stokes, iterations));
+    errors.push_back(manufactured_errors(n, reynolds, stokes, iterations, PreconditionerType::ilu0, element));
     std::printf("%s n = %2d: relative L2 error velocity %.3e, pressure %.3e (%d GMRES iterations)", name, n,
                 errors.back().first, errors.back().second, iterations);
     const size_t k = errors.size() - 1;
@@ -205,6 +209,21 @@ TEST(FluidFlows, ManufacturedStokesSolutionConverges) {
 
 TEST(FluidFlows, ManufacturedNavierStokesSolutionConverges) {
   check_manufactured_convergence("Navier-Stokes MMS (Re = 10)", 10.0, false);
+}
+
+// The tetrahedral element (vessel meshes) through the same kernels and solver, on the
+// same nodes: the same rates are required. Its pressure is much less accurate than the
+// hexahedra's (relative 0.35 against 0.006 at n = 24): along the box's edges Kuhn's cut
+// leaves tetrahedra with all four nodes on the Dirichlet boundary, whose pressure only the
+// stabilization sets, with a viscous term from one-sided projected gradients. The
+// velocity is as accurate as on hexahedra.
+TEST(FluidFlows, ManufacturedStokesSolutionConvergesOnTetrahedra) {
+  check_manufactured_convergence("Stokes MMS on tetrahedra", 0.0, true, FluidElementType::tetrahedron4);
+}
+
+TEST(FluidFlows, ManufacturedNavierStokesSolutionConvergesOnTetrahedra) {
+  check_manufactured_convergence("Navier-Stokes MMS (Re = 10) on tetrahedra", 10.0, false,
+                                 FluidElementType::tetrahedron4);
 }
 
 }  // namespace

@@ -15,19 +15,26 @@
 namespace rouleau {
 namespace {
 
-// A tiny graded, partly periodic box with walls and a moving lid, in a Navier–Stokes
-// transient setting with O(1) Reynolds number so every term of the element is active.
-// ExecSpace runs the operator's loops (the default space, or each host backend).
+// A tiny graded, partly periodic box of hexahedra or of tetrahedra (the hexahedra cut in
+// six), with walls, a moving lid and a traction side.
+FluidMesh tiny_mesh(FluidElementType type) {
+  FluidMesh mesh = make_box_mesh({0.0, 0.0, 0.0}, {2.0, 1.0, 1.5}, {3, 3, 2}, {1.0, 2.0, 1.0}, {true, false, false});
+  return type == FluidElementType::tetrahedron4 ? split_into_tetrahedra(mesh) : mesh;
+}
+
+// The tiny box in a Navier–Stokes transient setting with O(1) Reynolds number so every
+// term of the element is active. ExecSpace runs the operator's loops (the default space,
+// or each host backend).
 template <class ExecSpace>
 struct TinyProblemOn {
-  FluidMesh mesh = make_box_mesh({0.0, 0.0, 0.0}, {2.0, 1.0, 1.5}, {3, 3, 2}, {1.0, 2.0, 1.0}, {true, false, false});
+  FluidMesh mesh;
   BasicFluidOperator<ExecSpace> op{mesh, 1.0};
   Vector state{"state", static_cast<size_t>(mesh.num_unknowns())};
   Vector direction{"direction", static_cast<size_t>(mesh.num_unknowns())};
   Vector history{"history", static_cast<size_t>(mesh.num_unknowns())};
   Vector force{"force", static_cast<size_t>(mesh.num_unknowns())};
 
-  explicit TinyProblemOn(int convection, int viscous_reconstruction = 0) {
+  TinyProblemOn(FluidElementType type, int convection, int viscous_reconstruction = 0) : mesh(tiny_mesh(type)) {
     FluidCoefficients c;
     c.viscous_reconstruction = viscous_reconstruction;
     c.reynolds = 3.0;
@@ -80,6 +87,15 @@ struct TinyProblemOn {
 
 using TinyProblem = TinyProblemOn<Kokkos::DefaultExecutionSpace>;
 
+// Every test runs on both element types, through the same kernels.
+class FluidOperatorOn : public ::testing::TestWithParam<FluidElementType> {};
+INSTANTIATE_TEST_SUITE_P(Elements, FluidOperatorOn,
+                         ::testing::Values(FluidElementType::hexahedron8, FluidElementType::tetrahedron4),
+                         [](const ::testing::TestParamInfo<FluidElementType>& info) {
+                           return info.param == FluidElementType::tetrahedron4 ? std::string("Tet4")
+                                                                               : std::string("Hex8");
+                         });
+
 Eigen::VectorXd to_eigen(const Vector& v) {
   auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), v);
   Eigen::VectorXd e(h.extent(0));
@@ -87,24 +103,24 @@ Eigen::VectorXd to_eigen(const Vector& v) {
   return e;
 }
 
-TEST(FluidOperator, JacobianActionMatchesAssembledMatrix) {
+TEST_P(FluidOperatorOn, JacobianActionMatchesAssembledMatrix) {
   for (int convection : {0, 1}) {
-    TinyProblem p(convection);
+    TinyProblem p(GetParam(), convection);
     Vector action("action", p.mesh.num_unknowns());
     p.op.jacobian_action(p.state, p.direction, action);
     const Eigen::VectorXd expected = p.assemble() * to_eigen(p.direction);
     const double rel = (to_eigen(action) - expected).norm() / expected.norm();
-    std::printf("convection=%d: matrix-free vs assembled, relative difference %.2e\n", convection, rel);
+    std::printf("%s convection=%d: matrix-free vs assembled, relative difference %.2e\n", GetParam() == FluidElementType::tetrahedron4 ? "tet4" : "hex8", convection, rel);
     EXPECT_LT(rel, 1e-12);
   }
 }
 
-TEST(FluidOperator, JacobianActionMatchesFiniteDifferenceOfResidual) {
+TEST_P(FluidOperatorOn, JacobianActionMatchesFiniteDifferenceOfResidual) {
   // (R(U + εδ; τ(U)) − R(U − εδ; τ(U))) / 2ε = J(U)δ + O(ε²), τ frozen at U; with and
   // without the projected viscous term in the strong residual (its coupling beyond the
   // element is in the Jacobian action too).
   for (int reconstruction : {0, 1}) {
-    TinyProblem p(1, reconstruction);
+    TinyProblem p(GetParam(), 1, reconstruction);
     const int n = p.mesh.num_unknowns();
     Vector action("action", n), plus("plus", n), minus("minus", n), shifted("shifted", n), fd("fd", n);
     p.op.jacobian_action(p.state, p.direction, action);
@@ -129,9 +145,9 @@ TEST(FluidOperator, JacobianActionMatchesFiniteDifferenceOfResidual) {
   }
 }
 
-TEST(FluidOperator, ProjectedGradientIsExactForLinearFields) {
+TEST_P(FluidOperatorOn, ProjectedGradientIsExactForLinearFields) {
   // The lumped projection of ∇u reproduces a constant gradient at every node.
-  TinyProblem p(1);
+  TinyProblem p(GetParam(), 1);
   auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.mesh.coordinates);
   // u = A x with A a constant matrix (periodic in x, so no x dependence: A(:,0) = 0).
   const double A[3][3] = {{0, 0.5, -1.0}, {0, 2.0, 0.25}, {0, -0.75, 1.5}};
@@ -151,8 +167,8 @@ TEST(FluidOperator, ProjectedGradientIsExactForLinearFields) {
   testing::expectAllClose(gradient, expected, 1e-12, 1e-12);
 }
 
-TEST(FluidOperator, LinearActionEqualsJacobianActionInStokesLimit) {
-  TinyProblem p(0);
+TEST_P(FluidOperatorOn, LinearActionEqualsJacobianActionInStokesLimit) {
+  TinyProblem p(GetParam(), 0);
   const int n = p.mesh.num_unknowns();
   Vector jacobian("jacobian", n), linear("linear", n);
   p.op.jacobian_action(p.state, p.direction, jacobian);
@@ -160,8 +176,8 @@ TEST(FluidOperator, LinearActionEqualsJacobianActionInStokesLimit) {
   testing::expectAllClose(linear, jacobian, 1e-13, 1e-13);
 }
 
-TEST(FluidOperator, DiagonalBlocksMatchAssembledMatrix) {
-  TinyProblem p(1);
+TEST_P(FluidOperatorOn, DiagonalBlocksMatchAssembledMatrix) {
+  TinyProblem p(GetParam(), 1);
   Vector blocks("blocks", 16 * p.mesh.num_dof_nodes);
   p.op.diagonal_blocks(p.state, blocks);
   const Eigen::SparseMatrix<double> A = p.assemble();
@@ -174,9 +190,9 @@ TEST(FluidOperator, DiagonalBlocksMatchAssembledMatrix) {
   testing::expectAllClose(blocks, expected, 1e-12, 1e-12);
 }
 
-TEST(FluidOperator, CrsAssemblyMatchesElementAssembly) {
+TEST_P(FluidOperatorOn, CrsAssemblyMatchesElementAssembly) {
   // The CRS Jacobian for assembled preconditioners against the element-matrix assembly.
-  TinyProblem p(1);
+  TinyProblem p(GetParam(), 1);
   const FluidMatrixGraph graph = build_fluid_matrix_graph(p.mesh);
   Vector values("values", graph.entries.extent(0));
   p.op.assemble_jacobian(p.state, graph, values);
@@ -197,11 +213,11 @@ TEST(FluidOperator, CrsAssemblyMatchesElementAssembly) {
 }
 
 #if defined(KOKKOS_ENABLE_SERIAL) && defined(KOKKOS_ENABLE_OPENMP) && !defined(KOKKOS_ENABLE_CUDA)
-TEST(FluidOperator, SerialAndOpenMPBackendsAgreeToRoundOff) {
+TEST_P(FluidOperatorOn, SerialAndOpenMPBackendsAgreeToRoundOff) {
   // Every pass of the operator on the Serial and the OpenMP backend, same inputs: the
   // only difference allowed is the order of floating-point sums (scatter duplication).
-  TinyProblemOn<Kokkos::Serial> serial(1, 1);
-  TinyProblemOn<Kokkos::OpenMP> openmp(1, 1);
+  TinyProblemOn<Kokkos::Serial> serial(GetParam(), 1, 1);
+  TinyProblemOn<Kokkos::OpenMP> openmp(GetParam(), 1, 1);
   const int n = serial.mesh.num_unknowns();
   auto compare = [](const char* what, const Vector& a, const Vector& b) {
     const double difference = testing::relativeDifference(a, b);
@@ -229,19 +245,20 @@ TEST(FluidOperator, SerialAndOpenMPBackendsAgreeToRoundOff) {
   serial.op.assemble_jacobian(serial.state, graph, ma);
   openmp.op.assemble_jacobian(openmp.state, graph, mb);
   compare("assemble_jacobian", ma, mb);
-  TinyProblemOn<Kokkos::Serial> serial_stokes(0, 1);
-  TinyProblemOn<Kokkos::OpenMP> openmp_stokes(0, 1);
+  TinyProblemOn<Kokkos::Serial> serial_stokes(GetParam(), 0, 1);
+  TinyProblemOn<Kokkos::OpenMP> openmp_stokes(GetParam(), 0, 1);
   serial_stokes.op.linear_action(serial_stokes.direction, a);
   openmp_stokes.op.linear_action(openmp_stokes.direction, b);
   compare("linear_action", a, b);
 }
 #endif
 
-TEST(FluidOperator, InvertedElementIsRejected) {
+TEST_P(FluidOperatorOn, InvertedElementIsRejected) {
   FluidMesh mesh = make_box_mesh({0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {1, 1, 1}, {false, false, false});
   auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
   x(13, 0) = 1.8;  // the centre node pushed through the far side
   Kokkos::deep_copy(mesh.coordinates, x);
+  if (GetParam() == FluidElementType::tetrahedron4) mesh = split_into_tetrahedra(mesh);
   EXPECT_THROW(FluidOperator(mesh, 1.0), std::invalid_argument);
 }
 

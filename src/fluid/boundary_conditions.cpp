@@ -46,7 +46,8 @@ FluidBoundaryConditions build_boundary_conditions(const FluidMesh& mesh,
     for (int side = 0; side < 6; ++side)
       if (sides[side].type == pass && (pass != BoundaryType::traction || sides[side].parallel_flow)) apply_side(side);
 
-  // Traction load: for each planar quadrilateral face, ∫ N_a dA = A/4 at its corners.
+  // Traction load: ∫ N_a dA over each planar face, A/4 at a quadrilateral's corners and
+  // A/3 at a triangle's (faces of tetrahedra repeat their last node).
   bc.traction_load = Kokkos::View<double*>("rouleau::FluidBoundaryConditions::traction_load", num_unknowns);
   auto load = Kokkos::create_mirror_view(bc.traction_load);
   bool has_traction = false;
@@ -56,19 +57,21 @@ FluidBoundaryConditions build_boundary_conditions(const FluidMesh& mesh,
     const BoundaryFaces& b = mesh.boundary(side_names[side]);
     const double pressure = sides[side].pressure / scales.pressure;
     for (const auto& f : b.faces) {
-      // Area of a planar quadrilateral: |d1 × d2| / 2 with its diagonals d1, d2 (scaled).
+      const bool triangle = f[3] == f[2];
+      // Area: |d1 × d2| / 2 with d1, d2 the quadrilateral's diagonals or two triangle edges (scaled).
       double d1[3], d2[3];
       for (int d = 0; d < 3; ++d) {
-        d1[d] = (coordinates(f[2], d) - coordinates(f[0], d)) / scales.length;
-        d2[d] = (coordinates(f[3], d) - coordinates(f[1], d)) / scales.length;
+        d1[d] = (coordinates(f[triangle ? 1 : 2], d) - coordinates(f[0], d)) / scales.length;
+        d2[d] = (coordinates(f[triangle ? 2 : 3], d) - coordinates(f[triangle ? 0 : 1], d)) / scales.length;
       }
       const double cx = d1[1] * d2[2] - d1[2] * d2[1], cy = d1[2] * d2[0] - d1[0] * d2[2],
                    cz = d1[0] * d2[1] - d1[1] * d2[0];
       const double area = 0.5 * std::sqrt(cx * cx + cy * cy + cz * cz);
-      for (int corner = 0; corner < 4; ++corner) {
+      const int corners = triangle ? 3 : 4;
+      for (int corner = 0; corner < corners; ++corner) {
         const int dof_node = mesh.dof_node_of_node[f[corner]];
         for (int d = 0; d < 3; ++d)
-          load(fluid_unknowns_per_node * dof_node + d) += -pressure * b.outward_normal[d] * 0.25 * area;
+          load(fluid_unknowns_per_node * dof_node + d) += -pressure * b.outward_normal[d] * area / corners;
       }
     }
   }

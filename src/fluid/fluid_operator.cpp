@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "kernels/fluid_assembly.hpp"
-#include "kernels/hex8.hpp"
+#include "fluid/fluid_element_types.hpp"
 #include "kernels/scatter_sum.hpp"
 #include "run/instantiate.hpp"
 #include "run/profiling_region.hpp"
@@ -14,10 +14,6 @@ namespace rouleau {
 
 namespace {
 
-void require_hexahedra(const FluidMesh& mesh) {
-  if (mesh.element_type != FluidElementType::hexahedron8)
-    throw std::invalid_argument("rouleau::FluidOperator: only 8-node hexahedra are implemented so far");
-}
 // Dirichlet rows: R_d = U_d − g_d for a residual, (Jδ)_d = δ_d for an action. (A free
 // function: CUDA forbids extended lambdas in private member functions.)
 template <class ExecSpace>
@@ -36,16 +32,17 @@ void apply_dirichlet_rows(const Kokkos::View<int*>& dofs, const Kokkos::View<dou
 template <class ExecSpace>
 BasicFluidOperator<ExecSpace>::BasicFluidOperator(const FluidMesh& mesh, double length_scale)
     : mesh_(mesh), length_scale_(length_scale), num_unknowns_(mesh.num_unknowns()) {
-  require_hexahedra(mesh_);
   ProfilingRegion region("rouleau::FluidOperator::setup");
   geometry_ = Kokkos::View<double***>("rouleau::FluidOperator::geometry", mesh_.num_elements,
-                                      Hex8::quadrature_points, geometry_entries);
+                                      fluid_quadrature_points(mesh_.element_type), geometry_entries);
   element_size_ = Kokkos::View<double*>("rouleau::FluidOperator::element_size", mesh_.num_elements);
-  FluidGeometryFunctor<Hex8> geometry{mesh_.coordinates, mesh_.element_nodes, 1.0 / length_scale_, geometry_,
-                                      element_size_};
   int inverted = 0;
-  Kokkos::parallel_reduce("rouleau::FluidOperator::geometry", Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements),
-                          geometry, inverted);
+  visit_fluid_element(mesh_.element_type, [&](auto element) {
+    FluidGeometryFunctor<decltype(element)> geometry{mesh_.coordinates, mesh_.element_nodes, 1.0 / length_scale_,
+                                                     geometry_, element_size_};
+    Kokkos::parallel_reduce("rouleau::FluidOperator::geometry",
+                            Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), geometry, inverted);
+  });
   if (inverted > 0) {
     std::ostringstream msg;
     msg << "rouleau::FluidOperator: the mesh has " << inverted
@@ -61,16 +58,21 @@ BasicFluidOperator<ExecSpace>::BasicFluidOperator(const FluidMesh& mesh, double 
   Scatter& gradient = zeroed_scatter(gradient_scatter_, state_gradient_.extent(0),
                                      "rouleau::FluidOperator::gradient_scatter");
   Scatter mass_scatter("rouleau::FluidOperator::mass_scatter", mesh_.num_dof_nodes);
-  FluidGradientProjectionFunctor<Hex8, Scatter> mass{element_data(), zero, gradient, mass_scatter, true};
-  for_each_element("rouleau::FluidOperator::lumped_mass", mass, mass_scatter, lumped_mass_);
+  visit_fluid_element(mesh_.element_type, [&](auto element) {
+    FluidGradientProjectionFunctor<decltype(element), Scatter> mass{element_data(), zero, gradient, mass_scatter,
+                                                                    true};
+    for_each_element("rouleau::FluidOperator::lumped_mass", mass, mass_scatter, lumped_mass_);
+  });
 }
 
 template <class ExecSpace>
 void BasicFluidOperator<ExecSpace>::project_gradient(const ConstVector& state, const Vector& gradient) const {
   ProfilingRegion region("rouleau::FluidOperator::project_gradient");
   Scatter& scatter = zeroed_scatter(gradient_scatter_, gradient.extent(0), "rouleau::FluidOperator::gradient_scatter");
-  FluidGradientProjectionFunctor<Hex8, Scatter> f{element_data(), state, scatter, scatter, false};
-  for_each_element("rouleau::FluidOperator::project_gradient", f, scatter, gradient);
+  visit_fluid_element(mesh_.element_type, [&](auto element) {
+    FluidGradientProjectionFunctor<decltype(element), Scatter> f{element_data(), state, scatter, scatter, false};
+    for_each_element("rouleau::FluidOperator::project_gradient", f, scatter, gradient);
+  });
   auto mass = lumped_mass_;
   Kokkos::parallel_for(
       "rouleau::FluidOperator::project_gradient::divide", Kokkos::RangePolicy<ExecSpace>(0, gradient.extent(0)),
@@ -112,9 +114,11 @@ void BasicFluidOperator<ExecSpace>::residual(const ConstVector& state, const Con
   ProfilingRegion region("rouleau::FluidOperator::residual");
   if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_);
   Scatter& scatter = zeroed_scatter(unknowns_scatter_, result.extent(0), "rouleau::FluidOperator::unknowns_scatter");
-  FluidResidualFunctor<Hex8, Scatter> f{element_data(), state,       frozen,         history_,
-                                              body_force_,    state_gradient_, scatter};
-  for_each_element("rouleau::FluidOperator::residual", f, scatter, result);
+  visit_fluid_element(mesh_.element_type, [&](auto element) {
+    FluidResidualFunctor<decltype(element), Scatter> f{
+        element_data(), state, frozen, history_, body_force_, state_gradient_, scatter};
+    for_each_element("rouleau::FluidOperator::residual", f, scatter, result);
+  });
   if (nodal_load_.extent(0) > 0) {
     auto load = nodal_load_;
     Kokkos::parallel_for(
@@ -137,9 +141,11 @@ void BasicFluidOperator<ExecSpace>::jacobian_action(const ConstVector& state, co
   ProfilingRegion region("rouleau::FluidOperator::jacobian_action");
   if (coefficients_.viscous_reconstruction) project_gradient(direction, direction_gradient_);
   Scatter& scatter = zeroed_scatter(unknowns_scatter_, result.extent(0), "rouleau::FluidOperator::unknowns_scatter");
-  FluidJacobianActionFunctor<Hex8, Scatter> f{
-      element_data(), state, direction, history_, body_force_, state_gradient, direction_gradient_, scatter};
-  for_each_element("rouleau::FluidOperator::jacobian_action", f, scatter, result);
+  visit_fluid_element(mesh_.element_type, [&](auto element) {
+    FluidJacobianActionFunctor<decltype(element), Scatter> f{
+        element_data(), state, direction, history_, body_force_, state_gradient, direction_gradient_, scatter};
+    for_each_element("rouleau::FluidOperator::jacobian_action", f, scatter, result);
+  });
   apply_dirichlet_rows<ExecSpace>(dirichlet_dofs_, dirichlet_values_, state, direction, false, result);
 }
 
@@ -151,9 +157,11 @@ void BasicFluidOperator<ExecSpace>::linear_action(const ConstVector& direction, 
   Scatter& scatter = zeroed_scatter(unknowns_scatter_, result.extent(0), "rouleau::FluidOperator::unknowns_scatter");
   if (coefficients_.viscous_reconstruction) project_gradient(direction, direction_gradient_);
   const ConstVector none;
-  FluidResidualFunctor<Hex8, Scatter> f{element_data(), direction, direction, none,
-                                              none,           direction_gradient_, scatter};
-  for_each_element("rouleau::FluidOperator::linear_action", f, scatter, result);
+  visit_fluid_element(mesh_.element_type, [&](auto element) {
+    FluidResidualFunctor<decltype(element), Scatter> f{
+        element_data(), direction, direction, none, none, direction_gradient_, scatter};
+    for_each_element("rouleau::FluidOperator::linear_action", f, scatter, result);
+  });
   apply_dirichlet_rows<ExecSpace>(dirichlet_dofs_, dirichlet_values_, direction, direction, false, result);
 }
 
@@ -162,9 +170,11 @@ void BasicFluidOperator<ExecSpace>::diagonal_blocks(const ConstVector& state, co
   ProfilingRegion region("rouleau::FluidOperator::diagonal_blocks");
   if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_);
   Scatter& scatter = zeroed_scatter(blocks_scatter_, blocks.extent(0), "rouleau::FluidOperator::blocks_scatter");
-  FluidElementJacobianFunctor<Hex8, JacobianSink::diagonal_blocks, Scatter> f{
-      element_data(), state, history_, body_force_, state_gradient_, scatter, {}, {}, {}, {}, {}};
-  for_each_element("rouleau::FluidOperator::diagonal_blocks", f, scatter, blocks);
+  visit_fluid_element(mesh_.element_type, [&](auto element) {
+    FluidElementJacobianFunctor<decltype(element), JacobianSink::diagonal_blocks, Scatter> f{
+        element_data(), state, history_, body_force_, state_gradient_, scatter, {}, {}, {}, {}, {}};
+    for_each_element("rouleau::FluidOperator::diagonal_blocks", f, scatter, blocks);
+  });
   // A constrained row is the identity row.
   auto dofs = dirichlet_dofs_;
   Kokkos::parallel_for(
@@ -178,10 +188,12 @@ void BasicFluidOperator<ExecSpace>::diagonal_blocks(const ConstVector& state, co
 template <class ExecSpace>
 void BasicFluidOperator<ExecSpace>::element_matrices(const ConstVector& state, const Kokkos::View<double***>& matrices) const {
   if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_);
-  FluidElementJacobianFunctor<Hex8, JacobianSink::element_matrices, Scatter> f{
-      element_data(), state, history_, body_force_, state_gradient_, {}, matrices, {}, {}, {}, {}};
-  Kokkos::parallel_for("rouleau::FluidOperator::element_matrices",
-                       Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
+  visit_fluid_element(mesh_.element_type, [&](auto element) {
+    FluidElementJacobianFunctor<decltype(element), JacobianSink::element_matrices, Scatter> f{
+        element_data(), state, history_, body_force_, state_gradient_, {}, matrices, {}, {}, {}, {}};
+    Kokkos::parallel_for("rouleau::FluidOperator::element_matrices",
+                         Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
+  });
 }
 
 template <class ExecSpace>
@@ -190,11 +202,13 @@ void BasicFluidOperator<ExecSpace>::assemble_jacobian(const ConstVector& state, 
   ProfilingRegion region("rouleau::FluidOperator::assemble_jacobian");
   if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_);
   Kokkos::deep_copy(values, 0.0);
-  FluidElementJacobianFunctor<Hex8, JacobianSink::crs, Scatter> f{
-      element_data(), state, history_, body_force_, state_gradient_, {}, {},
-      graph.row_map,  graph.node_offsets, graph.node_neighbors, values};
-  Kokkos::parallel_for("rouleau::FluidOperator::assemble_jacobian",
-                       Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
+  visit_fluid_element(mesh_.element_type, [&](auto element) {
+    FluidElementJacobianFunctor<decltype(element), JacobianSink::crs, Scatter> f{
+        element_data(), state, history_, body_force_, state_gradient_, {}, {},
+        graph.row_map,  graph.node_offsets, graph.node_neighbors, values};
+    Kokkos::parallel_for("rouleau::FluidOperator::assemble_jacobian",
+                         Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
+  });
   // A constrained row is the identity row.
   auto dofs = dirichlet_dofs_;
   auto row_map = graph.row_map;

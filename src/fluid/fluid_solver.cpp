@@ -8,7 +8,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "kernels/hex8.hpp"
+#include "fluid/fluid_element_types.hpp"
 #include "run/profiling_region.hpp"
 
 #include <algorithm>
@@ -167,22 +167,24 @@ std::vector<std::array<double, 3>> FluidSolver::boundary_forces(const std::vecto
   return forces;
 }
 
-std::array<double, 5> FluidSolver::velocity_integrals() const {
-  const auto geometry = operator_.geometry();
-  const auto dof_nodes = operator_.mesh().element_dof_nodes;
-  const auto state = state_;
+namespace {
+// ∫ 1, ∫ u_x, ∫ u_y, ∫ u_z, ∫ |u|² over the mesh (scaled), by the element's quadrature
+// with u(ξ_q) = Σ_a N_a(ξ_q) u_a.
+template <class Element>
+std::array<double, 5> integrate_velocity(const FluidOperator& op, const ConstVector& state) {
+  const auto geometry = op.geometry();
+  const auto dof_nodes = op.mesh().element_dof_nodes;
   double v = 0.0, ux = 0.0, uy = 0.0, uz = 0.0, uu = 0.0;
-  // Gauss quadrature of 1, u and |u|² with u(ξ_q) = Σ_a N_a(ξ_q) u_a
   Kokkos::parallel_reduce(
-      "rouleau::FluidSolver::velocity_integrals", Kokkos::RangePolicy<ExecSpace>(0, operator_.mesh().num_elements),
+      "rouleau::FluidSolver::velocity_integrals", Kokkos::RangePolicy<ExecSpace>(0, op.mesh().num_elements),
       KOKKOS_LAMBDA(const int e, double& volume, double& mx, double& my, double& mz, double& squared) {
-        for (int q = 0; q < Hex8::quadrature_points; ++q) {
+        for (int q = 0; q < Element::quadrature_points; ++q) {
           double xi[3];
-          Hex8::quadrature_point(q, xi);
+          Element::quadrature_point(q, xi);
           const double dv = geometry(e, q, 9);
           double u[3] = {0.0, 0.0, 0.0};
-          for (int a = 0; a < Hex8::nodes; ++a) {
-            const double N = Hex8::shape(a, xi);
+          for (int a = 0; a < Element::nodes; ++a) {
+            const double N = Element::shape(a, xi);
             const int n = dof_nodes(e, a);
             for (int c = 0; c < 3; ++c) u[c] += N * state(4 * n + c);
           }
@@ -195,6 +197,13 @@ std::array<double, 5> FluidSolver::velocity_integrals() const {
       },
       v, ux, uy, uz, uu);
   return {v, ux, uy, uz, uu};
+}
+}  // namespace
+
+std::array<double, 5> FluidSolver::velocity_integrals() const {
+  return visit_fluid_element(operator_.mesh().element_type, [&](auto element) {
+    return integrate_velocity<decltype(element)>(operator_, state_);
+  });
 }
 
 std::array<double, 3> FluidSolver::mean_velocity() const {

@@ -52,4 +52,10 @@ FluidMesh make_box_mesh(const std::array<double, 3>& lower, const std::array<dou
                         const std::array<int, 3>& elements, const std::array<double, 3>& grading,
                         const std::array<bool, 3>& periodic);
 
+// The same nodes with every hexahedron cut into six tetrahedra (Kuhn's subdivision around
+// its diagonal from node 0 to node 6, conforming between neighbours); boundary
+// quadrilaterals become two triangles. For tests and benchmarks of the tetrahedral
+// element against the hexahedral one on one set of unknowns.
+FluidMesh split_into_tetrahedra(const FluidMesh& hexahedra);
+
 }  // namespace rouleau

@@ -23,30 +23,19 @@
 // into connected surfaces: the outer surface encloses the largest volume; a shell has one
 // more, the cavity wall. Exactly one (filled) or two (shell) surfaces, or an error.
 //
-// Cache file (text), cache_dir/cellmesh-<hash>.txt, <hash> = 16 hex digits of the 64-bit
-// FNV-1a hash of the "parameters" line:
-//   rouleau-cell-mesh 1
-//   hash <hash>
-//   parameters <canonical text of everything that made the mesh, one line>
-//   nodes <N>              then N lines "x y z" [μm], 17 significant digits
-//   tetrahedra <T>         then T lines "i j k l", 0-based node indices
-//   outer_surface <F>      then F lines "i j k"
-//   inner_surface <G>      then G lines "i j k" (G = 0 for a filled body)
-//   end
+// Cache file (the format of mesh_cache.hpp), cache_dir/cellmesh-<hash>.txt, <hash> = 16
+// hex digits of the 64-bit FNV-1a hash of the "parameters" line, header
+// "rouleau-cell-mesh 1", surfaces outer_surface and inner_surface (empty for a filled body).
 #include "geometry/cell_mesh.hpp"
 
 #include <gmsh.h>
 #include <spdlog/spdlog.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
-#include <cinttypes>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
@@ -54,7 +43,8 @@
 #include "geometry/cell_shape_details.hpp"
 #include "geometry/cell_shapes.hpp"
 #include "geometry/gmsh_session.hpp"
-#include "io/atomic_file.hpp"
+#include "geometry/mesh_cache.hpp"
+#include "geometry/tetrahedral_mesh.hpp"
 
 namespace rouleau {
 
@@ -68,9 +58,7 @@ constexpr double pi = 3.14159265358979323846;
 constexpr int geometry_code_version = 1;
 constexpr const char* cache_header = "rouleau-cell-mesh 1";
 
-using Node = std::array<double, 3>;
-using Tetrahedron = std::array<int, 4>;
-using Triangle = std::array<int, 3>;
+using Node = MeshPoint;  // a mesh node's position [μm]
 
 // ---- element size presets
 //
@@ -267,12 +255,7 @@ class ElementSizeField {
   SickleBend bend_{};
 };
 
-struct RawMesh {
-  std::vector<Node> nodes;
-  std::vector<Tetrahedron> tetrahedra;
-};
-
-RawMesh mesh_with_gmsh(const CellKindConfig& kind, double element_size) {
+TetrahedralMesh mesh_with_gmsh(const CellKindConfig& kind, double element_size) {
   GmshSession session;
   gmsh::model::add("cell");
   switch (kind.shape) {
@@ -304,194 +287,19 @@ RawMesh mesh_with_gmsh(const CellKindConfig& kind, double element_size) {
   gmsh::option::setNumber("Mesh.ElementOrder", 1);
   gmsh::model::mesh::generate(3);
 
-  std::vector<std::size_t> node_tags;
-  std::vector<double> coordinates, parametric;
-  gmsh::model::mesh::getNodes(node_tags, coordinates, parametric);
-  std::vector<std::size_t> element_tags, element_nodes;
-  const int linear_tetrahedron = 4;  // Gmsh element type
-  gmsh::model::mesh::getElementsByType(linear_tetrahedron, element_tags, element_nodes);
-
-  // Keep the nodes the tetrahedra use, numbered in Gmsh's tag order.
-  const std::size_t largest_tag = node_tags.empty() ? 0 : *std::max_element(node_tags.begin(), node_tags.end());
-  std::vector<long> index_of_tag(largest_tag + 1, -1);
-  std::vector<std::size_t> position_of_tag(largest_tag + 1, 0);
-  std::vector<char> known(largest_tag + 1, 0), used(largest_tag + 1, 0);
-  for (std::size_t i = 0; i < node_tags.size(); ++i) position_of_tag[node_tags[i]] = i, known[node_tags[i]] = 1;
-  for (std::size_t tag : element_nodes) {
-    if (tag > largest_tag || !known[tag]) throw std::runtime_error("Gmsh returned a tetrahedron with an unknown node");
-    used[tag] = 1;
-  }
-  RawMesh mesh;
-  for (std::size_t tag = 0; tag <= largest_tag; ++tag) {
-    if (!used[tag]) continue;
-    index_of_tag[tag] = static_cast<long>(mesh.nodes.size());
-    const std::size_t i = position_of_tag[tag];
-    mesh.nodes.push_back({coordinates[3 * i], coordinates[3 * i + 1], coordinates[3 * i + 2]});
-  }
-  mesh.tetrahedra.resize(element_tags.size());
-  for (std::size_t e = 0; e < element_tags.size(); ++e)
-    for (int v = 0; v < 4; ++v) mesh.tetrahedra[e][v] = static_cast<int>(index_of_tag[element_nodes[4 * e + v]]);
-  return mesh;
+  return gmsh_tetrahedra();
 }
 
 // ---- checks and surfaces
 
-double signed_volume6(const Node& x0, const Node& x1, const Node& x2, const Node& x3) {
-  // 6 V = (x1 − x0) · ((x2 − x0) × (x3 − x0))
-  const double a[3] = {x1[0] - x0[0], x1[1] - x0[1], x1[2] - x0[2]};
-  const double b[3] = {x2[0] - x0[0], x2[1] - x0[1], x2[2] - x0[2]};
-  const double c[3] = {x3[0] - x0[0], x3[1] - x0[1], x3[2] - x0[2]};
-  return a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
-}
-
-// 6√2 V / l_max³: 1 for the regular tetrahedron, → 0 for a flat one.
-double tetrahedron_quality(const std::vector<Node>& nodes, const Tetrahedron& t) {
-  double longest_squared = 0.0;
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j) {
-      double squared = 0.0;
-      for (int d = 0; d < 3; ++d) squared += (nodes[t[i]][d] - nodes[t[j]][d]) * (nodes[t[i]][d] - nodes[t[j]][d]);
-      longest_squared = std::max(longest_squared, squared);
-    }
-  const double volume6 = signed_volume6(nodes[t[0]], nodes[t[1]], nodes[t[2]], nodes[t[3]]);
-  return std::sqrt(2.0) * volume6 / (longest_squared * std::sqrt(longest_squared));
-}
-
-// Below this quality a tetrahedron counts as degenerate.
-constexpr double degenerate_quality = 1e-3;
-
 void orient_and_check_tetrahedra(const CellKindConfig& kind, const std::vector<Node>& nodes,
                                  std::vector<Tetrahedron>& tetrahedra) {
-  // A mesh is oriented consistently: all volumes of one sign. Flip to positive if they are
-  // all negative; any of the other sign is an inverted element.
-  std::size_t negative = 0;
-  for (const auto& t : tetrahedra)
-    if (signed_volume6(nodes[t[0]], nodes[t[1]], nodes[t[2]], nodes[t[3]]) < 0.0) ++negative;
-  const bool flip = 2 * negative > tetrahedra.size();
-  std::size_t inverted = 0, degenerate = 0;
-  double worst = INFINITY;
-  for (auto& t : tetrahedra) {
-    if (flip) std::swap(t[2], t[3]);
-    const double quality = tetrahedron_quality(nodes, t);
-    worst = std::min(worst, quality);
-    if (quality < 0.0) ++inverted;
-    else if (!(quality >= degenerate_quality)) ++degenerate;
-  }
-  if (inverted > 0 || degenerate > 0)
-    throw std::runtime_error(describe_kind(kind) + ": the mesh has " + std::to_string(inverted) + " inverted and " +
-                             std::to_string(degenerate) + " degenerate tetrahedra (worst quality 6√2V/l³ = " +
-                             std::to_string(worst) + ")");
-}
-
-// Gmsh's HXT mesher returns the same tetrahedra run after run but not in the same order
-// nor with the same first vertex. Canonical form: each tetrahedron's vertices ascending up
-// to an even permutation (the last two swapped when sorting took an odd number of swaps,
-// so the orientation stays), the tetrahedra sorted. Then the mesh, its surfaces and the
-// cache file are the same every time.
-void canonicalize_tetrahedra(std::vector<Tetrahedron>& tetrahedra) {
-  for (auto& t : tetrahedra) {
-    int inversions = 0;
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j) inversions += t[i] > t[j];
-    std::sort(t.begin(), t.end());
-    if (inversions % 2 == 1) std::swap(t[2], t[3]);
-  }
-  std::sort(tetrahedra.begin(), tetrahedra.end());
-}
-
-// A triangle turned (cyclically, keeping its orientation) to start at its smallest index.
-Triangle starting_at_smallest(const Triangle& f) {
-  if (f[1] < f[0] && f[1] < f[2]) return {f[1], f[2], f[0]};
-  if (f[2] < f[0] && f[2] < f[1]) return {f[2], f[0], f[1]};
-  return f;
-}
-
-// Boundary slivers. Gmsh's Delaunay mesher sometimes leaves a flat tetrahedron on the
-// surface with two of its faces there (on a slightly curved patch, above the boundary
-// edge they share; mostly at the poles of the revolved and spherical surfaces). Removing
-// it swaps that boundary edge for the opposite one, an edge flip of the surface
-// triangulation whose four nodes all stay on the exact surface; the volume changes by
-// the sliver's (tiny) volume. Done when the opposite edge is not already a boundary edge
-// (the surface stays manifold), one sliver per node per pass. Returns how many.
-constexpr double sliver_quality = 0.1;
-std::size_t peel_boundary_slivers(const std::vector<Node>& nodes, std::vector<Tetrahedron>& tetrahedra) {
-  static constexpr int faces_of[4][3] = {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}};
-  const auto sorted_face = [](int a, int b, int c) {
-    Triangle f{a, b, c};
-    std::sort(f.begin(), f.end());
-    return f;
-  };
-  std::size_t peeled = 0;
-  for (int pass = 0; pass < 10; ++pass) {
-    std::vector<Triangle> all_faces;
-    all_faces.reserve(4 * tetrahedra.size());
-    for (const auto& t : tetrahedra)
-      for (const auto& f : faces_of) all_faces.push_back(sorted_face(t[f[0]], t[f[1]], t[f[2]]));
-    std::sort(all_faces.begin(), all_faces.end());
-    std::vector<Triangle> boundary;
-    std::vector<std::pair<int, int>> boundary_edges;
-    for (std::size_t i = 0; i < all_faces.size();) {
-      std::size_t j = i + 1;
-      while (j < all_faces.size() && all_faces[j] == all_faces[i]) ++j;
-      if (j - i == 1) {
-        const Triangle& f = all_faces[i];
-        boundary.push_back(f);
-        boundary_edges.insert(boundary_edges.end(), {{f[0], f[1]}, {f[0], f[2]}, {f[1], f[2]}});
-      }
-      i = j;
-    }
-    std::sort(boundary_edges.begin(), boundary_edges.end());
-    const auto on_boundary = [&](const Triangle& f) { return std::binary_search(boundary.begin(), boundary.end(), f); };
-    std::vector<char> remove(tetrahedra.size(), 0), touched(nodes.size(), 0);
-    std::size_t removed_this_pass = 0;
-    for (std::size_t e = 0; e < tetrahedra.size(); ++e) {
-      const auto& t = tetrahedra[e];
-      if (touched[t[0]] || touched[t[1]] || touched[t[2]] || touched[t[3]]) continue;
-      if (tetrahedron_quality(nodes, t) >= sliver_quality) continue;
-      int boundary_faces = 0;
-      std::array<int, 4> uses{0, 0, 0, 0};  // how many boundary faces each corner is on
-      for (const auto& f : faces_of)
-        if (on_boundary(sorted_face(t[f[0]], t[f[1]], t[f[2]]))) {
-          ++boundary_faces;
-          for (int k : f) ++uses[k];
-        }
-      if (boundary_faces != 2) continue;
-      // The corners on one boundary face only span the edge that becomes a boundary edge.
-      std::array<int, 2> opposite{-1, -1};
-      int found = 0;
-      for (int k = 0; k < 4; ++k)
-        if (uses[k] == 1 && found < 2) opposite[found++] = t[k];
-      if (found != 2) continue;
-      const std::pair<int, int> new_edge{std::min(opposite[0], opposite[1]), std::max(opposite[0], opposite[1])};
-      if (std::binary_search(boundary_edges.begin(), boundary_edges.end(), new_edge)) continue;
-      remove[e] = 1;
-      for (int v : t) touched[v] = 1;
-      ++removed_this_pass;
-    }
-    if (removed_this_pass == 0) break;
-    std::size_t kept = 0;
-    for (std::size_t e = 0; e < tetrahedra.size(); ++e)
-      if (!remove[e]) tetrahedra[kept++] = tetrahedra[e];
-    tetrahedra.resize(kept);
-    peeled += removed_this_pass;
-  }
-  return peeled;
-}
-
-// Keeps only the nodes some tetrahedron uses, in their order.
-void drop_unused_nodes(std::vector<Node>& nodes, std::vector<Tetrahedron>& tetrahedra) {
-  std::vector<int> new_index(nodes.size(), -1);
-  for (const auto& t : tetrahedra)
-    for (int v : t) new_index[v] = 0;
-  int count = 0;
-  for (std::size_t i = 0; i < nodes.size(); ++i)
-    if (new_index[i] == 0) {
-      new_index[i] = count;
-      nodes[count++] = nodes[i];
-    }
-  nodes.resize(count);
-  for (auto& t : tetrahedra)
-    for (int& v : t) v = new_index[v];
+  const OrientationReport report = orient_tetrahedra(nodes, tetrahedra);
+  if (report.inverted > 0 || report.degenerate > 0)
+    throw std::runtime_error(describe_kind(kind) + ": the mesh has " + std::to_string(report.inverted) +
+                             " inverted and " + std::to_string(report.degenerate) +
+                             " degenerate tetrahedra (worst quality 6√2V/l³ = " + std::to_string(report.worst_quality) +
+                             ")");
 }
 
 struct Surfaces {
@@ -503,32 +311,11 @@ struct Surfaces {
 // seen from outside, counter-clockwise, are (0, 2, 1), (0, 1, 3), (1, 2, 3), (0, 3, 2).
 Surfaces boundary_surfaces(const CellKindConfig& kind, const std::vector<Node>& nodes,
                            const std::vector<Tetrahedron>& tetrahedra) {
-  static constexpr int face_corners[4][3] = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
-  struct Face {
-    Triangle sorted, oriented;
-  };
-  std::vector<Face> faces;
-  faces.reserve(4 * tetrahedra.size());
-  for (const auto& t : tetrahedra)
-    for (const auto& corners : face_corners) {
-      Face face;
-      face.oriented = {t[corners[0]], t[corners[1]], t[corners[2]]};
-      face.sorted = face.oriented;
-      std::sort(face.sorted.begin(), face.sorted.end());
-      faces.push_back(face);
-    }
-  std::sort(faces.begin(), faces.end(), [](const Face& l, const Face& r) {
-    return l.sorted < r.sorted || (l.sorted == r.sorted && l.oriented < r.oriented);
-  });
   std::vector<Triangle> boundary;
-  for (std::size_t i = 0; i < faces.size();) {
-    std::size_t j = i + 1;
-    while (j < faces.size() && faces[j].sorted == faces[i].sorted) ++j;
-    if (j - i == 1) boundary.push_back(starting_at_smallest(faces[i].oriented));
-    else if (j - i > 2)
-      throw std::runtime_error(describe_kind(kind) + ": a face of the mesh is shared by " + std::to_string(j - i) +
-                               " tetrahedra");
-    i = j;
+  try {
+    boundary = boundary_triangles(tetrahedra);
+  } catch (const std::runtime_error& error) {
+    throw std::runtime_error(describe_kind(kind) + ": " + error.what());
   }
 
   // Connected surfaces: union–find over the nodes of the boundary faces.
@@ -602,128 +389,36 @@ std::string canonical_parameters(const CellKindConfig& kind, double element_size
   return text.str();
 }
 
-// FNV-1a, 64 bits: h ← (h XOR byte) × 1099511628211 from h = 14695981039346656037.
-std::string fnv1a_hex(const std::string& text) {
-  std::uint64_t hash = 14695981039346656037ull;
-  for (unsigned char byte : text) {
-    hash ^= byte;
-    hash *= 1099511628211ull;
-  }
-  char digits[17];
-  std::snprintf(digits, sizeof digits, "%016" PRIx64, hash);
-  return digits;
-}
-
 std::string cache_file_name(const std::string& hash) { return "cellmesh-" + hash + ".txt"; }
 
-std::string serialize(const CellMesh& mesh, const std::string& parameters) {
-  std::string text;
-  text.reserve(80 * mesh.nodes.size() + 40 * mesh.tetrahedra.size());
-  char line[160];
-  text += std::string(cache_header) + "\nhash " + mesh.hash + "\nparameters " + parameters + "\n";
-  text += "nodes " + std::to_string(mesh.nodes.size()) + "\n";
-  for (const auto& x : mesh.nodes) {
-    std::snprintf(line, sizeof line, "%.17g %.17g %.17g\n", x[0], x[1], x[2]);
-    text += line;
-  }
-  text += "tetrahedra " + std::to_string(mesh.tetrahedra.size()) + "\n";
-  for (const auto& t : mesh.tetrahedra) {
-    std::snprintf(line, sizeof line, "%d %d %d %d\n", t[0], t[1], t[2], t[3]);
-    text += line;
-  }
-  for (const auto* surface : {&mesh.outer_surface, &mesh.inner_surface}) {
-    text += (surface == &mesh.outer_surface ? "outer_surface " : "inner_surface ") + std::to_string(surface->size()) + "\n";
-    for (const auto& f : *surface) {
-      std::snprintf(line, sizeof line, "%d %d %d\n", f[0], f[1], f[2]);
-      text += line;
-    }
-  }
-  text += "end\n";
-  return text;
-}
-
-// Reads a cache file; throws std::runtime_error with the reason when anything is off.
-CellMesh read_cache_file(const std::string& path, const std::string& expected_hash, const std::string& parameters,
-                         bool shell) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open it");
-  std::string line;
-  const auto expect_line = [&](const std::string& wanted, const char* what) {
-    if (!std::getline(in, line) || line != wanted) throw std::runtime_error(std::string("wrong ") + what + " line");
-  };
-  expect_line(cache_header, "header");
-  expect_line("hash " + expected_hash, "hash");
-  expect_line("parameters " + parameters, "parameters");
-  const auto read_count = [&](const char* keyword, std::size_t minimum) {
-    std::string word;
-    long long count = -1;
-    if (!(in >> word >> count) || word != keyword || count < static_cast<long long>(minimum) || count > 100000000)
-      throw std::runtime_error(std::string("bad \"") + keyword + "\" count");
-    return static_cast<std::size_t>(count);
-  };
-  CellMesh mesh;
-  mesh.hash = expected_hash;
-  mesh.nodes.resize(read_count("nodes", 4));
-  for (auto& x : mesh.nodes)
-    if (!(in >> x[0] >> x[1] >> x[2]) || !std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
-      throw std::runtime_error("a node's coordinates are missing or not finite");
-  const int node_count = static_cast<int>(mesh.nodes.size());
-  const auto valid_index = [&](int i) { return i >= 0 && i < node_count; };
-  mesh.tetrahedra.resize(read_count("tetrahedra", 1));
-  for (auto& t : mesh.tetrahedra) {
-    if (!(in >> t[0] >> t[1] >> t[2] >> t[3]) || !valid_index(t[0]) || !valid_index(t[1]) || !valid_index(t[2]) ||
-        !valid_index(t[3]))
-      throw std::runtime_error("a tetrahedron's node indices are missing or out of range");
-    if (!(signed_volume6(mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]], mesh.nodes[t[3]]) > 0.0))
-      throw std::runtime_error("a tetrahedron has no positive volume");
-  }
-  for (auto* surface : {&mesh.outer_surface, &mesh.inner_surface}) {
-    const bool outer = surface == &mesh.outer_surface;
-    surface->resize(read_count(outer ? "outer_surface" : "inner_surface", outer || shell ? 4 : 0));
-    for (auto& f : *surface)
-      if (!(in >> f[0] >> f[1] >> f[2]) || !valid_index(f[0]) || !valid_index(f[1]) || !valid_index(f[2]))
-        throw std::runtime_error("a surface triangle's node indices are missing or out of range");
-  }
-  if (!shell && !mesh.inner_surface.empty()) throw std::runtime_error("a filled body with a cavity wall");
-  std::string word;
-  if (!(in >> word) || word != "end") throw std::runtime_error("no \"end\" line (truncated?)");
-  if (in >> word) throw std::runtime_error("text after \"end\"");
-  return mesh;
+// The cache file's surfaces: the outer surface, and the cavity wall (empty when filled).
+std::vector<std::pair<std::string, std::size_t>> cached_surfaces(bool shell) {
+  return {{"outer_surface", 4}, {"inner_surface", shell ? 4 : 0}};
 }
 
 void write_cache_file(const std::string& directory, const CellMesh& mesh, const std::string& parameters) {
-  namespace fs = std::filesystem;
-  fs::create_directories(directory);
-  const fs::path path = fs::path(directory) / cache_file_name(mesh.hash);
-  // A temporary name of this process and call, so that two processes meshing the same
-  // cell at once do not write into one file; rename is atomic within the directory.
-  static std::atomic<unsigned> calls{0};
-  const std::string temporary =
-      path.string() + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(calls.fetch_add(1));
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << serialize(mesh, parameters);
-    out.close();
-    if (!out) {
-      std::error_code ignored;
-      fs::remove(temporary, ignored);
-      throw std::runtime_error("cannot write " + temporary);
-    }
-  }
-  try {
-    commit_temporary_file(temporary, path.string());
-  } catch (...) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw;
-  }
+  CachedMesh cached{{mesh.nodes, mesh.tetrahedra},
+                    {{"outer_surface", mesh.outer_surface}, {"inner_surface", mesh.inner_surface}}};
+  write_mesh_cache_file(directory, cache_file_name(mesh.hash), serialize_cached_mesh(cache_header, mesh.hash, parameters, cached));
+}
+
+CellMesh read_cache_file(const std::string& path, const std::string& hash, const std::string& parameters, bool shell) {
+  CachedMesh cached = read_cached_mesh(path, cache_header, hash, parameters, cached_surfaces(shell));
+  if (!shell && !cached.surfaces[1].triangles.empty()) throw std::runtime_error("a filled body with a cavity wall");
+  CellMesh mesh;
+  mesh.hash = hash;
+  mesh.nodes = std::move(cached.mesh.nodes);
+  mesh.tetrahedra = std::move(cached.mesh.tetrahedra);
+  mesh.outer_surface = std::move(cached.surfaces[0].triangles);
+  mesh.inner_surface = std::move(cached.surfaces[1].triangles);
+  return mesh;
 }
 
 CellMesh make_cell_mesh_with_parameters(const CellKindConfig& kind, double element_size, const std::string& parameters) {
   validate_cell_kind(kind);
   if (!(element_size > 0.0 && std::isfinite(element_size)))
     throw std::runtime_error(describe_kind(kind) + ": the element size must be positive, not " + std::to_string(element_size));
-  RawMesh raw;
+  TetrahedralMesh raw;
   try {
     raw = mesh_with_gmsh(kind, element_size);
   } catch (...) {  // Gmsh 4.8 throws its error message as a std::string
@@ -786,17 +481,6 @@ CellMesh cell_mesh(const CellKindConfig& kind, const std::string& cache_dir) {
     spdlog::warn("could not store the mesh of {} in the cache {}: {}", describe_kind(kind), cache_dir, failure.what());
   }
   return mesh;
-}
-
-std::string default_mesh_cache_dir() {
-  const auto non_empty = [](const char* name) {
-    const char* value = std::getenv(name);
-    return value && *value ? std::string(value) : std::string();
-  };
-  if (auto dir = non_empty("ROULEAU_MESH_CACHE"); !dir.empty()) return dir;
-  if (auto dir = non_empty("XDG_CACHE_HOME"); !dir.empty()) return dir + "/rouleau/meshes";
-  if (auto dir = non_empty("HOME"); !dir.empty()) return dir + "/.cache/rouleau/meshes";
-  return "./.rouleau-mesh-cache";
 }
 
 }  // namespace rouleau

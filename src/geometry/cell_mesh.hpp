@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "config/case_config.hpp"
+#include "geometry/mesh_cache.hpp"  // default_mesh_cache_dir()
 
 namespace rouleau {
 
@@ -36,9 +37,5 @@ CellMesh make_cell_mesh(const CellKindConfig& kind);
 
 // The element size [μm] `kind` is meshed with: mesh_size when > 0, else its preset.
 double cell_element_size(const CellKindConfig& kind);
-
-// $ROULEAU_MESH_CACHE when set, else $XDG_CACHE_HOME/rouleau/meshes, else
-// $HOME/.cache/rouleau/meshes, else ./.rouleau-mesh-cache.
-std::string default_mesh_cache_dir();
 
 }  // namespace rouleau

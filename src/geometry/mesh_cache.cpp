@@ -1,0 +1,132 @@
+#include "geometry/mesh_cache.hpp"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include "io/atomic_file.hpp"
+
+namespace rouleau {
+
+std::string serialize_cached_mesh(const std::string& header, const std::string& hash, const std::string& parameters,
+                                  const CachedMesh& cached) {
+  const TetrahedralMesh& mesh = cached.mesh;
+  std::string text;
+  text.reserve(80 * mesh.nodes.size() + 40 * mesh.tetrahedra.size());
+  char line[160];
+  text += header + "\nhash " + hash + "\nparameters " + parameters + "\n";
+  text += "nodes " + std::to_string(mesh.nodes.size()) + "\n";
+  for (const auto& x : mesh.nodes) {
+    std::snprintf(line, sizeof line, "%.17g %.17g %.17g\n", x[0], x[1], x[2]);
+    text += line;
+  }
+  text += "tetrahedra " + std::to_string(mesh.tetrahedra.size()) + "\n";
+  for (const auto& t : mesh.tetrahedra) {
+    std::snprintf(line, sizeof line, "%d %d %d %d\n", t[0], t[1], t[2], t[3]);
+    text += line;
+  }
+  for (const NamedSurface& surface : cached.surfaces) {
+    text += surface.name + " " + std::to_string(surface.triangles.size()) + "\n";
+    for (const auto& f : surface.triangles) {
+      std::snprintf(line, sizeof line, "%d %d %d\n", f[0], f[1], f[2]);
+      text += line;
+    }
+  }
+  text += "end\n";
+  return text;
+}
+
+CachedMesh read_cached_mesh(const std::string& path, const std::string& header, const std::string& hash,
+                            const std::string& parameters,
+                            const std::vector<std::pair<std::string, std::size_t>>& surface_names) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open it");
+  std::string line;
+  const auto expect_line = [&](const std::string& wanted, const char* what) {
+    if (!std::getline(in, line) || line != wanted) throw std::runtime_error(std::string("wrong ") + what + " line");
+  };
+  expect_line(header, "header");
+  expect_line("hash " + hash, "hash");
+  expect_line("parameters " + parameters, "parameters");
+  const auto read_count = [&](const std::string& keyword, std::size_t minimum) {
+    std::string word;
+    long long count = -1;
+    if (!(in >> word >> count) || word != keyword || count < static_cast<long long>(minimum) || count > 100000000)
+      throw std::runtime_error("bad \"" + keyword + "\" count");
+    return static_cast<std::size_t>(count);
+  };
+  CachedMesh cached;
+  TetrahedralMesh& mesh = cached.mesh;
+  mesh.nodes.resize(read_count("nodes", 4));
+  for (auto& x : mesh.nodes)
+    if (!(in >> x[0] >> x[1] >> x[2]) || !std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+      throw std::runtime_error("a node's coordinates are missing or not finite");
+  const int node_count = static_cast<int>(mesh.nodes.size());
+  const auto valid_index = [&](int i) { return i >= 0 && i < node_count; };
+  mesh.tetrahedra.resize(read_count("tetrahedra", 1));
+  for (auto& t : mesh.tetrahedra) {
+    if (!(in >> t[0] >> t[1] >> t[2] >> t[3]) || !valid_index(t[0]) || !valid_index(t[1]) || !valid_index(t[2]) ||
+        !valid_index(t[3]))
+      throw std::runtime_error("a tetrahedron's node indices are missing or out of range");
+    if (!(signed_volume6(mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]], mesh.nodes[t[3]]) > 0.0))
+      throw std::runtime_error("a tetrahedron has no positive volume");
+  }
+  for (const auto& [name, minimum] : surface_names) {
+    NamedSurface surface{name, std::vector<Triangle>(read_count(name, minimum))};
+    for (auto& f : surface.triangles)
+      if (!(in >> f[0] >> f[1] >> f[2]) || !valid_index(f[0]) || !valid_index(f[1]) || !valid_index(f[2]))
+        throw std::runtime_error("a triangle of \"" + name + "\" has node indices missing or out of range");
+    cached.surfaces.push_back(std::move(surface));
+  }
+  std::string word;
+  if (!(in >> word) || word != "end") throw std::runtime_error("no \"end\" line (truncated?)");
+  if (in >> word) throw std::runtime_error("text after \"end\"");
+  return cached;
+}
+
+void write_mesh_cache_file(const std::string& directory, const std::string& file_name, const std::string& text) {
+  namespace fs = std::filesystem;
+  fs::create_directories(directory);
+  const fs::path path = fs::path(directory) / file_name;
+  // A temporary name of this process and call, so that two processes meshing the same
+  // body at once do not write into one file; rename is atomic within the directory.
+  static std::atomic<unsigned> calls{0};
+  const std::string temporary =
+      path.string() + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(calls.fetch_add(1));
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out << text;
+    out.close();
+    if (!out) {
+      std::error_code ignored;
+      fs::remove(temporary, ignored);
+      throw std::runtime_error("cannot write " + temporary);
+    }
+  }
+  try {
+    commit_temporary_file(temporary, path.string());
+  } catch (...) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    throw;
+  }
+}
+
+std::string default_mesh_cache_dir() {
+  const auto non_empty = [](const char* name) {
+    const char* value = std::getenv(name);
+    return value && *value ? std::string(value) : std::string();
+  };
+  if (auto dir = non_empty("ROULEAU_MESH_CACHE"); !dir.empty()) return dir;
+  if (auto dir = non_empty("XDG_CACHE_HOME"); !dir.empty()) return dir + "/rouleau/meshes";
+  if (auto dir = non_empty("HOME"); !dir.empty()) return dir + "/.cache/rouleau/meshes";
+  return "./.rouleau-mesh-cache";
+}
+
+}  // namespace rouleau

@@ -1,0 +1,48 @@
+#pragma once
+// Body-fitted tetrahedral meshes of the lumen of an axisymmetric vessel (vessel_profile.hpp)
+// made with Gmsh, their boundary split into wall, inlet and outlet, cached on disk like
+// the cell meshes. The axis is x, the inlet the disc at x = 0, the outlet the disc at x = L.
+// Host-only: includes no Kokkos header.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/tetrahedral_mesh.hpp"
+#include "geometry/vessel_profile.hpp"
+
+namespace rouleau {
+
+// Element sizes [μm]. At a point at distance r from the axis, where the lumen's radius is
+// R(x), the size is
+//   h(x, r) = (R(x)/R) [h_w + (h − h_w) min(1, 2 (R(x) − r)/R(x))]
+// that is h_w on the wall growing linearly to h over the outer half of the radius, and
+// scaled with the local radius so that a throat gets as many elements across as the feeders.
+struct VesselMeshSizes {
+  double element_size = 1.0;       // h, on the axis of the feeders
+  double wall_element_size = 0.0;  // h_w, on the wall of the feeders; 0: the same as h
+};
+
+struct VesselMesh {
+  std::vector<MeshPoint> nodes;             // [μm]
+  std::vector<Tetrahedron> tetrahedra;      // positive volume
+  // The boundary triangles, oriented out of the lumen, by surface: the inlet disc (x = 0),
+  // the outlet disc (x = L) and the wall (the rest).
+  std::vector<Triangle> inlet, outlet, wall;
+  std::string hash;                         // of the parameters that made it (the cache key)
+};
+
+// What is wrong with the sizes, if anything: "element_size_um" or "wall_element_size_um"
+// and the reason (not positive; the wall size above the core size; more than ~5 million
+// elements expected).
+std::optional<VesselProfileProblem> vessel_mesh_sizes_problem(const VesselProfile& profile,
+                                                              const VesselMeshSizes& sizes);
+
+// The mesh, from `cache_dir` when a mesh with the same hash is there, otherwise made with
+// Gmsh and stored there. Throws std::runtime_error when the profile or sizes are refused or
+// meshing fails.
+VesselMesh vessel_mesh(const VesselProfile& profile, const VesselMeshSizes& sizes, const std::string& cache_dir);
+
+// Meshes with Gmsh, bypassing the cache.
+VesselMesh make_vessel_mesh(const VesselProfile& profile, const VesselMeshSizes& sizes);
+
+}  // namespace rouleau

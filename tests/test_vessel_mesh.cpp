@@ -1,0 +1,181 @@
+// Gmsh meshes of vessel lumens (src/geometry/vessel_mesh): volume against the exact lumen
+// volume under refinement, wall nodes on the exact wall, the boundary split into inlet,
+// outlet and wall, determinism, the cache, and refused sizes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+
+#include "geometry/vessel_mesh.hpp"
+
+namespace {
+
+using rouleau::MeshPoint;
+using rouleau::Triangle;
+using rouleau::VesselMesh;
+using rouleau::VesselMeshSizes;
+using rouleau::VesselProfile;
+
+constexpr double pi = 3.14159265358979323846;
+
+VesselProfile tube(double radius, double length) {
+  VesselProfile p;
+  p.radius = p.throat_radius = radius;
+  p.inlet_length = length;
+  return p;
+}
+
+// A contraction 3 μm → 1.5 μm with cosine transitions.
+VesselProfile contraction() {
+  VesselProfile p;
+  p.radius = 3.0;
+  p.throat_radius = 1.5;
+  p.inlet_length = 4.0;
+  p.contraction_length = 4.0;
+  p.throat_length = 3.0;
+  p.diffuser_length = 4.0;
+  p.outlet_length = 4.0;
+  return p;
+}
+
+double mesh_volume(const VesselMesh& mesh) {
+  double volume = 0.0;
+  for (const auto& t : mesh.tetrahedra)
+    volume += rouleau::signed_volume6(mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]], mesh.nodes[t[3]]) / 6.0;
+  return volume;
+}
+
+// Σ over triangles of the vector area (x1 − x0) × (x2 − x0) / 2.
+std::array<double, 3> vector_area(const VesselMesh& mesh, const std::vector<Triangle>& triangles) {
+  std::array<double, 3> sum{0, 0, 0};
+  for (const auto& f : triangles) {
+    const MeshPoint &a = mesh.nodes[f[0]], &b = mesh.nodes[f[1]], &c = mesh.nodes[f[2]];
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    sum[0] += 0.5 * (u[1] * v[2] - u[2] * v[1]);
+    sum[1] += 0.5 * (u[2] * v[0] - u[0] * v[2]);
+    sum[2] += 0.5 * (u[0] * v[1] - u[1] * v[0]);
+  }
+  return sum;
+}
+
+TEST(VesselMesh, TubeVolumeConvergesAtSecondOrderAndTheBoundaryCloses) {
+  // Straight edges between nodes on the circle cut inside it: the volume deficit is
+  // second order in h. The boundary of the lumen is closed: the vector areas of inlet,
+  // outlet and wall sum to zero; inlet and outlet face −x and +x with areas → πR².
+  const VesselProfile p = tube(3.0, 8.0);
+  const double exact = rouleau::vessel_volume(p);
+  std::vector<double> errors;
+  const double sizes[2] = {1.0, 0.5};
+  for (double h : sizes) {
+    const VesselMesh mesh = rouleau::make_vessel_mesh(p, VesselMeshSizes{h, 0.0});
+    errors.push_back(std::abs(mesh_volume(mesh) - exact) / exact);
+    const auto inlet = vector_area(mesh, mesh.inlet), outlet = vector_area(mesh, mesh.outlet),
+               wall = vector_area(mesh, mesh.wall);
+    std::printf("tube R = 3, L = 8, h = %.2f: %zu nodes, %zu tetrahedra; volume error %.2e; inlet area %.4f "
+                "(πR² = %.4f); closure %.1e\n",
+                h, mesh.nodes.size(), mesh.tetrahedra.size(), errors.back(), -inlet[0], pi * 9.0,
+                std::abs(inlet[0] + outlet[0] + wall[0]) + std::abs(inlet[1] + outlet[1] + wall[1]) +
+                    std::abs(inlet[2] + outlet[2] + wall[2]));
+    EXPECT_NEAR(-inlet[0], pi * 9.0, 0.025 * pi * 9.0);  // the polygon inside the circle
+    EXPECT_NEAR(outlet[0], -inlet[0], 1e-9);
+    EXPECT_NEAR(inlet[0] + outlet[0] + wall[0], 0.0, 1e-9);
+    EXPECT_NEAR(inlet[1] + outlet[1] + wall[1], 0.0, 1e-9);
+    EXPECT_NEAR(inlet[2] + outlet[2] + wall[2], 0.0, 1e-9);
+    EXPECT_NEAR(inlet[1], 0.0, 1e-9);
+    EXPECT_NEAR(inlet[2], 0.0, 1e-9);
+  }
+  const double order = std::log(errors[0] / errors[1]) / std::log(2.0);
+  std::printf("tube volume error order %.2f\n", order);
+  EXPECT_LT(errors[1], 5e-3);
+  EXPECT_GT(order, 1.6);
+}
+
+TEST(VesselMesh, ContractionWallNodesLieOnTheProfileAndTheMeshIsGraded) {
+  const VesselProfile p = contraction();
+  const VesselMeshSizes sizes{0.8, 0.4};
+  const VesselMesh mesh = rouleau::make_vessel_mesh(p, sizes);
+  std::set<int> wall_nodes;
+  for (const auto& f : mesh.wall) wall_nodes.insert(f.begin(), f.end());
+  double worst = 0.0;
+  for (int n : wall_nodes) {
+    const MeshPoint& x = mesh.nodes[n];
+    worst = std::max(worst, std::abs(std::hypot(x[1], x[2]) - rouleau::vessel_radius(p, x[0])));
+  }
+  const double volume_error = std::abs(mesh_volume(mesh) - rouleau::vessel_volume(p)) / rouleau::vessel_volume(p);
+  // Throat: R_t/R = 1/2 of the feeders' sizes. Mean edge length of wall triangles in the
+  // throat against those in the inlet feeder.
+  double throat_edges = 0.0, feeder_edges = 0.0;
+  int throat_count = 0, feeder_count = 0;
+  for (const auto& f : mesh.wall) {
+    const double x = (mesh.nodes[f[0]][0] + mesh.nodes[f[1]][0] + mesh.nodes[f[2]][0]) / 3.0;
+    double edge = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      const MeshPoint &a = mesh.nodes[f[k]], &b = mesh.nodes[f[(k + 1) % 3]];
+      edge += std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]) / 3.0;
+    }
+    if (x > 8.5 && x < 10.5) throat_edges += edge, ++throat_count;
+    if (x > 0.5 && x < 3.5) feeder_edges += edge, ++feeder_count;
+  }
+  throat_edges /= throat_count;
+  feeder_edges /= feeder_count;
+  std::printf("contraction 3 → 1.5 μm: %zu nodes, %zu tetrahedra; wall nodes off the profile by ≤ %.1e μm; volume "
+              "error %.2e; mean wall edge %.3f μm in the throat, %.3f μm in the feeder\n",
+              mesh.nodes.size(), mesh.tetrahedra.size(), worst, volume_error, throat_edges, feeder_edges);
+  EXPECT_LT(worst, 1e-4);
+  EXPECT_LT(volume_error, 1e-2);
+  EXPECT_NEAR(throat_edges / feeder_edges, 0.5, 0.15);
+}
+
+TEST(VesselMesh, IsTheSameEveryRunAndIsCached) {
+  const VesselProfile p = tube(2.0, 4.0);
+  const VesselMeshSizes sizes{0.8, 0.0};
+  const VesselMesh first = rouleau::make_vessel_mesh(p, sizes), second = rouleau::make_vessel_mesh(p, sizes);
+  EXPECT_EQ(first.nodes, second.nodes);
+  EXPECT_EQ(first.tetrahedra, second.tetrahedra);
+  EXPECT_EQ(first.wall, second.wall);
+
+  const std::string dir = ::testing::TempDir() + "rouleau_vessel_cache";
+  std::filesystem::remove_all(dir);
+  const VesselMesh stored = rouleau::vessel_mesh(p, sizes, dir);
+  const std::string file = dir + "/vesselmesh-" + stored.hash + ".txt";
+  ASSERT_TRUE(std::filesystem::exists(file));
+  const VesselMesh read = rouleau::vessel_mesh(p, sizes, dir);
+  EXPECT_EQ(read.nodes, first.nodes);
+  EXPECT_EQ(read.tetrahedra, first.tetrahedra);
+  EXPECT_EQ(read.inlet, first.inlet);
+  EXPECT_EQ(read.outlet, first.outlet);
+  // A truncated cache file is remade, not trusted.
+  std::filesystem::resize_file(file, std::filesystem::file_size(file) / 2);
+  const VesselMesh remade = rouleau::vessel_mesh(p, sizes, dir);
+  EXPECT_EQ(remade.tetrahedra, first.tetrahedra);
+  EXPECT_GT(std::filesystem::file_size(file), 2 * (std::filesystem::file_size(file) / 2) - 2);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(VesselMesh, BadSizesAreRefusedWithTheKey) {
+  const VesselProfile p = tube(3.0, 8.0);
+  auto problem = rouleau::vessel_mesh_sizes_problem(p, VesselMeshSizes{0.5, 0.8});
+  ASSERT_TRUE(problem);
+  EXPECT_EQ(problem->key, "wall_element_size_um");
+  problem = rouleau::vessel_mesh_sizes_problem(p, VesselMeshSizes{-1.0, 0.0});
+  ASSERT_TRUE(problem);
+  EXPECT_EQ(problem->key, "element_size_um");
+  problem = rouleau::vessel_mesh_sizes_problem(p, VesselMeshSizes{0.01, 0.0});
+  ASSERT_TRUE(problem);
+  EXPECT_NE(problem->reason.find("tetrahedra expected"), std::string::npos) << problem->reason;
+  EXPECT_FALSE(rouleau::vessel_mesh_sizes_problem(p, VesselMeshSizes{0.5, 0.25}));
+  try {
+    VesselProfile wide = tube(3.0, 8.0);
+    wide.throat_radius = 4.0;
+    rouleau::make_vessel_mesh(wide, VesselMeshSizes{1.0, 0.0});
+    ADD_FAILURE() << "a throat wider than the inlet was meshed";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find("vessel.throat_radius_um"), std::string::npos) << error.what();
+  }
+}
+
+}  // namespace

@@ -68,14 +68,14 @@ GmresSettings gmres_settings(const SolverConfig& s) {
 }  // namespace
 
 FluidSolver::FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid,
-                         const std::array<BoundaryConfig, 6>& boundary, const SolverConfig& settings,
+                         const std::vector<FluidBoundary>& boundaries, const SolverConfig& settings,
                          const FluidScales& scales, bool stokes)
     : operator_(mesh, scales.length),
       scales_(scales),
       settings_(settings),
       stokes_(stokes),
       density_(fluid.density),
-      boundary_(build_boundary_conditions(mesh, boundary, scales)),
+      boundary_(build_boundary_conditions(mesh, boundaries, scales)),
       block_jacobi_(mesh.num_dof_nodes),
       gmres_(mesh.num_unknowns(), gmres_settings(settings)) {
   const int n = mesh.num_unknowns();

@@ -33,8 +33,12 @@ struct FluidSolveReport {
 class FluidSolver {
  public:
   // `stokes`: drop convection (the Stokes limit). Scales from derive_quantities().
-  FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid, const std::array<BoundaryConfig, 6>& boundary,
+  FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid, const std::vector<FluidBoundary>& boundaries,
               const SolverConfig& settings, const FluidScales& scales, bool stokes);
+  // A box's six sides.
+  FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid, const std::array<BoundaryConfig, 6>& sides,
+              const SolverConfig& settings, const FluidScales& scales, bool stokes)
+      : FluidSolver(mesh, fluid, box_boundaries(sides), settings, scales, stokes) {}
 
   // Solves the steady equations from the current state.
   FluidSolveReport solve_steady();

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "geometry/grading.hpp"
+#include "geometry/vessel_mesh.hpp"
 
 namespace rouleau {
 
@@ -23,7 +24,11 @@ struct BoundaryFaces {
   std::string name;                             // "x_min", ... (or a Gmsh physical name)
   std::vector<std::array<int, 4>> faces;        // geometric nodes of each face (quads; tets repeat the last)
   std::vector<int> nodes;                       // geometric nodes on this boundary, sorted, unique
-  std::array<double, 3> outward_normal{0, 0, 0};  // for planar sides
+  std::array<double, 3> outward_normal{0, 0, 0};  // for planar sides; zero for curved ones
+  // A planar circular side (a vessel's inlet or outlet): its centre [μm] and radius [μm];
+  // radius 0 for any other side.
+  std::array<double, 3> disc_center{0, 0, 0};
+  double disc_radius = 0.0;
 };
 
 struct FluidMesh {
@@ -57,5 +62,9 @@ FluidMesh make_box_mesh(const std::array<double, 3>& lower, const std::array<dou
 // quadrilaterals become two triangles. For tests and benchmarks of the tetrahedral
 // element against the hexahedral one on one set of unknowns.
 FluidMesh split_into_tetrahedra(const FluidMesh& hexahedra);
+
+// The fluid mesh of a vessel's lumen (its axis along x): boundaries "inlet" (the disc at
+// x = 0, outward normal −x), "outlet" (the disc at x = L, +x) and "wall" (curved: no normal).
+FluidMesh make_vessel_fluid_mesh(const VesselMesh& vessel, const VesselProfile& profile);
 
 }  // namespace rouleau

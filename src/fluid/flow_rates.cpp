@@ -1,0 +1,103 @@
+#include "fluid/flow_rates.hpp"
+
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+namespace rouleau {
+namespace {
+
+using Point = std::array<double, 3>;
+
+Point position(const Kokkos::View<double* [3]>::HostMirror& x, int node) { return {x(node, 0), x(node, 1), x(node, 2)}; }
+
+// |(b − a) × (c − a)| / 2
+double triangle_area(const Point& a, const Point& b, const Point& c) {
+  const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+}
+
+// Σ over the faces of `name` of ∫ f dA for the nodal field f(node), exact for f linear on
+// triangles (A/3 per corner) and bilinear on parallelogram quadrilaterals (A/4 per corner).
+// Also returns the area.
+template <class Field>
+double integrate_over_boundary(const FluidMesh& mesh, const std::string& name, const Field& f, double& area) {
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
+  const BoundaryFaces& b = mesh.boundary(name);
+  double integral = 0.0;
+  area = 0.0;
+  for (const auto& face : b.faces) {
+    const bool triangle = face[3] == face[2];
+    const double a = triangle ? triangle_area(position(x, face[0]), position(x, face[1]), position(x, face[2]))
+                              : triangle_area(position(x, face[0]), position(x, face[1]), position(x, face[2])) +
+                                    triangle_area(position(x, face[0]), position(x, face[2]), position(x, face[3]));
+    const int corners = triangle ? 3 : 4;
+    double sum = 0.0;
+    for (int k = 0; k < corners; ++k) sum += f(face[k]);
+    integral += a * sum / corners;
+    area += a;
+  }
+  return integral;
+}
+
+}  // namespace
+
+double boundary_flow_rate(const FluidMesh& mesh, const std::vector<double>& velocity, const std::string& name) {
+  const BoundaryFaces& b = mesh.boundary(name);
+  if (b.outward_normal[0] == 0.0 && b.outward_normal[1] == 0.0 && b.outward_normal[2] == 0.0)
+    throw std::invalid_argument("rouleau::boundary_flow_rate: boundary '" + name + "' is not planar");
+  double area = 0.0;
+  return integrate_over_boundary(
+      mesh, name,
+      [&](int node) {
+        return velocity[3 * node] * b.outward_normal[0] + velocity[3 * node + 1] * b.outward_normal[1] +
+               velocity[3 * node + 2] * b.outward_normal[2];
+      },
+      area);
+}
+
+double boundary_mean_pressure(const FluidMesh& mesh, const std::vector<double>& pressure, const std::string& name) {
+  double area = 0.0;
+  const double integral = integrate_over_boundary(mesh, name, [&](int node) { return pressure[node]; }, area);
+  return integral / area;
+}
+
+double cross_section_flow_rate(const FluidMesh& mesh, const std::vector<double>& velocity, int axis,
+                               double position_on_axis) {
+  if (mesh.element_type != FluidElementType::tetrahedron4)
+    throw std::invalid_argument("rouleau::cross_section_flow_rate: needs a tetrahedral mesh");
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
+  auto elements = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.element_nodes);
+  double flow = 0.0;
+  for (int e = 0; e < mesh.num_elements; ++e) {
+    // Where the plane cuts the edges: points and the interpolated velocity component.
+    double s[4];
+    for (int a = 0; a < 4; ++a) s[a] = x(elements(e, a), axis) - position_on_axis;
+    Point cut[4];
+    double value[4];
+    int count = 0;
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b) {
+        if ((s[a] < 0.0) == (s[b] < 0.0)) continue;
+        const double t = s[a] / (s[a] - s[b]);
+        const int na = elements(e, a), nb = elements(e, b);
+        for (int d = 0; d < 3; ++d) cut[count][d] = x(na, d) + t * (x(nb, d) - x(na, d));
+        value[count] = velocity[3 * na + axis] + t * (velocity[3 * nb + axis] - velocity[3 * na + axis]);
+        ++count;
+      }
+    if (count == 3) {
+      flow += triangle_area(cut[0], cut[1], cut[2]) * (value[0] + value[1] + value[2]) / 3.0;
+    } else if (count == 4) {
+      // For the split {a, b} | {c, d} (a < b) the loop above cuts a–c, a–d, b–c, b–d in
+      // this order; around the quadrilateral they come as a–c, a–d, b–d, b–c.
+      const int cycle[4] = {0, 1, 3, 2};
+      const Point &p0 = cut[cycle[0]], &p1 = cut[cycle[1]], &p2 = cut[cycle[2]], &p3 = cut[cycle[3]];
+      const double v0 = value[cycle[0]], v1 = value[cycle[1]], v2 = value[cycle[2]], v3 = value[cycle[3]];
+      flow += triangle_area(p0, p1, p2) * (v0 + v1 + v2) / 3.0 + triangle_area(p0, p2, p3) * (v0 + v2 + v3) / 3.0;
+    }
+  }
+  return flow;
+}
+
+}  // namespace rouleau

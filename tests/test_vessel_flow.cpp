@@ -1,0 +1,186 @@
+// Flow in Gmsh vessels on tetrahedra (issue 6): Hagen–Poiseuille flow in a tube against
+// the exact solution (velocity profile, flow rate, pressure drop 8 μ L Q / (π R⁴)) with
+// measured convergence rates, and the flow rate through the cross-sections of a contraction.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "fluid/flow_rates.hpp"
+#include "fluid/fluid_errors.hpp"
+#include "fluid/fluid_solver.hpp"
+
+namespace rouleau {
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+// Unit scales (L = 1 μm, U = 1 μm/s, μ = 1 Pa·s, so P = 1 Pa): dimensional = scaled.
+FluidScales unit_scales() {
+  FluidScales s;
+  s.length = s.velocity = s.pressure = 1.0;
+  return s;
+}
+
+FluidConfig unit_viscosity() {
+  FluidConfig f;
+  f.viscosity = 1.0;
+  f.density = 0.0;
+  return f;
+}
+
+SolverConfig tight_solver() {
+  SolverConfig s;
+  s.newton_rtol = 1e-10;
+  s.newton_atol = 1e-12;
+  s.gmres_rtol = 1e-11;
+  s.gmres_restart = 150;
+  s.gmres_max_iterations = 20000;
+  return s;
+}
+
+// Inflow with mean speed U (Poiseuille profile) at the inlet, free outflow (p = 0,
+// tangential velocity 0) at the outlet, no-slip wall.
+std::vector<FluidBoundary> vessel_boundaries(double mean_speed) {
+  BoundaryConfig inlet, outlet, wall;
+  inlet.type = BoundaryType::inflow;
+  inlet.mean_speed = mean_speed;
+  inlet.profile = InflowProfile::parabolic;
+  outlet.type = BoundaryType::traction;
+  outlet.pressure = 0.0;
+  outlet.parallel_flow = true;
+  wall.type = BoundaryType::wall;
+  return {{"inlet", inlet}, {"outlet", outlet}, {"wall", wall}};
+}
+
+// u = 2U (1 − r²/R²) x̂, p = 8 μ U (L − x)/R² (μ = 1).
+struct HagenPoiseuille {
+  double radius, length, mean_speed;
+  KOKKOS_INLINE_FUNCTION void operator()(const double x[3], double u[3], double& p) const {
+    const double r2 = x[1] * x[1] + x[2] * x[2];
+    u[0] = 2.0 * mean_speed * (1.0 - r2 / (radius * radius));
+    u[1] = u[2] = 0.0;
+    p = 8.0 * mean_speed * (length - x[0]) / (radius * radius);
+  }
+};
+
+struct TubeResult {
+  double h, velocity_error, flow_rate, flow_balance, pressure_drop;
+  int gmres_iterations;
+  std::size_t tetrahedra;
+};
+
+TubeResult solve_tube(double radius, double length, double element_size) {
+  VesselProfile profile;
+  profile.radius = profile.throat_radius = radius;
+  profile.inlet_length = length;
+  const VesselMesh vessel = make_vessel_mesh(profile, VesselMeshSizes{element_size, 0.0});
+  const FluidMesh mesh = make_vessel_fluid_mesh(vessel, profile);
+  const double mean_speed = 1.0;
+  FluidSolver solver(mesh, unit_viscosity(), vessel_boundaries(mean_speed), tight_solver(), unit_scales(), true);
+  const FluidSolveReport report = solver.solve_steady();
+  EXPECT_TRUE(report.converged) << report.failure;
+  std::vector<double> velocity, pressure;
+  solver.velocity_and_pressure(velocity, pressure);
+  const FluidErrors errors =
+      fluid_l2_errors(solver.fluid_operator(), solver.state(), HagenPoiseuille{radius, length, mean_speed});
+  TubeResult result;
+  result.h = element_size;
+  result.tetrahedra = vessel.tetrahedra.size();
+  result.gmres_iterations = report.gmres_iterations;
+  result.velocity_error = errors.velocity / errors.velocity_norm;
+  const double inflow = -boundary_flow_rate(mesh, velocity, "inlet");
+  result.flow_rate = boundary_flow_rate(mesh, velocity, "outlet");
+  result.flow_balance = std::abs(result.flow_rate - inflow) / inflow;
+  result.pressure_drop = boundary_mean_pressure(mesh, pressure, "inlet") - boundary_mean_pressure(mesh, pressure, "outlet");
+  return result;
+}
+
+TEST(VesselFlow, HagenPoiseuilleInATubeConverges) {
+  // Tube R = 2, L = 8 (μm, μ = 1 Pa·s, U = 1 μm/s). Compared with the exact solution: the
+  // velocity (relative L2), the flow rate against πR²U, and the pressure drop against
+  // 8 μ L Q / (π R⁴) with the measured Q. Mass: the continuity rows sum to ∫∇·u dV, so
+  // outflow equals inflow to the solver's tolerance.
+  const double radius = 2.0, length = 8.0;
+  std::vector<TubeResult> results;
+  for (double h : {0.8, 0.566, 0.4, 0.283}) {
+    results.push_back(solve_tube(radius, length, h));
+    const TubeResult& r = results.back();
+    const double exact_drop = 8.0 * length * r.flow_rate / (pi * std::pow(radius, 4));
+    std::printf("tube h = %.3f (%zu tetrahedra, %d GMRES iterations): velocity error %.3e, Q/(πR²U) − 1 = %+.2e, "
+                "|Q_out − Q_in|/Q = %.1e, Δp = %.4f Pa against 8μLQ/(πR⁴) = %.4f Pa (%+.2e)\n",
+                r.h, r.tetrahedra, r.gmres_iterations, r.velocity_error, r.flow_rate / (pi * radius * radius) - 1.0,
+                r.flow_balance, r.pressure_drop, exact_drop, r.pressure_drop / exact_drop - 1.0);
+    EXPECT_LT(r.flow_balance, 1e-8);
+  }
+  const auto rate = [&](double coarse, double fine, double h_coarse, double h_fine) {
+    return std::log(coarse / fine) / std::log(h_coarse / h_fine);
+  };
+  const double velocity_rate = rate(results[0].velocity_error, results[3].velocity_error, results[0].h, results[3].h);
+  const auto drop_error = [&](const TubeResult& r) {
+    return std::abs(r.pressure_drop / (8.0 * length * r.flow_rate / (pi * std::pow(radius, 4))) - 1.0);
+  };
+  const auto flow_error = [&](const TubeResult& r) { return std::abs(r.flow_rate / (pi * radius * radius) - 1.0); };
+  std::printf("rates from h = 0.8 to 0.283: velocity %.2f, flow rate %.2f, pressure drop %.2f\n", velocity_rate,
+              rate(flow_error(results[0]), flow_error(results[3]), results[0].h, results[3].h),
+              rate(drop_error(results[0]), drop_error(results[3]), results[0].h, results[3].h));
+  EXPECT_GT(velocity_rate, 1.7);
+  EXPECT_LT(results.back().velocity_error, 0.02);
+  // The pressure-drop tolerance shrinks with refinement.
+  EXPECT_LT(drop_error(results[1]), drop_error(results[0]));
+  EXPECT_LT(drop_error(results[3]), drop_error(results[1]));
+  EXPECT_LT(drop_error(results[3]), 0.01);
+  // The flow rate of the prescribed profile on the polygonal inlet: second order.
+  EXPECT_LT(flow_error(results[3]), flow_error(results[0]));
+}
+
+// The flow rate through cross-sections of a contraction (3 → 1.5 μm, cosine transitions)
+// against the inflow. Summed over all nodes, the continuity rows are ∫∇·u dV = 0, so the
+// outflow equals the inflow to the solver's tolerance; a cross-section sees the weak,
+// stabilized continuity equation, so its flow rate is exact only up to the discretization
+// error, which must shrink with refinement.
+TEST(VesselFlow, ContractionConservesTheFlowRate) {
+  VesselProfile profile;
+  profile.radius = 3.0;
+  profile.throat_radius = 1.5;
+  profile.inlet_length = 4.0;
+  profile.contraction_length = 4.0;
+  profile.throat_length = 3.0;
+  profile.diffuser_length = 4.0;
+  profile.outlet_length = 5.0;
+  std::vector<double> deviations;
+  const double sizes[2] = {1.2, 0.85};
+  for (double h : sizes) {
+    const VesselMesh vessel = make_vessel_mesh(profile, VesselMeshSizes{h, 0.5 * h});
+    const FluidMesh mesh = make_vessel_fluid_mesh(vessel, profile);
+    FluidSolver solver(mesh, unit_viscosity(), vessel_boundaries(1.0), tight_solver(), unit_scales(), true);
+    const FluidSolveReport report = solver.solve_steady();
+    ASSERT_TRUE(report.converged) << report.failure;
+    std::vector<double> velocity, pressure;
+    solver.velocity_and_pressure(velocity, pressure);
+    const double inflow = -boundary_flow_rate(mesh, velocity, "inlet");
+    const double outflow = boundary_flow_rate(mesh, velocity, "outlet");
+    double deviation = 0.0, throat = 0.0;
+    for (int k = 1; k < 40; ++k) {
+      const double x = vessel_length(profile) * k / 40.0 + 1e-7;  // off the nodes' planes
+      const double q = cross_section_flow_rate(mesh, velocity, 0, x);
+      deviation = std::max(deviation, std::abs(q - inflow) / inflow);
+      if (std::abs(x - 9.5) < 0.3) throat = q;
+    }
+    deviations.push_back(deviation);
+    std::printf("contraction h = %.2f (%zu tetrahedra, %d GMRES iterations): inflow %.5f μm³/s, |outflow − inflow| / "
+                "inflow %.1e, largest cross-section deviation %.2e (throat %.5f); driving pressure %.3f Pa\n",
+                h, vessel.tetrahedra.size(), report.gmres_iterations, inflow, std::abs(outflow - inflow) / inflow,
+                deviation, throat,
+                boundary_mean_pressure(mesh, pressure, "inlet") - boundary_mean_pressure(mesh, pressure, "outlet"));
+    EXPECT_LT(std::abs(outflow - inflow) / inflow, 1e-8);
+  }
+  const double order = std::log(deviations[0] / deviations[1]) / std::log(sizes[0] / sizes[1]);
+  std::printf("cross-section flow-rate deviation: order %.2f in h\n", order);
+  EXPECT_GT(order, 1.5);
+  EXPECT_LT(deviations[1], 0.03);
+}
+
+}  // namespace
+}  // namespace rouleau

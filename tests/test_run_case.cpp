@@ -171,6 +171,47 @@ TEST(RunCase, ParabolicInflowIsCarriedThroughTheChannel) {
   EXPECT_GT(defect[0] / defect[1], 3.0);
 }
 
+TEST(RunCase, ContractionWritesTetrahedraAndTheDrivingPressure) {
+  // The contraction case, coarsened: the fields are on the vessel's tetrahedra; the
+  // outflow equals the inflow (global mass balance, to solver tolerance); the driving
+  // pressure is Hagen–Poiseuille's summed over cross-sections plus the entrance and exit
+  // losses (the case's own mesh: +3.9 %), so the relative apparent viscosity of plasma lies
+  // just above 1.
+  const std::string out = fresh_output_dir("contraction");
+  const Outcome o = run_rouleau("run " + cases_dir + "/contraction/case.toml --no-progress --out " + out +
+                                " --set vessel.element_size_um=3.0 --set vessel.wall_element_size_um=1.5");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto row = rouleau::read_last_diagnostics(out + "/diagnostics.csv");
+  const double inflow = row.at("flow_rate_inlet_um3_s"), outflow = row.at("flow_rate_outlet_um3_s");
+  std::printf("contraction (coarse): inflow %.3f, outflow %.3f um^3/s; driving pressure %.4f Pa, relative apparent "
+              "viscosity %.4f, mean wall shear stress %.4f Pa\n",
+              inflow, outflow, row.at("driving_pressure_Pa"), row.at("relative_apparent_viscosity"),
+              row.at("mean_wall_shear_stress_Pa"));
+  EXPECT_NEAR(outflow, inflow, 1e-5 * inflow);
+  // π R² U with R = 6 μm, U = 10 μm/s, less the polygonal inlet's O(h²) deficit.
+  EXPECT_NEAR(inflow, 3.14159265358979 * 36.0 * 10.0, 0.06 * 3.14159265358979 * 36.0 * 10.0);
+  EXPECT_GT(row.at("relative_apparent_viscosity"), 1.0);
+  EXPECT_LT(row.at("relative_apparent_viscosity"), 1.1);
+  EXPECT_GT(row.at("mean_wall_shear_stress_Pa"), 0.0);
+  EXPECT_NE(file_contents(out + "/fields.xdmf").find("TopologyType=\"Tetrahedron\""), std::string::npos);
+}
+
+TEST(RunCase, CapsuleEntersTheCapillaryCase) {
+  // The capillary case with its capsule, coarsened, three steps: the run completes, the
+  // capsule moves downstream, and the driving pressure is in the diagnostics.
+  const std::string out = fresh_output_dir("capillary");
+  const Outcome o = run_rouleau("run " + cases_dir + "/capillary/case.toml --no-progress --out " + out +
+                                " --set vessel.element_size_um=3.0 --set vessel.wall_element_size_um=1.5"
+                                " --set time.end_s=0.00042");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto row = rouleau::read_last_diagnostics(out + "/diagnostics.csv");
+  std::printf("capillary (coarse), 3 steps: capsule centroid x %.5f um, driving pressure %.4f Pa\n",
+              row.at("cell0_centroid_x_um"), row.at("driving_pressure_Pa"));
+  EXPECT_GT(row.at("cell0_centroid_x_um"), 7.0);
+  EXPECT_GT(row.at("driving_pressure_Pa"), 0.0);
+  EXPECT_LT(row.at("largest_relative_volume_change"), 1e-3);
+}
+
 TEST(RunCase, ExplainListsTheStokesLimitAndSkippedStages) {
   const Outcome o = run_rouleau("run " + cases_dir + "/shear_flow/case.toml --explain --out " +
                                 fresh_output_dir("explain"));

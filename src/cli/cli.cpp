@@ -104,18 +104,14 @@ CommandLine parse_driver_command_line(int argc, const char* const* argv, const s
 }
 
 std::string case_summary(const CaseConfig& config, const DerivedQuantities& derived) {
-  const DomainConfig& domain = config.domain;
-  const auto& n = domain.elements;
-  const long long element_count = static_cast<long long>(n[0]) * n[1] * n[2];
-  char text[512];
+  char text[768];
   std::snprintf(text, sizeof(text),
                 "case      %s\n"
-                "mesh      %d x %d x %d hexahedra (%lld elements), %g x %g x %g μm\n"
+                "mesh      %s\n"
                 "scales    L = %g μm, U = %g μm/s, pressure %g Pa\n"
                 "Re        %.3g\n"
                 "Stokes    %s: %s\n",
-                config.name.c_str(), n[0], n[1], n[2], element_count, domain.upper[0] - domain.lower[0],
-                domain.upper[1] - domain.lower[1], domain.upper[2] - domain.lower[2], derived.length_scale,
+                config.name.c_str(), describe_fluid_domain(config).c_str(), derived.length_scale,
                 derived.velocity_scale, derived.pressure_scale, derived.reynolds, derived.stokes ? "yes" : "no",
                 derived.stokes_reason.c_str());
   return text;

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "geometry/vessel_mesh.hpp"
+
 namespace rouleau {
 
 // Kinds of boundary on the sides of the box domain.
@@ -42,6 +44,22 @@ struct DomainConfig {
   // at both ends (refinement toward walls); 1 = uniform.   key wall_grading
   std::array<double, 3> wall_grading{1.0, 1.0, 1.0};
   std::array<BoundaryConfig, 6> boundary{};  // [boundary.x_min] ... [boundary.z_max]
+};
+
+// [vessel]: the fluid domain is the lumen of an axisymmetric vessel along x (a tube, a
+// contraction, a capillary with feeders), meshed with tetrahedra by Gmsh, instead of the
+// [domain] box. Its boundaries are [boundary.inlet] (x = 0), [boundary.outlet] (x = L) and
+// the no-slip wall.
+struct VesselConfig {
+  bool enabled = false;       // the case has a [vessel] section
+  // keys radius_um, throat_radius_um, inlet_length_um, contraction_length_um,
+  // throat_length_um, diffuser_length_um, outlet_length_um, transition = "cosine" | "cone"
+  VesselProfile profile;
+  VesselMeshSizes sizes;      // keys element_size_um, wall_element_size_um
+  // Cells wider than the throat (that must deform to pass it, the capillary scene) are
+  // allowed only when this is set.   key allow_squeeze
+  bool allow_squeeze = false;
+  BoundaryConfig inlet, outlet;  // [boundary.inlet]: inflow or traction; [boundary.outlet]: traction
 };
 
 struct FluidConfig {
@@ -215,7 +233,8 @@ struct CaseConfig {
   std::string name;
   std::string description;
   FluidConfig fluid;
-  DomainConfig domain;
+  DomainConfig domain;                     // [domain] and the box's [boundary.SIDE]s
+  VesselConfig vessel;                     // or [vessel] and [boundary.inlet|outlet|wall]
   TimeConfig time;
   SolverConfig solver;
   ScalesConfig scales;

@@ -28,6 +28,7 @@ std::string formatted(const char* format, double value) {
 
 double derived_length_scale(const CaseConfig& config) {
   if (config.scales.length > 0) return config.scales.length;
+  if (config.vessel.enabled) return 2.0 * config.vessel.profile.radius;  // the feeders' diameter
   const DomainConfig& domain = config.domain;
   double smallest_extent = 0.0, smallest_bounded_extent = 0.0;
   for (int axis = 0; axis < 3; ++axis) {
@@ -43,6 +44,14 @@ double derived_velocity_scale(const CaseConfig& config, double length_scale) {
   if (config.scales.velocity > 0) return config.scales.velocity;
   const DomainConfig& domain = config.domain;
   const double viscosity = config.fluid.viscosity;
+  if (config.vessel.enabled) {
+    const VesselConfig& vessel = config.vessel;
+    if (vessel.inlet.type == BoundaryType::inflow) return vessel.inlet.mean_speed;
+    // Pressure-driven: Hagen–Poiseuille's mean speed R² |Δp| / (8 μ ℓ) in the feeders.
+    const double radius = vessel.profile.radius, drop = std::abs(vessel.inlet.pressure - vessel.outlet.pressure);
+    const double speed = radius * radius * drop / (8.0 * viscosity * vessel_length(vessel.profile));
+    return speed > 0.0 ? speed : 1.0;
+  }
   double speed = 0.0;
   for (const BoundaryConfig& side : domain.boundary) {
     if (side.type == BoundaryType::wall) speed = std::max(speed, norm(side.velocity));
@@ -60,8 +69,15 @@ double derived_velocity_scale(const CaseConfig& config, double length_scale) {
   return speed > 0.0 ? speed : 1.0;
 }
 
-// The smallest fluid element edge [μm].
-double smallest_fluid_element(const DomainConfig& domain) {
+// The smallest fluid element edge [μm]: of the box, or the vessel's size field at the
+// throat's wall.
+double smallest_fluid_element(const CaseConfig& config) {
+  if (config.vessel.enabled) {
+    const VesselConfig& vessel = config.vessel;
+    const double wall = vessel.sizes.wall_element_size > 0.0 ? vessel.sizes.wall_element_size : vessel.sizes.element_size;
+    return wall * vessel.profile.throat_radius / vessel.profile.radius;
+  }
+  const DomainConfig& domain = config.domain;
   double smallest = 0.0;
   for (int axis = 0; axis < 3; ++axis) {
     const double h = smallest_graded_interval(domain.lower[axis], domain.upper[axis], domain.elements[axis],
@@ -93,7 +109,7 @@ double area_mode_shape_factor(CellShape shape) { return shape == CellShape::sphe
 // for a red cell at h_f = 1 μm).
 void derive_stable_step(const CaseConfig& config, DerivedQuantities& derived) {
   if (config.cells.empty() || config.time.mode == TimeMode::steady) return;
-  const double h_f = smallest_fluid_element(config.domain);
+  const double h_f = smallest_fluid_element(config);
   double stiffest = 0.0;
   std::string stiffest_kind;
   bool volume_constraint = false;
@@ -150,6 +166,25 @@ DerivedQuantities derive_quantities(const CaseConfig& config) {
   }
   derive_stable_step(config, derived);
   return derived;
+}
+
+std::string describe_fluid_domain(const CaseConfig& config) {
+  char text[256];
+  if (config.vessel.enabled) {
+    const VesselConfig& v = config.vessel;
+    const double wall = v.sizes.wall_element_size > 0.0 ? v.sizes.wall_element_size : v.sizes.element_size;
+    std::snprintf(text, sizeof(text),
+                  "vessel of tetrahedra (Gmsh), radius %g μm, throat %g μm, length %g μm, elements %g μm (%g μm at "
+                  "the wall)",
+                  v.profile.radius, v.profile.throat_radius, vessel_length(v.profile), v.sizes.element_size, wall);
+    return text;
+  }
+  const DomainConfig& d = config.domain;
+  const long long count = static_cast<long long>(d.elements[0]) * d.elements[1] * d.elements[2];
+  std::snprintf(text, sizeof(text), "%d x %d x %d hexahedra (%lld elements), %g x %g x %g μm", d.elements[0],
+                d.elements[1], d.elements[2], count, d.upper[0] - d.lower[0], d.upper[1] - d.lower[1],
+                d.upper[2] - d.lower[2]);
+  return text;
 }
 
 }  // namespace rouleau

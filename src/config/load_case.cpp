@@ -512,6 +512,58 @@ void read_boundaries(const TableReader& root, DomainConfig& domain) {
   }
 }
 
+void read_vessel(const TableReader& root, VesselConfig& vessel) {
+  const TableReader section =
+      root.table("vessel", {"radius_um", "throat_radius_um", "inlet_length_um", "contraction_length_um",
+                            "throat_length_um", "diffuser_length_um", "outlet_length_um", "transition",
+                            "element_size_um", "wall_element_size_um", "allow_squeeze"});
+  vessel.enabled = true;
+  VesselProfile& p = vessel.profile;
+  p.radius = require(section, "radius_um", section.number("radius_um"));
+  p.throat_radius = section.number("throat_radius_um").value_or(p.radius);
+  p.inlet_length = require(section, "inlet_length_um", section.number("inlet_length_um"));
+  p.contraction_length = section.number("contraction_length_um").value_or(0.0);
+  p.throat_length = section.number("throat_length_um").value_or(0.0);
+  p.diffuser_length = section.number("diffuser_length_um").value_or(0.0);
+  p.outlet_length = section.number("outlet_length_um").value_or(0.0);
+  assign(p.transition, section.choice("transition", choices_of({VesselTransition::cosine, VesselTransition::cone})));
+  if (const auto problem = vessel_profile_problem(p)) section.fail(problem->key, problem->reason);
+  vessel.sizes.element_size = require(section, "element_size_um", section.number("element_size_um"));
+  vessel.sizes.wall_element_size = section.number("wall_element_size_um").value_or(0.0);
+  if (const auto problem = vessel_mesh_sizes_problem(p, vessel.sizes)) section.fail(problem->key, problem->reason);
+  assign(vessel.allow_squeeze, section.boolean("allow_squeeze"));
+}
+
+// [boundary.inlet] (inflow or traction), [boundary.outlet] (traction), [boundary.wall]
+// (type "wall" only: the vessel's wall does not move).
+void read_vessel_boundaries(const TableReader& root, VesselConfig& vessel) {
+  const TableReader boundaries = root.table("boundary", {"inlet", "outlet", "wall"});
+  const auto read_end = [&](const char* name, BoundaryConfig& boundary,
+                            std::vector<std::pair<std::string_view, BoundaryType>> types) {
+    if (!boundaries.has(name))
+      boundaries.fail(name, std::string("missing: a vessel needs [boundary.") + name + "] (type = " +
+                                (types.size() > 1 ? "\"inflow\" or \"traction\"" : "\"traction\"") + ")");
+    const TableReader reader =
+        boundaries.table(name, {"type", "mean_speed_um_s", "profile", "pressure_Pa", "parallel_flow"});
+    boundary.type = require(reader, "type", reader.choice("type", types));
+    const std::vector<std::string_view> allowed = boundary_keys_of(boundary.type);
+    for (const std::string& key : reader.present_keys())
+      if (key != "type" && !contains(allowed, key))
+        reader.fail(key, "does not belong to boundary type \"" + std::string(toml_name(boundary.type)) +
+                             "\" (it takes " + joined(allowed, false) + ")");
+    const auto mean_speed = reader.number("mean_speed_um_s", Range::above(0));
+    if (boundary.type == BoundaryType::inflow) require(reader, "mean_speed_um_s", mean_speed);
+    assign(boundary.mean_speed, mean_speed);
+    assign(boundary.profile, reader.choice("profile", choices_of({InflowProfile::uniform, InflowProfile::parabolic})));
+    assign(boundary.pressure, reader.number("pressure_Pa"));
+    assign(boundary.parallel_flow, reader.boolean("parallel_flow"));
+  };
+  read_end("inlet", vessel.inlet, choices_of({BoundaryType::inflow, BoundaryType::traction}));
+  read_end("outlet", vessel.outlet, choices_of({BoundaryType::traction}));
+  const TableReader wall = boundaries.table("wall", {"type"});
+  (void)wall.choice("type", choices_of({BoundaryType::wall}));
+}
+
 void read_time(const TableReader& root, TimeConfig& time) {
   const TableReader section = root.table("time", {"mode", "scheme", "dt_s", "end_s"});
   assign(time.mode, section.choice("mode", choices_of({TimeMode::steady, TimeMode::transient})));
@@ -852,6 +904,9 @@ const char* toml_name(CellShape shape) {
   }
   return "?";
 }
+const char* toml_name(VesselTransition transition) {
+  return transition == VesselTransition::cosine ? "cosine" : "cone";
+}
 const char* toml_name(CellBody body) { return body == CellBody::shell ? "shell" : "filled"; }
 const char* toml_name(MeshResolution resolution) {
   switch (resolution) {
@@ -867,14 +922,21 @@ CaseConfig load_case(const std::string& path, const std::vector<std::string>& ov
   const ErrorSource errors(path, apply_overrides(document, overrides));
   // [derived] is written by resolved_case_toml() for the reader; it is output-only.
   const TableReader root(&document, "", errors,
-                         {"case", "fluid", "domain", "boundary", "time", "solver", "scales", "output",
+                         {"case", "fluid", "domain", "vessel", "boundary", "time", "solver", "scales", "output",
                           "cell_kinds", "cells", "interaction", "coupling", "scene", "derived"});
   CaseConfig config;
   config.source_file = path;
   read_case_section(root, path, config);
   read_fluid(root, config.fluid);
-  read_domain(root, config.domain);
-  read_boundaries(root, config.domain);
+  if (root.has("vessel")) {
+    if (root.has("domain"))
+      root.fail("vessel", "a case has either a [domain] box or a [vessel], not both (remove one of the two tables)");
+    read_vessel(root, config.vessel);
+    read_vessel_boundaries(root, config.vessel);
+  } else {
+    read_domain(root, config.domain);
+    read_boundaries(root, config.domain);
+  }
   read_time(root, config.time);
   read_solver(root, config.solver);
   read_scales(root, config.scales);

@@ -43,6 +43,7 @@ const char* toml_name(InteractionQuadrature quadrature);
 const char* toml_name(CellShape shape);
 const char* toml_name(CellBody body);
 const char* toml_name(MeshResolution resolution);
+const char* toml_name(VesselTransition transition);
 
 // Whether `key` can be written as a bare TOML key (letters, digits, '_' and '-'; not empty).
 bool is_bare_toml_key(std::string_view key);

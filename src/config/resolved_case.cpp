@@ -143,20 +143,15 @@ std::string resolved_case_toml(const CaseConfig& config, const DerivedQuantities
   toml_file.key("viscosity_Pa_s", config.fluid.viscosity);
   toml_file.key("body_force_Pa_um", config.fluid.body_force);
 
-  const DomainConfig& domain = config.domain;
-  toml_file.table("domain");
-  toml_file.key("lower_um", domain.lower);
-  toml_file.key("upper_um", domain.upper);
-  toml_file.key("elements", domain.elements);
-  toml_file.key("wall_grading", domain.wall_grading);
-
-  for (int side = 0; side < 6; ++side) {
-    const BoundaryConfig& boundary = domain.boundary[side];
-    toml_file.table(std::string("boundary.") + side_names[side]);
+  // One [boundary.NAME] table.
+  const auto boundary_table = [&](const std::string& name, const BoundaryConfig& boundary) {
+    toml_file.table("boundary." + name);
     toml_file.key("type", toml_name(boundary.type));
     switch (boundary.type) {
       case BoundaryType::periodic: break;
-      case BoundaryType::wall: toml_file.key("velocity_um_s", boundary.velocity); break;
+      case BoundaryType::wall:
+        if (!config.vessel.enabled) toml_file.key("velocity_um_s", boundary.velocity);
+        break;
       case BoundaryType::inflow:
         toml_file.key("mean_speed_um_s", boundary.mean_speed);
         toml_file.key("profile", toml_name(boundary.profile));
@@ -166,6 +161,33 @@ std::string resolved_case_toml(const CaseConfig& config, const DerivedQuantities
         toml_file.key("parallel_flow", boundary.parallel_flow);
         break;
     }
+  };
+  if (config.vessel.enabled) {
+    const VesselConfig& vessel = config.vessel;
+    toml_file.table("vessel");
+    toml_file.key("radius_um", vessel.profile.radius);
+    toml_file.key("throat_radius_um", vessel.profile.throat_radius);
+    toml_file.key("inlet_length_um", vessel.profile.inlet_length);
+    toml_file.key("contraction_length_um", vessel.profile.contraction_length);
+    toml_file.key("throat_length_um", vessel.profile.throat_length);
+    toml_file.key("diffuser_length_um", vessel.profile.diffuser_length);
+    toml_file.key("outlet_length_um", vessel.profile.outlet_length);
+    toml_file.key("transition", toml_name(vessel.profile.transition));
+    toml_file.key("element_size_um", vessel.sizes.element_size);
+    toml_file.key("wall_element_size_um", vessel.sizes.wall_element_size);
+    toml_file.key("allow_squeeze", vessel.allow_squeeze);
+    boundary_table("inlet", vessel.inlet);
+    boundary_table("outlet", vessel.outlet);
+    BoundaryConfig wall;
+    boundary_table("wall", wall);
+  } else {
+    const DomainConfig& domain = config.domain;
+    toml_file.table("domain");
+    toml_file.key("lower_um", domain.lower);
+    toml_file.key("upper_um", domain.upper);
+    toml_file.key("elements", domain.elements);
+    toml_file.key("wall_grading", domain.wall_grading);
+    for (int side = 0; side < 6; ++side) boundary_table(side_names[side], domain.boundary[side]);
   }
 
   toml_file.table("time");

@@ -14,6 +14,11 @@ std::vector<FluidBoundary> box_boundaries(const std::array<BoundaryConfig, 6>& s
   return boundaries;
 }
 
+std::vector<FluidBoundary> case_boundaries(const CaseConfig& config) {
+  if (!config.vessel.enabled) return box_boundaries(config.domain.boundary);
+  return {{"inlet", config.vessel.inlet}, {"outlet", config.vessel.outlet}, {"wall", BoundaryConfig{}}};
+}
+
 FluidBoundaryConditions build_boundary_conditions(const FluidMesh& mesh, const std::array<BoundaryConfig, 6>& sides,
                                                   const FluidScales& scales) {
   return build_boundary_conditions(mesh, box_boundaries(sides), scales);

@@ -41,6 +41,9 @@ struct FluidBoundary {
 // mesh identifies their nodes).
 std::vector<FluidBoundary> box_boundaries(const std::array<BoundaryConfig, 6>& sides);
 
+// The boundaries of a case: its box's sides, or its vessel's inlet, outlet and no-slip wall.
+std::vector<FluidBoundary> case_boundaries(const CaseConfig& config);
+
 // Walls (no-slip or moving) and inflows give Dirichlet velocities, and traction sides with
 // parallel_flow a zero tangential velocity; where sides meet, a wall wins over an inflow,
 // which wins over a parallel-flow side. A parabolic inflow on a box side is the product of

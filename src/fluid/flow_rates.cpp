@@ -63,6 +63,12 @@ double boundary_mean_pressure(const FluidMesh& mesh, const std::vector<double>& 
   return integral / area;
 }
 
+double boundary_area(const FluidMesh& mesh, const std::string& name) {
+  double area = 0.0;
+  integrate_over_boundary(mesh, name, [](int) { return 0.0; }, area);
+  return area;
+}
+
 double cross_section_flow_rate(const FluidMesh& mesh, const std::vector<double>& velocity, int axis,
                                double position_on_axis) {
   if (mesh.element_type != FluidElementType::tetrahedron4)

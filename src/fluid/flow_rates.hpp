@@ -18,6 +18,9 @@ double boundary_flow_rate(const FluidMesh& mesh, const std::vector<double>& velo
 // geometric node.
 double boundary_mean_pressure(const FluidMesh& mesh, const std::vector<double>& pressure, const std::string& name);
 
+// The area of the boundary `name` [μm²].
+double boundary_area(const FluidMesh& mesh, const std::string& name);
+
 // ∫ u_axis dA over the cross-section {x_axis = position} of a tetrahedral mesh [μm³/s]:
 // each tetrahedron the plane cuts contributes its section (a triangle or a quadrilateral),
 // on which the linear u_axis is integrated exactly. Throws for a hexahedral mesh.

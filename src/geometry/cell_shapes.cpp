@@ -508,6 +508,48 @@ std::array<std::array<double, 3>, 3> placement_rotation(const CellPlacement& pla
   return product(rz, product(ry, rx));
 }
 
+namespace {
+// A cell in a vessel: every placed sample inside the lumen (0 ≤ x ≤ L, r < R(x)); and, unless
+// vessel.allow_squeeze, no wider than the throat: its passing diameter (the middle extent
+// of its body-frame bounding box: a disc's or a sphere's diameter, a sickle's width; a
+// rigid body whose passing diameter exceeds a round opening cannot pass it) at most 2 R_t.
+void check_inside_vessel(const CaseConfig& config, std::size_t i, const std::vector<Vector3>& samples,
+                         const Matrix3& rotation) {
+  const std::string& file = config.source_file;
+  const CellPlacement& cell = config.cells[i];
+  const VesselProfile& profile = config.vessel.profile;
+  const std::string key = "cells[" + std::to_string(i) + "].";
+  const std::string which = "cell " + std::to_string(i) + " (" + cell.kind + ")";
+  Vector3 lowest{+INFINITY, +INFINITY, +INFINITY}, highest{-INFINITY, -INFINITY, -INFINITY};
+  for (const Vector3& p : samples) {
+    for (int axis = 0; axis < 3; ++axis) {
+      lowest[axis] = std::min(lowest[axis], p[axis]);
+      highest[axis] = std::max(highest[axis], p[axis]);
+    }
+    const Vector3 rotated = multiply(rotation, p);
+    const Vector3 x{cell.center[0] + rotated[0], cell.center[1] + rotated[1], cell.center[2] + rotated[2]};
+    const double r = std::hypot(x[1], x[2]);
+    if (x[0] < 0.0 || x[0] > vessel_length(profile))
+      throw InputError(file, key + "center_um",
+                       which + " reaches beyond the vessel's ends: its surface point " + format_point(x) +
+                           " μm is outside x in [0, " + format_number(vessel_length(profile)) + "] μm");
+    if (!(r < vessel_radius(profile, x[0])))
+      throw InputError(file, key + "center_um",
+                       which + " reaches outside the vessel: its surface point " + format_point(x) +
+                           " μm is at distance " + format_number(r) + " μm from the axis where the lumen's radius is " +
+                           format_number(vessel_radius(profile, x[0])) + " μm");
+  }
+  Vector3 extent{highest[0] - lowest[0], highest[1] - lowest[1], highest[2] - lowest[2]};
+  std::sort(extent.begin(), extent.end());
+  const double passing_diameter = extent[1];
+  if (!config.vessel.allow_squeeze && passing_diameter > 2.0 * profile.throat_radius)
+    throw InputError(file, key + "kind",
+                     which + " is larger than the vessel: its passing diameter " + format_number(passing_diameter) +
+                         " μm exceeds the throat's diameter " + format_number(2.0 * profile.throat_radius) +
+                         " μm; set vessel.allow_squeeze = true to let the flow squeeze it through");
+}
+}  // namespace
+
 void check_cell_placement(const CaseConfig& config) {
   // Surface samples this far apart: two cells 0.3 μm apart are told from touching ones,
   // and the surface between samples bulges by less than spacing²/(8 × curvature radius).
@@ -561,6 +603,10 @@ void check_cell_placement(const CaseConfig& config) {
         lowest[axis] = std::min(lowest[axis], cell.center[axis] + rotated[axis]);
         highest[axis] = std::max(highest[axis], cell.center[axis] + rotated[axis]);
       }
+    }
+    if (config.vessel.enabled) {
+      check_inside_vessel(config, i, samples_of_kind.at(kind_of_cell[i]).samples, rotation[i]);
+      continue;
     }
     for (int axis = 0; axis < 3; ++axis) {
       const double lower = config.domain.lower[axis], upper = config.domain.upper[axis];

@@ -1,5 +1,6 @@
 #include "geometry/vessel_profile.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -50,6 +51,27 @@ double vessel_volume(const VesselProfile& p) {
                           pi * p.throat_radius * p.throat_radius * p.throat_length;
   return straight + transition_volume(p.transition, p.contraction_length, p.radius, p.throat_radius) +
          transition_volume(p.transition, p.diffuser_length, p.throat_radius, p.radius);
+}
+
+double vessel_poiseuille_drop(const VesselProfile& p, double viscosity, double flow_rate) {
+  // ∫ dx / r⁴: exact on the straight parts, composite Simpson (200 intervals) across each
+  // transition, whose r(x) is smooth.
+  const auto across_transition = [&](double start, double length) {
+    if (!(length > 0.0)) return 0.0;
+    const int n = 200;
+    double sum = 0.0;
+    for (int k = 0; k <= n; ++k) {
+      const double x = start + length * k / n;
+      const double r = vessel_radius(p, std::clamp(x, start + 1e-12 * length, start + length * (1.0 - 1e-12)));
+      sum += (k == 0 || k == n ? 1.0 : (k % 2 ? 4.0 : 2.0)) / (r * r * r * r);
+    }
+    return sum * length / (3.0 * n);
+  };
+  const double r4 = std::pow(p.radius, 4), t4 = std::pow(p.throat_radius, 4);
+  const double integral = (p.inlet_length + p.outlet_length) / r4 + p.throat_length / t4 +
+                          across_transition(p.inlet_length, p.contraction_length) +
+                          across_transition(p.inlet_length + p.contraction_length + p.throat_length, p.diffuser_length);
+  return 8.0 * viscosity * flow_rate / pi * integral;
 }
 
 std::optional<VesselProfileProblem> vessel_profile_problem(const VesselProfile& p) {

@@ -42,6 +42,11 @@ double vessel_radius(const VesselProfile& profile, double x);
 // transition π L (3R² + 2R R_t + 3R_t²)/8, a cone π L (R² + R R_t + R_t²)/3.
 double vessel_volume(const VesselProfile& profile);
 
+// Hagen–Poiseuille's pressure drop along the vessel for a flow rate Q [μm³/s] of fluid of
+// viscosity μ [Pa·s], summed over cross-sections (lubrication): Δp = (8 μ Q / π) ∫ dx / r(x)⁴
+// [Pa]. Exact for a tube; in a contraction it leaves out the entrance and exit losses.
+double vessel_poiseuille_drop(const VesselProfile& profile, double viscosity, double flow_rate);
+
 // What is wrong with a profile, if anything: the name of the offending quantity (the
 // config key's last part: "radius_um", "throat_radius_um", "inlet_length_um", ...) and the
 // reason, for one clear line at load. Refused: a radius ≤ 0; a throat wider than the

@@ -97,6 +97,9 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
   const FluidSolver& solver = simulation.fluid();
   const CaseCells& cells = simulation.cells();
   ImmersedCoupling* coupling = simulation.coupling();
+  std::cerr << "fluid mesh: " << simulation.mesh().num_nodes << " nodes, " << simulation.mesh().num_elements << " "
+            << (simulation.mesh().element_type == FluidElementType::tetrahedron4 ? "tetrahedra" : "hexahedra") << ", "
+            << solver.fluid_operator().num_unknowns() << " unknowns\n";
   if (coupling)
     std::cerr << "explicit coupling: dt = " << config.time.dt << " s, stable step estimate " << derived.stable_dt
               << " s (" << derived.stable_dt_reason << ")"
@@ -119,7 +122,7 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
 
   const CellDiagnostics cell_diagnostics(cells);
   CouplingDiagnostics coupling_diagnostics;
-  std::vector<std::string> columns = FluidDiagnostics::columns();
+  std::vector<std::string> columns = FluidDiagnostics::columns(config);
   if (cells.population) {
     const auto cell_columns = cell_diagnostics.columns();
     columns.insert(columns.end(), cell_columns.begin(), cell_columns.end());

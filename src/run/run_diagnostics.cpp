@@ -1,6 +1,7 @@
 #include "run/run_diagnostics.hpp"
 
 #include "cells/cell_shape.hpp"
+#include "fluid/flow_rates.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -8,15 +9,37 @@
 
 namespace rouleau {
 
-std::vector<std::string> FluidDiagnostics::columns() {
-  return {"step", "time_s", "newton_iterations", "gmres_iterations", "momentum_residual", "continuity_residual",
-          "mean_velocity_x_um_s", "mean_velocity_y_um_s", "mean_velocity_z_um_s", "fluid_kinetic_energy_pN_um",
-          "wall_shear_stress_y_min_Pa", "wall_shear_stress_y_max_Pa", "relative_apparent_viscosity", "wall_time_s"};
+std::vector<std::string> FluidDiagnostics::columns(const CaseConfig& config) {
+  std::vector<std::string> names{"step", "time_s", "newton_iterations", "gmres_iterations", "momentum_residual",
+                                 "continuity_residual", "mean_velocity_x_um_s", "mean_velocity_y_um_s",
+                                 "mean_velocity_z_um_s", "fluid_kinetic_energy_pN_um"};
+  if (config.vessel.enabled)
+    names.insert(names.end(), {"flow_rate_inlet_um3_s", "flow_rate_outlet_um3_s", "driving_pressure_Pa",
+                               "mean_wall_shear_stress_Pa", "relative_apparent_viscosity"});
+  else
+    names.insert(names.end(), {"wall_shear_stress_y_min_Pa", "wall_shear_stress_y_max_Pa", "relative_apparent_viscosity"});
+  names.push_back("wall_time_s");
+  return names;
 }
 
-std::vector<double> FluidDiagnostics::row(const CaseConfig& config, const FluidSolver& solver, int step,
-                                          const FluidSolveReport& report, double wall_time) {
-  const auto u = solver.mean_velocity();
+namespace {
+// Flow rates in and out, driving pressure, mean wall shear stress, relative apparent viscosity.
+std::vector<double> vessel_row(const CaseConfig& config, const FluidSolver& solver) {
+  const FluidMesh& mesh = solver.fluid_operator().mesh();
+  std::vector<double> velocity, pressure;
+  solver.velocity_and_pressure(velocity, pressure);
+  const double inflow = -boundary_flow_rate(mesh, velocity, "inlet");
+  const double outflow = boundary_flow_rate(mesh, velocity, "outlet");
+  const double driving_pressure =
+      boundary_mean_pressure(mesh, pressure, "inlet") - boundary_mean_pressure(mesh, pressure, "outlet");
+  // The force the fluid exerts on the wall along the axis, per wall area.
+  const double wall_shear = solver.boundary_forces({"wall"})[0][0] / boundary_area(mesh, "wall");
+  const double plasma_drop = vessel_poiseuille_drop(config.vessel.profile, config.fluid.viscosity, outflow);
+  return {inflow, outflow, driving_pressure, wall_shear, plasma_drop != 0.0 ? driving_pressure / plasma_drop : NAN};
+}
+
+// Wall shear stress on the y walls and τ_w / (μ γ̇).
+std::vector<double> shear_box_row(const CaseConfig& config, const FluidSolver& solver) {
   const DomainConfig& domain = config.domain;
   const double area = (domain.upper[0] - domain.lower[0]) * (domain.upper[2] - domain.lower[2]);
   double shear[2] = {NAN, NAN};
@@ -38,20 +61,27 @@ std::vector<double> FluidDiagnostics::row(const CaseConfig& config, const FluidS
       (domain.boundary[Side::y_max].velocity[0] - domain.boundary[Side::y_min].velocity[0]) / height;
   if (std::isfinite(shear[1]) && shear_rate != 0.0)
     relative_viscosity = shear[1] / (config.fluid.viscosity * shear_rate);
-  return {double(step),
-          solver.time(),
-          double(report.newton_iterations),
-          double(report.gmres_iterations),
-          report.momentum_residual,
-          report.continuity_residual,
-          u[0],
-          u[1],
-          u[2],
-          solver.kinetic_energy(),
-          shear[0],
-          shear[1],
-          relative_viscosity,
-          wall_time};
+  return {shear[0], shear[1], relative_viscosity};
+}
+}  // namespace
+
+std::vector<double> FluidDiagnostics::row(const CaseConfig& config, const FluidSolver& solver, int step,
+                                          const FluidSolveReport& report, double wall_time) {
+  const auto u = solver.mean_velocity();
+  std::vector<double> values{double(step),
+                             solver.time(),
+                             double(report.newton_iterations),
+                             double(report.gmres_iterations),
+                             report.momentum_residual,
+                             report.continuity_residual,
+                             u[0],
+                             u[1],
+                             u[2],
+                             solver.kinetic_energy()};
+  const std::vector<double> domain_values = config.vessel.enabled ? vessel_row(config, solver) : shear_box_row(config, solver);
+  values.insert(values.end(), domain_values.begin(), domain_values.end());
+  values.push_back(wall_time);
+  return values;
 }
 
 CellDiagnostics::CellDiagnostics(const CaseCells& cells) {

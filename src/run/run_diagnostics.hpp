@@ -15,8 +15,14 @@
 
 namespace rouleau {
 
+// Shear boxes: the wall shear stress on the y walls and the relative apparent viscosity
+// τ_w / (μ γ̇). Vessels: the flow rates through inlet and outlet, the driving pressure (the
+// mean pressure on the inlet less that on the outlet, the paper's Fig. 17), the mean wall
+// shear stress F_x / A_wall, and the relative apparent viscosity Δp / Δp_HP(Q) against
+// Hagen–Poiseuille's drop for the outflow Q (vessel_poiseuille_drop(): 1 for plasma in a
+// tube; a contraction's cell-free run gives its plasma value).
 struct FluidDiagnostics {
-  static std::vector<std::string> columns();
+  static std::vector<std::string> columns(const CaseConfig& config);
   // `wall_time`: seconds since the run started.
   static std::vector<double> row(const CaseConfig& config, const FluidSolver& solver, int step,
                                  const FluidSolveReport& report, double wall_time);

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "config/cell_kinds.hpp"
+#include "config/derived.hpp"
 #include "config/load_case.hpp"
 
 namespace rouleau {
@@ -119,9 +120,7 @@ std::vector<Stage> plan_stages(const CaseConfig& config, const DerivedQuantities
 std::string describe_stages(const CaseConfig& config, const DerivedQuantities& derived,
                             const std::vector<Stage>& stages) {
   std::ostringstream out;
-  const auto& d = config.domain;
-  out << "case " << config.name << ": " << d.elements[0] << "x" << d.elements[1] << "x" << d.elements[2]
-      << " hexahedra; scales L = " << derived.length_scale << " um, U = " << derived.velocity_scale
+  out << "case " << config.name << ": " << describe_fluid_domain(config) << "; scales L = " << derived.length_scale << " um, U = " << derived.velocity_scale
       << " um/s, P = " << derived.pressure_scale << " Pa; Re = " << derived.reynolds << "\n";
   out << "stages:\n";
   for (const Stage& s : stages) out << "  [" << (s.runs ? "run " : "skip") << "] " << s.name << ": " << s.reason << "\n";

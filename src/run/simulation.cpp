@@ -7,7 +7,15 @@
 
 namespace rouleau {
 
-FluidMesh make_case_mesh(const CaseConfig& config) {
+FluidMesh make_case_mesh(const CaseConfig& config, const std::string& mesh_cache_dir) {
+  if (config.vessel.enabled) {
+    try {
+      return make_vessel_fluid_mesh(vessel_mesh(config.vessel.profile, config.vessel.sizes, mesh_cache_dir),
+                                    config.vessel.profile);
+    } catch (const std::runtime_error& error) {
+      throw InputError(config.source_file, "vessel", error.what());
+    }
+  }
   const DomainConfig& domain = config.domain;
   std::array<bool, 3> periodic{};
   for (int d = 0; d < 3; ++d) periodic[d] = domain.boundary[2 * d].type == BoundaryType::periodic;
@@ -21,9 +29,9 @@ Simulation::Simulation(const CaseConfig& config, const std::string& mesh_cache_d
   scales.velocity = derived_.velocity_scale;
   scales.pressure = derived_.pressure_scale;
   scales.reynolds = derived_.reynolds;
-  mesh_ = times_.time("mesh", [&] { return make_case_mesh(config_); });
+  mesh_ = times_.time("mesh", [&] { return make_case_mesh(config_, mesh_cache_dir); });
   fluid_ = times_.time("fluid setup", [&] {
-    return std::make_unique<FluidSolver>(mesh_, config_.fluid, config_.domain.boundary, config_.solver, scales,
+    return std::make_unique<FluidSolver>(mesh_, config_.fluid, case_boundaries(config_), config_.solver, scales,
                                          derived_.stokes);
   });
   cells_ = times_.time("cell meshes", [&] { return make_case_cells(config_, mesh_cache_dir); });

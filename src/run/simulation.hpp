@@ -55,7 +55,8 @@ class Simulation {
   int steps_ = 0;
 };
 
-// The fluid mesh a case describes (a box of hexahedra, periodic where the case says).
-FluidMesh make_case_mesh(const CaseConfig& config);
+// The fluid mesh a case describes: a box of hexahedra, periodic where the case says, or a
+// vessel's lumen of tetrahedra (Gmsh, cached in `mesh_cache_dir`).
+FluidMesh make_case_mesh(const CaseConfig& config, const std::string& mesh_cache_dir);
 
 }  // namespace rouleau

@@ -59,6 +59,10 @@ struct VesselConfig {
   // Cells wider than the throat (that must deform to pass it, the capillary scene) are
   // allowed only when this is set.   key allow_squeeze
   bool allow_squeeze = false;
+  // The wall's short-range repulsion of cell surface nodes (kernels/wall_repulsion.hpp): a
+  // pressure p_w (1 − d/d0)² within d0 of the wall; 0 turns it off.
+  double wall_repulsion_pressure = 2.0;  // p_w [Pa]     key wall_repulsion_Pa
+  double wall_repulsion_range = 0.5;     // d0 [μm]      key wall_repulsion_range_um
   BoundaryConfig inlet, outlet;  // [boundary.inlet]: inflow or traction; [boundary.outlet]: traction
 };
 

@@ -125,12 +125,23 @@ void derive_stable_step(const CaseConfig& config, DerivedQuantities& derived) {
       stiffest_kind = kind.name;
     }
   }
+  // A vessel wall's repulsion: stiffness ∂f/∂d = 2 p_w A / d0 at contact, over the area
+  // h_f² that one fluid element gathers: G_wall = 2 p_w h_f² / d0.
+  if (config.vessel.enabled && config.vessel.wall_repulsion_pressure > 0.0) {
+    const double wall = 2.0 * config.vessel.wall_repulsion_pressure * h_f * h_f / config.vessel.wall_repulsion_range;
+    if (wall > stiffest) {
+      stiffest = wall;
+      stiffest_kind = "the vessel wall's repulsion 2 p_w h_f^2 / d0";
+    }
+  }
   const double C = config.coupling.stable_step_factor;
   derived.stable_dt = C * config.fluid.viscosity * h_f / stiffest;
   derived.stable_dt_reason = "C mu h_f / G_eff = " + formatted("%g", C) + " x " +
                              formatted("%g", config.fluid.viscosity) + " Pa s x " + formatted("%g", h_f) +
-                             " um / " + formatted("%g", stiffest) + " pN/um (kind " + stiffest_kind +
-                             ", the stiffest membrane; smallest fluid element h_f)" +
+                             " um / " + formatted("%g", stiffest) + " pN/um (" +
+                             (stiffest_kind.rfind("the vessel", 0) == 0 ? stiffest_kind
+                                                                        : "kind " + stiffest_kind + ", the stiffest membrane") +
+                             "; smallest fluid element h_f)" +
                              (volume_constraint ? "; it leaves out the volume constraint (volume_modulus_Pa)" : "");
 }
 

@@ -516,7 +516,8 @@ void read_vessel(const TableReader& root, VesselConfig& vessel) {
   const TableReader section =
       root.table("vessel", {"radius_um", "throat_radius_um", "inlet_length_um", "contraction_length_um",
                             "throat_length_um", "diffuser_length_um", "outlet_length_um", "transition",
-                            "element_size_um", "wall_element_size_um", "allow_squeeze"});
+                            "element_size_um", "wall_element_size_um", "allow_squeeze", "wall_repulsion_Pa",
+                            "wall_repulsion_range_um"});
   vessel.enabled = true;
   VesselProfile& p = vessel.profile;
   p.radius = require(section, "radius_um", section.number("radius_um"));
@@ -532,6 +533,11 @@ void read_vessel(const TableReader& root, VesselConfig& vessel) {
   vessel.sizes.wall_element_size = section.number("wall_element_size_um").value_or(0.0);
   if (const auto problem = vessel_mesh_sizes_problem(p, vessel.sizes)) section.fail(problem->key, problem->reason);
   assign(vessel.allow_squeeze, section.boolean("allow_squeeze"));
+  assign(vessel.wall_repulsion_pressure, section.number("wall_repulsion_Pa", Range::at_least(0)));
+  assign(vessel.wall_repulsion_range, section.number("wall_repulsion_range_um", Range::above(0)));
+  if (!(vessel.wall_repulsion_range < p.throat_radius))
+    section.fail("wall_repulsion_range_um", "must be below the throat's radius " + format_number(p.throat_radius) +
+                                                " μm (it is a short-range force)");
 }
 
 // [boundary.inlet] (inflow or traction), [boundary.outlet] (traction), [boundary.wall]

@@ -176,6 +176,8 @@ std::string resolved_case_toml(const CaseConfig& config, const DerivedQuantities
     toml_file.key("element_size_um", vessel.sizes.element_size);
     toml_file.key("wall_element_size_um", vessel.sizes.wall_element_size);
     toml_file.key("allow_squeeze", vessel.allow_squeeze);
+    toml_file.key("wall_repulsion_Pa", vessel.wall_repulsion_pressure);
+    toml_file.key("wall_repulsion_range_um", vessel.wall_repulsion_range);
     boundary_table("inlet", vessel.inlet);
     boundary_table("outlet", vessel.outlet);
     BoundaryConfig wall;

@@ -59,6 +59,11 @@ ImmersedCoupling::ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, c
   previous_velocities_ = NodeVectors("rouleau::ImmersedCoupling::previous_velocities", nodes);
   fluid_load_ = Kokkos::View<double*>("rouleau::ImmersedCoupling::fluid_load", fluid.fluid_operator().num_unknowns());
   if (interaction_) interaction_forces_ = NodeVectors("rouleau::ImmersedCoupling::interaction_forces", nodes);
+  if (config.vessel.enabled && config.vessel.wall_repulsion_pressure > 0.0) {
+    wall_ = std::make_unique<WallRepulsion>(config.vessel.profile, config.vessel.wall_repulsion_pressure,
+                                            config.vessel.wall_repulsion_range);
+    wall_forces_ = NodeVectors("rouleau::ImmersedCoupling::wall_forces", nodes);
+  }
   // The inertia/buoyancy stage changes nothing when every cell is as dense as the fluid.
   const std::vector<double> mass = nodal_excess_mass(population_, config);
   bool any_excess = false;
@@ -87,9 +92,14 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
       interaction_->compute_forces();
       interaction_->copy_forces_to_nodes(interaction_forces_);
     });
+  if (wall_)
+    times.time(wall_stage, [&] {
+      wall_->compute(population_.positions(), population_.surface_area_weights(), wall_forces_);
+    });
   times.time(runs_inertia_ ? inertia_stage : elastic_stage, [&] {
     FsiForceFunctor<NodeVectors, Kokkos::View<double*>> sum{population_.internal_forces(),
                                                             interaction_forces_,
+                                                            wall_forces_,
                                                             excess_mass_,
                                                             population_.velocities(),
                                                             previous_velocities_,

@@ -2,7 +2,8 @@
 // One explicit step of the immersed finite element method (DESIGN.md, "One time step";
 // paper eqs. 5–16), for the cells of a case on the fixed fluid mesh:
 //   1. forces on the cell nodes at x^n, each its own stage: elastic (neo-Hookean, eqs. 2,
-//      9, 10), Morse between cells (eqs. 3, 4, 11), inertia and buoyancy (eq. 7);
+//      9, 10), Morse between cells (eqs. 3, 4, 11), a vessel wall's repulsion, inertia and
+//      buoyancy (eq. 7);
 //   2. spread: F_J = Σ_I Φ_J(x_I^n) F_I (eq. 16), nodal loads on the fluid;
 //   3. the fluid solve from t^n to t^{n+1} (eqs. 13, 14);
 //   4. interpolate: v_I^{n+1} = Σ_J Φ_J(x_I^n) u_J^{n+1} (eqs. 6, 15);
@@ -12,11 +13,13 @@
 // and interpolation use the same shape functions, so the power the cells put into the
 // fluid equals the power the fluid gives back to round-off; both are reported.
 #include <Kokkos_Core.hpp>
+#include <memory>
 #include <string>
 
 #include "cells/cells_from_case.hpp"
 #include "config/case_config.hpp"
 #include "coupling/rkpm_coupler.hpp"
+#include "coupling/wall_repulsion.hpp"
 #include "fluid/fluid_solver.hpp"
 #include "run/stage_times.hpp"
 
@@ -29,6 +32,7 @@ class ImmersedCoupling {
   // The stage names, as timed and printed.
   static constexpr const char* elastic_stage = "neo-Hookean forces";
   static constexpr const char* interaction_stage = "Morse forces";
+  static constexpr const char* wall_stage = "wall repulsion";
   static constexpr const char* inertia_stage = "inertia/buoyancy";
   static constexpr const char* spread_stage = "RKPM spread";
   static constexpr const char* fluid_stage = "fluid solve";
@@ -53,6 +57,7 @@ class ImmersedCoupling {
 
   bool runs_interaction() const { return interaction_ != nullptr; }
   bool runs_inertia() const { return runs_inertia_; }
+  bool runs_wall_repulsion() const { return wall_ != nullptr; }
   // F_I of the last step [pN] (the sum of the stages' forces) and the Morse part alone.
   const NodeVectors& fsi_forces() const { return fsi_forces_; }
   const NodeVectors& interaction_forces() const { return interaction_forces_; }
@@ -62,6 +67,7 @@ class ImmersedCoupling {
   FluidSolver& fluid_;
   CellPopulation& population_;
   SurfaceInteraction* interaction_;
+  std::unique_ptr<WallRepulsion> wall_;    // a vessel with wall_repulsion_Pa > 0
   RkpmCoupler rkpm_;
   bool skip_unneeded_;
   bool runs_inertia_ = false;
@@ -69,7 +75,7 @@ class ImmersedCoupling {
   double previous_dt_ = 0.0;
   Kokkos::View<double*> excess_mass_;      // (ρ_s − ρ_f) V_I per node [pN·s²/μm]
   NodeVectors previous_velocities_;        // v^{n−1}, for dv/dt
-  NodeVectors interaction_forces_, fsi_forces_;
+  NodeVectors interaction_forces_, wall_forces_, fsi_forces_;
   NodeVectors interpolated_;               // v̂_I, the scaled fluid velocity at the nodes
   Kokkos::View<double*> fluid_load_;       // the spread forces on the fluid's unknowns [pN]
 };

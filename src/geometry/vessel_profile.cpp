@@ -46,6 +46,27 @@ double vessel_radius(const VesselProfile& p, double x) {
   return p.radius;
 }
 
+double vessel_radius_slope(const VesselProfile& p, double x) {
+  // d/dx of from + (to − from) w(s), s = (x − start)/L: (to − from) w'(s)/L with
+  // w' = (π/2) sin(π s) (cosine) or 1 (cone).
+  const auto transition_slope = [&](double from, double to, double s, double length) {
+    const double dw = p.transition == VesselTransition::cosine ? 0.5 * pi * std::sin(pi * s) : 1.0;
+    return (to - from) * dw / length;
+  };
+  const double contraction_start = p.inlet_length;
+  const double throat_start = contraction_start + p.contraction_length;
+  const double diffuser_start = throat_start + p.throat_length;
+  const double outlet_start = diffuser_start + p.diffuser_length;
+  if (x < contraction_start) return 0.0;
+  if (x < throat_start)
+    return transition_slope(p.radius, p.throat_radius, (x - contraction_start) / p.contraction_length,
+                            p.contraction_length);
+  if (x < diffuser_start) return 0.0;
+  if (x < outlet_start)
+    return transition_slope(p.throat_radius, p.radius, (x - diffuser_start) / p.diffuser_length, p.diffuser_length);
+  return 0.0;
+}
+
 double vessel_volume(const VesselProfile& p) {
   const double straight = pi * p.radius * p.radius * (p.inlet_length + p.outlet_length) +
                           pi * p.throat_radius * p.throat_radius * p.throat_length;

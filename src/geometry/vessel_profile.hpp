@@ -38,6 +38,10 @@ double vessel_length(const VesselProfile& profile);
 // r(x) [μm] for 0 ≤ x ≤ L (clamped outside).
 double vessel_radius(const VesselProfile& profile, double x);
 
+// dr/dx at x (0 on the straight parts; at the parts' junctions the value of the part x
+// starts; both transitions are C¹ there for the cosine).
+double vessel_radius_slope(const VesselProfile& profile, double x);
+
 // The lumen's volume π ∫ r(x)² dx [μm³], exactly: the straight parts π R² L, a cosine
 // transition π L (3R² + 2R R_t + 3R_t²)/8, a cone π L (R² + R R_t + R_t²)/3.
 double vessel_volume(const VesselProfile& profile);

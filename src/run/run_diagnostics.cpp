@@ -120,7 +120,8 @@ std::vector<double> CellDiagnostics::row(const CaseCells& cells) const {
 
 namespace {
 const std::vector<const char*> coupling_stages{
-    ImmersedCoupling::elastic_stage, ImmersedCoupling::interaction_stage, ImmersedCoupling::inertia_stage,
+    ImmersedCoupling::elastic_stage, ImmersedCoupling::interaction_stage, ImmersedCoupling::wall_stage,
+    ImmersedCoupling::inertia_stage,
     ImmersedCoupling::spread_stage,  ImmersedCoupling::fluid_stage,       ImmersedCoupling::interpolate_stage,
     ImmersedCoupling::move_stage};
 

@@ -41,6 +41,7 @@ std::vector<Stage> plan_stages(const CaseConfig& config, const DerivedQuantities
     stages.push_back({"Morse cell-cell forces", false, no_cells});
     stages.push_back({"inertia/buoyancy", false, no_cells});
     stages.push_back({"RKPM interpolate/spread", false, no_cells});
+    if (config.vessel.enabled) stages.push_back({"wall repulsion", false, no_cells});
   } else {
     std::map<std::string, int> count_per_kind;
     for (const CellPlacement& cell : config.cells) ++count_per_kind[cell.kind];
@@ -84,6 +85,18 @@ std::vector<Stage> plan_stages(const CaseConfig& config, const DerivedQuantities
       stages.push_back({"Morse cell-cell forces", true, morse.str()});
     } else {
       stages.push_back({"Morse cell-cell forces", false, "skipped: interaction.enabled = false"});
+    }
+    if (config.vessel.enabled) {
+      const VesselConfig& vessel = config.vessel;
+      std::ostringstream wall;
+      wall << "the vessel wall pushes cell surface nodes within " << vessel.wall_repulsion_range
+           << " um of it with the pressure " << vessel.wall_repulsion_pressure << " Pa x (1 - d/d0)^2";
+      if (!moving)
+        stages.push_back({"wall repulsion", false, steady_only});
+      else if (vessel.wall_repulsion_pressure > 0.0)
+        stages.push_back({"wall repulsion", true, wall.str()});
+      else
+        stages.push_back({"wall repulsion", false, "skipped: vessel.wall_repulsion_Pa = 0"});
     }
     bool denser = false;
     for (const CellPlacement& cell : config.cells)

@@ -1,0 +1,30 @@
+#pragma once
+// The vessel wall's repulsion of cell surface nodes (kernels/wall_repulsion.hpp), set up
+// from a case: the lumen's radius tabulated once, the forces and energy on demand.
+#include <Kokkos_Core.hpp>
+
+#include "geometry/vessel_profile.hpp"
+#include "kernels/wall_repulsion.hpp"
+
+namespace rouleau {
+
+class WallRepulsion {
+ public:
+  using NodeVectors = Kokkos::View<double* [3]>;
+
+  // R(x) and R'(x) tabulated at `samples` equal steps over [0, L]; p_w [Pa], d0 [μm].
+  WallRepulsion(const VesselProfile& profile, double pressure, double range, int samples = 2049);
+
+  // force(a) = f_a of every node from its position and reference surface area weight;
+  // returns Σ E_a [pN·μm].
+  double compute(const NodeVectors& positions, const Kokkos::View<double*>& area_weights,
+                 const NodeVectors& force) const;
+
+  const VesselWallRepulsion& kernel() const { return wall_; }
+
+ private:
+  Kokkos::View<double*> radius_table_, slope_table_;
+  VesselWallRepulsion wall_;
+};
+
+}  // namespace rouleau

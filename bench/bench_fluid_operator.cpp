@@ -9,15 +9,19 @@
 //   BM_Triad/n            a = b + s·c over as many bytes as BM_JacobianAction/n moves
 //   BM_StokesSolve/n/pc   one steady Stokes solve of a manufactured problem (pc 1: block
 //                         Jacobi, 0: none), one iteration, GMRES iterations reported
+//   BM_VesselJacobianAction/n, BM_VesselLinearAction/n
+//                         the same passes on a Gmsh tube (R = 5 μm, L = 40 μm) of 4-node
+//                         tetrahedra with about as many nodes as the box's (n + 1)³
 //
 // Mesh: the unit cube in n³ trilinear hexahedra, no periodicity, walls (Dirichlet
-// velocity) on all six sides. The state and direction are random in [−1, 1].
+// velocity) on all six sides; or the tube, no-slip on its wall, inlet and outlet. The
+// state and direction are random in [−1, 1].
 //
 // Byte model ("GB/s"): the bytes a perfect implementation must move per application —
 // each nodal vector it reads gathered exactly once (4 doubles per node), the result
 // written once (4 doubles per node), and per element the stored quadrature geometry
-// (8 points × 10 doubles: J⁻¹ and det J·w), the element size h (1 double) and the
-// connectivity (8 ints). The nodal vectors read are
+// (8 points × 10 doubles: J⁻¹ and det J·w; 4 points on a tetrahedron), the element size
+// h (1 double) and the connectivity (8 ints; 4). The nodal vectors read are
 //   jacobian_action: state, direction, BDF history, body force     (4 vectors)
 //   residual:        state (= frozen, the same View), history, force (3 vectors)
 //   linear_action:   direction                                       (1 vector)
@@ -38,7 +42,9 @@
 #include "bench_common.hpp"
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/fluid_operator.hpp"
+#include "fluid/fluid_element_types.hpp"
 #include "fluid/fluid_solver.hpp"
+#include "geometry/mesh_cache.hpp"
 #include "mesh/fluid_mesh.hpp"
 
 namespace {
@@ -51,7 +57,7 @@ using rouleau::Vector;
 using rouleau::bench::bytes_per_double;
 using rouleau::bench::bytes_per_int;
 using rouleau::bench::time_applications;
-constexpr double geometry_doubles_per_element = 8.0 * rouleau::geometry_entries;
+constexpr double geometry_doubles_per_element = 8.0 * rouleau::geometry_entries;  // hexahedra
 
 enum class Pass { jacobian_action, linear_action, residual };
 
@@ -67,30 +73,52 @@ int vectors_read(Pass pass) {
 // The byte model above, for one application on `mesh`.
 double operator_bytes(const FluidMesh& mesh, Pass pass) {
   const double unknowns = mesh.num_unknowns();
-  const double per_element = (geometry_doubles_per_element + 1.0) * bytes_per_double + 8.0 * bytes_per_int;
+  const double geometry_doubles = rouleau::fluid_quadrature_points(mesh.element_type) * rouleau::geometry_entries;
+  const double per_element = (geometry_doubles + 1.0) * bytes_per_double + mesh.nodes_per_element * bytes_per_int;
   return (vectors_read(pass) + 1) * unknowns * bytes_per_double + mesh.num_elements * per_element;
 }
 
-// An operator on the unit cube with walls everywhere and random state, direction and
-// sources. Built once per mesh size and kept while benchmarks of that size run
+enum class Domain { box, tube };
+
+// A Gmsh tube of radius 5 μm and length 40 μm whose element size gives about (n + 1)³
+// nodes: Gmsh makes about 0.89 V/h³ nodes in it (measured at h = 0.52 μm).
+FluidMesh tube_mesh(int n) {
+  rouleau::VesselProfile tube;
+  tube.radius = tube.throat_radius = 5.0;
+  tube.inlet_length = 40.0;
+  const double nodes = std::pow(n + 1.0, 3), volume = rouleau::vessel_volume(tube);
+  const double h = std::cbrt(0.89 * volume / nodes);
+  return rouleau::make_vessel_fluid_mesh(
+      rouleau::vessel_mesh(tube, rouleau::VesselMeshSizes{h, 0.0}, rouleau::default_mesh_cache_dir()), tube);
+}
+
+// An operator on the unit cube (or the tube) with walls everywhere and random state,
+// direction and sources. Built once per mesh and kept while benchmarks of that mesh run
 // (Google Benchmark calls a benchmark function several times to size its loop).
 struct OperatorProblem {
   int n;
+  Domain domain;
   FluidMesh mesh;
   FluidOperator op;
   Vector state, direction, history, force, result;
 
-  explicit OperatorProblem(int cells)
+  OperatorProblem(int cells, Domain shape)
       : n(cells),
-        mesh(rouleau::make_box_mesh({0, 0, 0}, {1, 1, 1}, {cells, cells, cells}, {1, 1, 1}, {false, false, false})),
+        domain(shape),
+        mesh(shape == Domain::box ? rouleau::make_box_mesh({0, 0, 0}, {1, 1, 1}, {cells, cells, cells}, {1, 1, 1},
+                                                           {false, false, false})
+                                  : tube_mesh(cells)),
         op(mesh, 1.0),
         state("state", mesh.num_unknowns()),
         direction("direction", mesh.num_unknowns()),
         history("history", mesh.num_unknowns()),
         force("force", mesh.num_unknowns()),
         result("result", mesh.num_unknowns()) {
-    const auto bc = rouleau::build_boundary_conditions(mesh, std::array<rouleau::BoundaryConfig, 6>{},
-                                                       rouleau::FluidScales{});
+    const auto bc = domain == Domain::box
+                        ? rouleau::build_boundary_conditions(mesh, std::array<rouleau::BoundaryConfig, 6>{},
+                                                             rouleau::FluidScales{})
+                        : rouleau::build_boundary_conditions(
+                              mesh, {{"inlet", {}}, {"outlet", {}}, {"wall", {}}}, rouleau::FluidScales{});
     op.set_dirichlet(bc.dirichlet_dofs, bc.dirichlet_values);
     Kokkos::Random_XorShift64_Pool<> pool(20240607);
     Kokkos::fill_random(state, pool, -1.0, 1.0);
@@ -126,10 +154,10 @@ struct OperatorProblem {
 
 std::unique_ptr<OperatorProblem> cached_problem;
 
-OperatorProblem& problem(int n) {
-  if (!cached_problem || cached_problem->n != n) {
-    cached_problem.reset();  // free the previous size first
-    cached_problem = std::make_unique<OperatorProblem>(n);
+OperatorProblem& problem(int n, Domain domain = Domain::box) {
+  if (!cached_problem || cached_problem->n != n || cached_problem->domain != domain) {
+    cached_problem.reset();  // free the previous mesh first
+    cached_problem = std::make_unique<OperatorProblem>(n, domain);
   }
   return *cached_problem;
 }
@@ -156,6 +184,23 @@ void BM_JacobianAction(benchmark::State& state) {
 
 void BM_LinearAction(benchmark::State& state) {
   OperatorProblem& p = problem(static_cast<int>(state.range(0)));
+  p.stokes();
+  time_applications(state, [&] { p.op.linear_action(p.direction, p.result); });
+  set_operator_counters(state, p.mesh, Pass::linear_action);
+}
+
+// The same two passes on the tetrahedral tube with about the box's number of unknowns.
+void BM_VesselJacobianAction(benchmark::State& state) {
+  OperatorProblem& p = problem(static_cast<int>(state.range(0)), Domain::tube);
+  p.navier_stokes();
+  rouleau::Vector state_gradient("state_gradient", 9 * p.mesh.num_dof_nodes);
+  p.op.project_gradient(p.state, state_gradient);
+  time_applications(state, [&] { p.op.jacobian_action(p.state, state_gradient, p.direction, p.result); });
+  set_operator_counters(state, p.mesh, Pass::jacobian_action);
+}
+
+void BM_VesselLinearAction(benchmark::State& state) {
+  OperatorProblem& p = problem(static_cast<int>(state.range(0)), Domain::tube);
   p.stokes();
   time_applications(state, [&] { p.op.linear_action(p.direction, p.result); });
   set_operator_counters(state, p.mesh, Pass::linear_action);
@@ -263,6 +308,12 @@ BENCHMARK(BM_Triad)->Apply(operator_sizes);
 BENCHMARK(BM_JacobianAction)->Apply(operator_sizes);
 BENCHMARK(BM_LinearAction)->Apply(operator_sizes);
 BENCHMARK(BM_Residual)->Apply(operator_sizes);
+// Tubes of about 17³, 33³, 49³ nodes, as the boxes of n = 16, 32, 48.
+void vessel_sizes(benchmark::internal::Benchmark* b) {
+  b->ArgName("n")->Arg(16)->Arg(32)->Arg(48)->UseManualTime()->Unit(benchmark::kMillisecond);
+}
+BENCHMARK(BM_VesselJacobianAction)->Apply(vessel_sizes);
+BENCHMARK(BM_VesselLinearAction)->Apply(vessel_sizes);
 BENCHMARK(BM_StokesSolve)
     ->ArgNames({"n", "preconditioner"})
     ->Args({8, 2})

@@ -8,36 +8,14 @@
 
 #include "fluid/fluid_errors.hpp"
 #include "fluid/fluid_solver.hpp"
+#include "unit_fluid.hpp"
 
 namespace rouleau {
 namespace {
 
-// Unit scales (L = 1 μm, U = 1 μm/s, μ = 1 Pa·s, so P = 1 Pa): dimensional = scaled.
-FluidScales unit_scales(double reynolds) {
-  FluidScales s;
-  s.length = 1.0;
-  s.velocity = 1.0;
-  s.pressure = 1.0;
-  s.reynolds = reynolds;
-  return s;
-}
-
-FluidConfig unit_fluid(double reynolds) {
-  FluidConfig f;
-  f.viscosity = 1.0;
-  f.density = reynolds;
-  return f;
-}
-
-SolverConfig tight_solver() {
-  SolverConfig s;
-  s.newton_rtol = 1e-10;
-  s.newton_atol = 1e-12;
-  s.gmres_rtol = 1e-10;
-  s.gmres_restart = 100;
-  s.gmres_max_iterations = 20000;
-  return s;
-}
+using testing::tight_solver;
+using testing::unit_fluid;
+using testing::unit_scales;
 
 // Observed order between meshes of n_coarse and n_fine elements per direction.
 double rate(double coarse_error, double fine_error, int n_coarse, int n_fine) {

@@ -11,6 +11,7 @@
 
 #include "coupling/rkpm_coupler.hpp"
 #include "mesh/fluid_mesh.hpp"
+#include "vessel_profiles.hpp"
 
 namespace rouleau {
 namespace {
@@ -179,14 +180,7 @@ TEST(Rkpm, ReproducesLinearFieldsNextToTheCurvedWallOfAVessel) {
   // every point; it must reproduce linear fields exactly at points up to 0.05 μm from the
   // wall, in the feeders, the transitions and the throat; and spreading stays the
   // transpose of interpolation.
-  VesselProfile profile;
-  profile.radius = 3.0;
-  profile.throat_radius = 1.5;
-  profile.inlet_length = 4.0;
-  profile.contraction_length = 4.0;
-  profile.throat_length = 3.0;
-  profile.diffuser_length = 4.0;
-  profile.outlet_length = 4.0;
+  const VesselProfile profile = testing::small_contraction();
   const FluidMesh mesh = make_vessel_fluid_mesh(make_vessel_mesh(profile, VesselMeshSizes{1.0, 0.5}), profile);
   RkpmCoupler coupler(mesh);
   std::mt19937 rng(11);

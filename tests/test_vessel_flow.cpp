@@ -10,35 +10,13 @@
 #include "fluid/flow_rates.hpp"
 #include "fluid/fluid_errors.hpp"
 #include "fluid/fluid_solver.hpp"
+#include "unit_fluid.hpp"
+#include "vessel_profiles.hpp"
 
 namespace rouleau {
 namespace {
 
 constexpr double pi = 3.14159265358979323846;
-
-// Unit scales (L = 1 μm, U = 1 μm/s, μ = 1 Pa·s, so P = 1 Pa): dimensional = scaled.
-FluidScales unit_scales() {
-  FluidScales s;
-  s.length = s.velocity = s.pressure = 1.0;
-  return s;
-}
-
-FluidConfig unit_viscosity() {
-  FluidConfig f;
-  f.viscosity = 1.0;
-  f.density = 0.0;
-  return f;
-}
-
-SolverConfig tight_solver() {
-  SolverConfig s;
-  s.newton_rtol = 1e-10;
-  s.newton_atol = 1e-12;
-  s.gmres_rtol = 1e-11;
-  s.gmres_restart = 150;
-  s.gmres_max_iterations = 20000;
-  return s;
-}
 
 // Inflow with mean speed U (Poiseuille profile) at the inlet, free outflow (p = 0,
 // tangential velocity 0) at the outlet, no-slip wall.
@@ -72,13 +50,11 @@ struct TubeResult {
 };
 
 TubeResult solve_tube(double radius, double length, double element_size) {
-  VesselProfile profile;
-  profile.radius = profile.throat_radius = radius;
-  profile.inlet_length = length;
+  const VesselProfile profile = testing::tube(radius, length);
   const VesselMesh vessel = make_vessel_mesh(profile, VesselMeshSizes{element_size, 0.0});
   const FluidMesh mesh = make_vessel_fluid_mesh(vessel, profile);
   const double mean_speed = 1.0;
-  FluidSolver solver(mesh, unit_viscosity(), vessel_boundaries(mean_speed), tight_solver(), unit_scales(), true);
+  FluidSolver solver(mesh, testing::unit_fluid(0.0), vessel_boundaries(mean_speed), testing::tight_solver(), testing::unit_scales(0.0), true);
   const FluidSolveReport report = solver.solve_steady();
   EXPECT_TRUE(report.converged) << report.failure;
   std::vector<double> velocity, pressure;
@@ -146,17 +122,15 @@ TEST(VesselFlow, PressureDrivenTubeCarriesHagenPoiseuillesFlowRate) {
   const double exact = pi * std::pow(radius, 4) * drop / (8.0 * length);
   std::vector<double> errors, inlet_pressure_errors;
   for (double h : {0.8, 0.566, 0.4, 0.283}) {
-    VesselProfile profile;
-    profile.radius = profile.throat_radius = radius;
-    profile.inlet_length = length;
+    const VesselProfile profile = testing::tube(radius, length);
     const VesselMesh vessel = make_vessel_mesh(profile, VesselMeshSizes{h, 0.0});
     const FluidMesh mesh = make_vessel_fluid_mesh(vessel, profile);
     BoundaryConfig inlet, outlet, wall;
     inlet.type = outlet.type = BoundaryType::traction;
     inlet.pressure = drop;
     inlet.parallel_flow = outlet.parallel_flow = true;
-    FluidSolver solver(mesh, unit_viscosity(), {{"inlet", inlet}, {"outlet", outlet}, {"wall", wall}}, tight_solver(),
-                       unit_scales(), true);
+    FluidSolver solver(mesh, testing::unit_fluid(0.0), {{"inlet", inlet}, {"outlet", outlet}, {"wall", wall}}, testing::tight_solver(),
+                       testing::unit_scales(0.0), true);
     const FluidSolveReport report = solver.solve_steady();
     ASSERT_TRUE(report.converged) << report.failure;
     std::vector<double> velocity, pressure;
@@ -188,20 +162,13 @@ TEST(VesselFlow, PressureDrivenTubeCarriesHagenPoiseuillesFlowRate) {
 // stabilized continuity equation, so its flow rate is exact only up to the discretization
 // error, which must shrink with refinement.
 TEST(VesselFlow, ContractionConservesTheFlowRate) {
-  VesselProfile profile;
-  profile.radius = 3.0;
-  profile.throat_radius = 1.5;
-  profile.inlet_length = 4.0;
-  profile.contraction_length = 4.0;
-  profile.throat_length = 3.0;
-  profile.diffuser_length = 4.0;
-  profile.outlet_length = 5.0;
+  const VesselProfile profile = testing::small_contraction();
   std::vector<double> deviations;
   const double sizes[2] = {1.2, 0.85};
   for (double h : sizes) {
     const VesselMesh vessel = make_vessel_mesh(profile, VesselMeshSizes{h, 0.5 * h});
     const FluidMesh mesh = make_vessel_fluid_mesh(vessel, profile);
-    FluidSolver solver(mesh, unit_viscosity(), vessel_boundaries(1.0), tight_solver(), unit_scales(), true);
+    FluidSolver solver(mesh, testing::unit_fluid(0.0), vessel_boundaries(1.0), testing::tight_solver(), testing::unit_scales(0.0), true);
     const FluidSolveReport report = solver.solve_steady();
     ASSERT_TRUE(report.converged) << report.failure;
     std::vector<double> velocity, pressure;

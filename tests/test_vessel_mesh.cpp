@@ -11,6 +11,7 @@
 #include <string>
 
 #include "geometry/vessel_mesh.hpp"
+#include "vessel_profiles.hpp"
 
 namespace {
 
@@ -19,28 +20,9 @@ using rouleau::Triangle;
 using rouleau::VesselMesh;
 using rouleau::VesselMeshSizes;
 using rouleau::VesselProfile;
+using rouleau::testing::tube;
 
 constexpr double pi = 3.14159265358979323846;
-
-VesselProfile tube(double radius, double length) {
-  VesselProfile p;
-  p.radius = p.throat_radius = radius;
-  p.inlet_length = length;
-  return p;
-}
-
-// A contraction 3 μm → 1.5 μm with cosine transitions.
-VesselProfile contraction() {
-  VesselProfile p;
-  p.radius = 3.0;
-  p.throat_radius = 1.5;
-  p.inlet_length = 4.0;
-  p.contraction_length = 4.0;
-  p.throat_length = 3.0;
-  p.diffuser_length = 4.0;
-  p.outlet_length = 4.0;
-  return p;
-}
 
 double mesh_volume(const VesselMesh& mesh) {
   double volume = 0.0;
@@ -95,7 +77,7 @@ TEST(VesselMesh, TubeVolumeConvergesAtSecondOrderAndTheBoundaryCloses) {
 }
 
 TEST(VesselMesh, ContractionWallNodesLieOnTheProfileAndTheMeshIsGraded) {
-  const VesselProfile p = contraction();
+  const VesselProfile p = rouleau::testing::small_contraction();
   const VesselMeshSizes sizes{0.8, 0.4};
   const VesselMesh mesh = rouleau::make_vessel_mesh(p, sizes);
   std::set<int> wall_nodes;

@@ -9,24 +9,12 @@
 #include <random>
 
 #include "coupling/wall_repulsion.hpp"
+#include "vessel_profiles.hpp"
 
 namespace rouleau {
 namespace {
 
 using NodeVectors = WallRepulsion::NodeVectors;
-
-// The contraction 3 → 1.5 μm of the vessel tests, cosine transitions.
-VesselProfile contraction() {
-  VesselProfile p;
-  p.radius = 3.0;
-  p.throat_radius = 1.5;
-  p.inlet_length = 4.0;
-  p.contraction_length = 4.0;
-  p.throat_length = 3.0;
-  p.diffuser_length = 4.0;
-  p.outlet_length = 4.0;
-  return p;
-}
 
 constexpr double pressure = 2.0, range = 0.5;
 
@@ -52,7 +40,7 @@ void random_nodes(const VesselProfile& profile, int count, NodeVectors& position
 }
 
 TEST(WallRepulsion, ForceIsMinusTheGradientOfTheEnergy) {
-  const VesselProfile profile = contraction();
+  const VesselProfile profile = testing::small_contraction();
   const WallRepulsion wall(profile, pressure, range);
   NodeVectors positions, forces("forces", 200);
   Kokkos::View<double*> weights;
@@ -86,7 +74,7 @@ TEST(WallRepulsion, ForceIsMinusTheGradientOfTheEnergy) {
 TEST(WallRepulsion, MatchesAPlainSerialReferenceOnTheExactProfile) {
   // f = p_w A s² (R'(x), −y/r, −z/r), s = 1 − (R(x) − r)/d0, with R and R' from the exact
   // profile (R' by central differences) instead of the kernel's table (cubic Hermite).
-  const VesselProfile profile = contraction();
+  const VesselProfile profile = testing::small_contraction();
   const WallRepulsion wall(profile, pressure, range);
   NodeVectors positions, forces("forces", 500);
   Kokkos::View<double*> weights;
@@ -117,9 +105,7 @@ TEST(WallRepulsion, MatchesAPlainSerialReferenceOnTheExactProfile) {
 }
 
 TEST(WallRepulsion, ActsOnlyWithinItsRangeWithThePressureAtContact) {
-  VesselProfile tube;
-  tube.radius = tube.throat_radius = 3.0;
-  tube.inlet_length = 10.0;
+  const VesselProfile tube = testing::tube(3.0, 10.0);
   const WallRepulsion wall(tube, pressure, range);
   // Nodes at d = 0.6, 0.5, 0.25, 0 from the wall, weight 0.1 μm²; and one with no weight.
   const double gaps[5] = {0.6, 0.5, 0.25, 0.0, 0.0};
@@ -150,9 +136,7 @@ TEST(WallRepulsion, ActsOnlyWithinItsRangeWithThePressureAtContact) {
 TEST(WallRepulsion, ANodePushedAtTheWallStopsWhereTheForcesBalance) {
   // A node of area weight A pushed outward by a constant F < p_w A, moving with the
   // overdamped mobility 1/ζ, comes to rest at d* = d0 (1 − √(F/(p_w A))), inside the lumen.
-  VesselProfile tube;
-  tube.radius = tube.throat_radius = 3.0;
-  tube.inlet_length = 10.0;
+  const VesselProfile tube = testing::tube(3.0, 10.0);
   const WallRepulsion wall(tube, pressure, range);
   const double area = 0.1, push = 0.5 * pressure * area, mobility_times_step = 0.05;  // [μm/pN]
   NodeVectors position("position", 1), force("force", 1);

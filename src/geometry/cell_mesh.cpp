@@ -264,30 +264,8 @@ TetrahedralMesh mesh_with_gmsh(const CellKindConfig& kind, double element_size) 
     case CellShape::sickle: add_unbent_sickle(kind); break;
   }
   gmsh::model::occ::synchronize();
-  gmsh::option::setNumber("Mesh.MeshSizeMax", element_size);
-  gmsh::option::setNumber("Mesh.MeshSizeMin", 0.0);
-  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
-  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
   const ElementSizeField size_field(kind, element_size, elements_per_curvature_circle(kind.resolution));
-  gmsh::model::mesh::setSizeCallback(
-      [&size_field](int, int, double x, double y, double z) { return size_field(x, y, z); });
-  struct RemoveSizeCallback {  // before size_field goes, whatever happens
-    ~RemoveSizeCallback() {
-      try {
-        gmsh::model::mesh::removeSizeCallback();
-      } catch (...) {
-      }
-    }
-  } remove_size_callback;
-  gmsh::option::setNumber("Mesh.Algorithm", 6);    // Frontal-Delaunay surfaces
-  // Delaunay volumes: the same mesh every run (HXT, of better quality, is not: it returns
-  // different tetrahedra from run to run even on one thread).
-  gmsh::option::setNumber("Mesh.Algorithm3D", 1);
-  gmsh::option::setNumber("Mesh.Optimize", 1);
-  gmsh::option::setNumber("Mesh.ElementOrder", 1);
-  gmsh::model::mesh::generate(3);
-
-  return gmsh_tetrahedra();
+  return mesh_volumes(element_size, [&size_field](double x, double y, double z) { return size_field(x, y, z); });
 }
 
 // ---- checks and surfaces

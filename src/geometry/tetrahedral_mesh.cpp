@@ -52,6 +52,28 @@ TetrahedralMesh gmsh_tetrahedra() {
   return mesh;
 }
 
+TetrahedralMesh mesh_volumes(double largest_size, const std::function<double(double, double, double)>& size) {
+  gmsh::option::setNumber("Mesh.MeshSizeMax", largest_size);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0.0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+  gmsh::model::mesh::setSizeCallback([&size](int, int, double x, double y, double z) { return size(x, y, z); });
+  struct RemoveSizeCallback {  // before `size` goes, whatever happens
+    ~RemoveSizeCallback() {
+      try {
+        gmsh::model::mesh::removeSizeCallback();
+      } catch (...) {
+      }
+    }
+  } remove_size_callback;
+  gmsh::option::setNumber("Mesh.Algorithm", 6);    // Frontal-Delaunay surfaces
+  gmsh::option::setNumber("Mesh.Algorithm3D", 1);  // Delaunay volumes: the same mesh every run
+  gmsh::option::setNumber("Mesh.Optimize", 1);
+  gmsh::option::setNumber("Mesh.ElementOrder", 1);
+  gmsh::model::mesh::generate(3);
+  return gmsh_tetrahedra();
+}
+
 double signed_volume6(const MeshPoint& x0, const MeshPoint& x1, const MeshPoint& x2, const MeshPoint& x3) {
   // 6 V = (x1 − x0) · ((x2 − x0) × (x3 − x0))
   const double a[3] = {x1[0] - x0[0], x1[1] - x0[1], x1[2] - x0[2]};

@@ -5,6 +5,7 @@
 // Host-only: includes no Kokkos header.
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,13 @@ struct TetrahedralMesh {
 // The linear tetrahedra of the current Gmsh model and the nodes they use, numbered in
 // Gmsh's tag order. Call within a GmshSession, after mesh::generate(3).
 TetrahedralMesh gmsh_tetrahedra();
+
+// Meshes the volumes of the current Gmsh model (within a GmshSession, after synchronize())
+// with linear tetrahedra of size size(x, y, z), at most largest_size: surfaces by
+// Frontal-Delaunay, volumes by Delaunay (the same mesh every run; HXT, of better quality,
+// returns different tetrahedra from run to run even on one thread), Gmsh's default
+// optimizer. Returns gmsh_tetrahedra().
+TetrahedralMesh mesh_volumes(double largest_size, const std::function<double(double, double, double)>& size);
 
 // 6 V = (x1 − x0) · ((x2 − x0) × (x3 − x0))
 double signed_volume6(const MeshPoint& x0, const MeshPoint& x1, const MeshPoint& x2, const MeshPoint& x3);

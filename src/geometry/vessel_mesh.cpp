@@ -121,27 +121,9 @@ TetrahedralMesh mesh_lumen(const VesselProfile& profile, const VesselMeshSizes& 
   GmshSession session;
   gmsh::model::add("vessel");
   add_lumen(profile);
-  gmsh::option::setNumber("Mesh.MeshSizeMax", std::max(sizes.element_size, wall_size(sizes)));
-  gmsh::option::setNumber("Mesh.MeshSizeMin", 0.0);
-  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
-  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
-  gmsh::model::mesh::setSizeCallback([&](int, int, double x, double y, double z) {
+  return mesh_volumes(std::max(sizes.element_size, wall_size(sizes)), [&](double x, double y, double z) {
     return element_size_at(profile, sizes, x, std::hypot(y, z));
   });
-  struct RemoveSizeCallback {  // before `profile` and `sizes` go, whatever happens
-    ~RemoveSizeCallback() {
-      try {
-        gmsh::model::mesh::removeSizeCallback();
-      } catch (...) {
-      }
-    }
-  } remove_size_callback;
-  gmsh::option::setNumber("Mesh.Algorithm", 6);    // Frontal-Delaunay surfaces
-  gmsh::option::setNumber("Mesh.Algorithm3D", 1);  // Delaunay: the same mesh every run
-  gmsh::option::setNumber("Mesh.Optimize", 1);
-  gmsh::option::setNumber("Mesh.ElementOrder", 1);
-  gmsh::model::mesh::generate(3);
-  return gmsh_tetrahedra();
 }
 
 std::string describe(const VesselProfile& p) {

@@ -183,20 +183,10 @@ TEST(Rkpm, ReproducesLinearFieldsNextToTheCurvedWallOfAVessel) {
   const VesselProfile profile = testing::small_contraction();
   const FluidMesh mesh = make_vessel_fluid_mesh(make_vessel_mesh(profile, VesselMeshSizes{1.0, 0.5}), profile);
   RkpmCoupler coupler(mesh);
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> along(0.5, vessel_length(profile) - 0.5), angle(0.0, 6.283185307179586),
-      gap(0.05, 0.6);
   const int count = 400;
-  RkpmCoupler::PointVectors points("points", count);
-  auto h = Kokkos::create_mirror_view(points);
-  for (int p = 0; p < count; ++p) {
-    const double x = along(rng), phi = angle(rng), r = vessel_radius(profile, x) - gap(rng);
-    h(p, 0) = x;
-    h(p, 1) = r * std::cos(phi);
-    h(p, 2) = r * std::sin(phi);
-  }
-  Kokkos::deep_copy(points, h);
+  const RkpmCoupler::PointVectors points = testing::points_near_wall(profile, count, 0.05, 0.6, 0.5, 11);
   coupler.update(points);
+  std::mt19937 rng(11);
   const double linear = interpolation_error(mesh, coupler, points, [](double x, double y, double z) {
     return std::array<double, 3>{1.0 + 0.3 * x - 0.2 * y + 0.7 * z, -2.0 + y, 0.5 * z - 0.1 * x};
   });

@@ -21,21 +21,12 @@ constexpr double pressure = 2.0, range = 0.5;
 // Points within the range of the wall (d from −0.1 to 0.6 μm), all along the vessel, with
 // area weights between 0.05 and 0.2 μm².
 void random_nodes(const VesselProfile& profile, int count, NodeVectors& positions, Kokkos::View<double*>& weights) {
+  positions = testing::points_near_wall(profile, count, -0.1, 0.6, 0.3, 7);
   std::mt19937 rng(7);
-  std::uniform_real_distribution<double> along(0.3, vessel_length(profile) - 0.3), angle(0.0, 6.283185307179586),
-      gap(-0.1, 0.6), area(0.05, 0.2);
-  positions = NodeVectors("positions", count);
+  std::uniform_real_distribution<double> area(0.05, 0.2);
   weights = Kokkos::View<double*>("weights", count);
-  auto x = Kokkos::create_mirror_view(positions);
   auto w = Kokkos::create_mirror_view(weights);
-  for (int n = 0; n < count; ++n) {
-    const double s = along(rng), phi = angle(rng), r = vessel_radius(profile, s) - gap(rng);
-    x(n, 0) = s;
-    x(n, 1) = r * std::cos(phi);
-    x(n, 2) = r * std::sin(phi);
-    w(n) = area(rng);
-  }
-  Kokkos::deep_copy(positions, x);
+  for (int n = 0; n < count; ++n) w(n) = area(rng);
   Kokkos::deep_copy(weights, w);
 }
 
@@ -73,35 +64,40 @@ TEST(WallRepulsion, ForceIsMinusTheGradientOfTheEnergy) {
 
 TEST(WallRepulsion, MatchesAPlainSerialReferenceOnTheExactProfile) {
   // f = p_w A s² (R'(x), −y/r, −z/r), s = 1 − (R(x) − r)/d0, with R and R' from the exact
-  // profile (R' by central differences) instead of the kernel's table (cubic Hermite).
-  const VesselProfile profile = testing::small_contraction();
-  const WallRepulsion wall(profile, pressure, range);
-  NodeVectors positions, forces("forces", 500);
-  Kokkos::View<double*> weights;
-  random_nodes(profile, 500, positions, weights);
-  wall.compute(positions, weights, forces);
-  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), positions);
-  auto w = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), weights);
-  auto f = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), forces);
-  double worst = 0.0;
-  int pushed = 0;
-  for (int n = 0; n < 500; ++n) {
-    const double radius = vessel_radius(profile, x(n, 0));
-    const double slope = (vessel_radius(profile, x(n, 0) + 1e-6) - vessel_radius(profile, x(n, 0) - 1e-6)) / 2e-6;
-    const double r = std::hypot(x(n, 1), x(n, 2)), d = radius - r;
-    double expected[3] = {0, 0, 0};
-    if (d < range) {
-      const double s = 1.0 - d / range, magnitude = pressure * w(n) * s * s;
-      expected[0] = magnitude * slope;
-      expected[1] = -magnitude * x(n, 1) / r;
-      expected[2] = -magnitude * x(n, 2) / r;
-      ++pushed;
+  // profile (R' by central differences) instead of the kernel's table (cubic Hermite), for
+  // cosine and conical transitions (whose corners are knots of the table).
+  for (VesselTransition transition : {VesselTransition::cosine, VesselTransition::cone}) {
+    VesselProfile profile = testing::small_contraction();
+    profile.transition = transition;
+    const WallRepulsion wall(profile, pressure, range);
+    NodeVectors positions, forces("forces", 500);
+    Kokkos::View<double*> weights;
+    random_nodes(profile, 500, positions, weights);
+    wall.compute(positions, weights, forces);
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), positions);
+    auto w = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), weights);
+    auto f = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), forces);
+    double worst = 0.0;
+    int pushed = 0;
+    for (int n = 0; n < 500; ++n) {
+      const double radius = vessel_radius(profile, x(n, 0));
+      const double slope = (vessel_radius(profile, x(n, 0) + 1e-6) - vessel_radius(profile, x(n, 0) - 1e-6)) / 2e-6;
+      const double r = std::hypot(x(n, 1), x(n, 2)), d = radius - r;
+      double expected[3] = {0, 0, 0};
+      if (d < range) {
+        const double s = 1.0 - d / range, magnitude = pressure * w(n) * s * s;
+        expected[0] = magnitude * slope;
+        expected[1] = -magnitude * x(n, 1) / r;
+        expected[2] = -magnitude * x(n, 2) / r;
+        ++pushed;
+      }
+      for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(f(n, c) - expected[c]));
     }
-    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(f(n, c) - expected[c]));
+    std::printf("wall repulsion (%s transitions): %d of 500 nodes pushed; kernel vs serial reference: %.2e pN\n",
+                transition == VesselTransition::cosine ? "cosine" : "conical", pushed, worst);
+    EXPECT_GT(pushed, 300);
+    EXPECT_LT(worst, 1e-7);
   }
-  std::printf("wall repulsion: %d of 500 nodes pushed; kernel vs serial reference: %.2e pN\n", pushed, worst);
-  EXPECT_GT(pushed, 300);
-  EXPECT_LT(worst, 1e-7);
 }
 
 TEST(WallRepulsion, ActsOnlyWithinItsRangeWithThePressureAtContact) {

@@ -12,8 +12,9 @@ class WallRepulsion {
  public:
   using NodeVectors = Kokkos::View<double* [3]>;
 
-  // R(x) and R'(x) tabulated at `samples` equal steps over [0, L]; p_w [Pa], d0 [μm].
-  WallRepulsion(const VesselProfile& profile, double pressure, double range, int samples = 2049);
+  // R(x) and R'(x) tabulated at steps of about L/intervals, the parts' junctions knots;
+  // p_w [Pa], d0 [μm].
+  WallRepulsion(const VesselProfile& profile, double pressure, double range, int intervals = 2048);
 
   // force(a) = f_a of every node from its position and reference surface area weight;
   // returns Σ E_a [pN·μm].

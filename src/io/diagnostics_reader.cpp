@@ -18,20 +18,26 @@ std::vector<std::string> split_csv_line(const std::string& line) {
 }
 }  // namespace
 
-std::map<std::string, double> read_last_diagnostics(const std::string& path) {
+std::vector<std::map<std::string, double>> read_diagnostics(const std::string& path) {
   std::ifstream in(path);
-  if (!in) throw std::runtime_error("rouleau::read_last_diagnostics: " + path + ": cannot open");
-  std::string header, line, last;
+  if (!in) throw std::runtime_error("rouleau::read_diagnostics: " + path + ": cannot open");
+  std::string header, line;
   std::getline(in, header);
-  while (std::getline(in, line))
-    if (!line.empty()) last = line;
-  if (last.empty()) throw std::runtime_error("rouleau::read_last_diagnostics: " + path + ": no data row");
-  const auto names = split_csv_line(header), values = split_csv_line(last);
-  if (names.size() != values.size())
-    throw std::runtime_error("rouleau::read_last_diagnostics: " + path + ": row and header differ in length");
-  std::map<std::string, double> row;
-  for (size_t i = 0; i < names.size(); ++i) row[names[i]] = std::strtod(values[i].c_str(), nullptr);
-  return row;
+  const auto names = split_csv_line(header);
+  std::vector<std::map<std::string, double>> rows;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    const auto values = split_csv_line(line);
+    if (names.size() != values.size())
+      throw std::runtime_error("rouleau::read_diagnostics: " + path + ": a row and the header differ in length");
+    std::map<std::string, double> row;
+    for (size_t i = 0; i < names.size(); ++i) row[names[i]] = std::strtod(values[i].c_str(), nullptr);
+    rows.push_back(std::move(row));
+  }
+  if (rows.empty()) throw std::runtime_error("rouleau::read_diagnostics: " + path + ": no data row");
+  return rows;
 }
+
+std::map<std::string, double> read_last_diagnostics(const std::string& path) { return read_diagnostics(path).back(); }
 
 }  // namespace rouleau

@@ -120,7 +120,7 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
   std::unique_ptr<XdmfTimeSeries> fields;
   if (config.output.write_fields) fields = std::make_unique<XdmfTimeSeries>(out, "fields", output_meshes, provenance);
 
-  const CellDiagnostics cell_diagnostics(cells);
+  const CellDiagnostics cell_diagnostics(cells, config);
   CouplingDiagnostics coupling_diagnostics;
   std::vector<std::string> columns = FluidDiagnostics::columns(config);
   if (cells.population) {

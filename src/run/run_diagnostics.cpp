@@ -84,9 +84,11 @@ std::vector<double> FluidDiagnostics::row(const CaseConfig& config, const FluidS
   return values;
 }
 
-CellDiagnostics::CellDiagnostics(const CaseCells& cells) {
+CellDiagnostics::CellDiagnostics(const CaseCells& cells, const CaseConfig& config) {
   if (cells.population)
     for (const CellMeasures& m : cells.population->measures()) initial_volumes_.push_back(m.volume);
+  if (cells.population && cells.population->num_cells() > 1)
+    gaps_ = std::make_unique<CellGaps>(*cells.population, config.interaction.morse.zero_force_length);
 }
 
 std::vector<std::string> CellDiagnostics::columns() const {
@@ -98,6 +100,12 @@ std::vector<std::string> CellDiagnostics::columns() const {
                              "taylor_deformation"})
       names.push_back(cell + name);
   }
+  for (std::size_t a = 0; a < initial_volumes_.size() && gaps_; ++a)
+    for (std::size_t b = a + 1; b < initial_volumes_.size(); ++b) {
+      const std::string pair = std::to_string(a) + "_" + std::to_string(b);
+      names.push_back("gap_" + pair + "_um");
+      names.push_back("contact_area_" + pair + "_um2");
+    }
   return names;
 }
 
@@ -115,6 +123,8 @@ std::vector<double> CellDiagnostics::row(const CaseCells& cells) const {
                                  shapes[c].inclination_deg, shapes[c].taylor_deformation});
   }
   values[3] = largest_change;
+  if (gaps_)
+    for (const CellPairGap& pair : gaps_->measure()) values.insert(values.end(), {pair.gap, pair.contact_area});
   return values;
 }
 

@@ -7,6 +7,9 @@
 #include <string>
 #include <vector>
 
+#include <memory>
+
+#include "cells/cell_gaps.hpp"
 #include "cells/cells_from_case.hpp"
 #include "config/case_config.hpp"
 #include "coupling/immersed_coupling.hpp"
@@ -29,14 +32,17 @@ struct FluidDiagnostics {
 };
 
 // Energies are computed at the current positions (one extra force evaluation per row).
+// With two cells or more, each pair's gap and contact area (cells/cell_gaps.hpp; contact:
+// closer than the Morse law's zero-force length r0).
 class CellDiagnostics {
  public:
-  explicit CellDiagnostics(const CaseCells& cells);
+  CellDiagnostics(const CaseCells& cells, const CaseConfig& config);
   std::vector<std::string> columns() const;
   std::vector<double> row(const CaseCells& cells) const;
 
  private:
   std::vector<double> initial_volumes_;
+  std::unique_ptr<CellGaps> gaps_;
 };
 
 class CouplingDiagnostics {

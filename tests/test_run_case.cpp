@@ -194,6 +194,17 @@ TEST(RunCase, ContractionWritesTetrahedraAndTheDrivingPressure) {
   EXPECT_LT(row.at("relative_apparent_viscosity"), 1.1);
   EXPECT_GT(row.at("mean_wall_shear_stress_Pa"), 0.0);
   EXPECT_NE(file_contents(out + "/fields.xdmf").find("TopologyType=\"Tetrahedron\""), std::string::npos);
+  // The figures of a vessel run (matplotlib from Debian, installed by scripts/bootstrap.sh).
+  const std::string figures = out + "/figures";
+  // Debian's interpreter, which has the python3-matplotlib package.
+  ASSERT_EQ(std::system(("/usr/bin/python3 " + std::string(ROULEAU_SOURCE_DIR) + "/scripts/plot_diagnostics.py " + out +
+                         " > /dev/null").c_str()),
+            0);
+  for (const char* name : {"driving_pressure.png", "wall_stress.png", "solver.png"}) {
+    const std::string png = file_contents(figures + "/" + name);
+    EXPECT_GT(png.size(), 1000u) << name;
+    EXPECT_EQ(png.substr(1, 3), "PNG") << name;
+  }
 }
 
 TEST(RunCase, CapsuleEntersTheCapillaryCase) {

@@ -211,7 +211,9 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
   }
   table.flush();
   times.print(std::cerr);
-  std::cerr << "wrote " << out << "/" << (fields ? "fields.xdmf, " : "") << "diagnostics.csv, case.resolved.toml\n";
+  std::cerr << "wrote " << out << "/" << (fields ? "fields.xdmf, " : "") << "diagnostics.csv, case.resolved.toml\n"
+            << (fields ? "ParaView: open " + out + "/fields.xdmf; " : std::string()) << "figures: scripts/plot_diagnostics.py "
+            << out << "\n";
   return static_cast<int>(ExitCode::done);
 }
 

@@ -209,6 +209,64 @@ void drop_unused_nodes(std::vector<MeshPoint>& nodes, std::vector<Tetrahedron>& 
     for (int& v : t) v = new_index[v];
 }
 
+void renumber_nodes_for_locality(std::vector<MeshPoint>& nodes, std::vector<Tetrahedron>& tetrahedra) {
+  const int count = static_cast<int>(nodes.size());
+  // The edge graph in CSR form, neighbours sorted.
+  std::vector<std::vector<int>> neighbors(count);
+  for (const auto& t : tetrahedra)
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        if (i != j) neighbors[t[i]].push_back(t[j]);
+  for (auto& list : neighbors) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+  // Breadth-first order from `start` over the unvisited nodes, neighbours by increasing
+  // degree; returns the last level's first node (a far node) through `far`.
+  std::vector<int> order, level(count, -1);
+  const auto breadth_first = [&](int start, std::vector<int>& visit, int& far) {
+    std::fill(level.begin(), level.end(), -1);
+    visit.clear();
+    visit.push_back(start);
+    level[start] = 0;
+    for (std::size_t k = 0; k < visit.size(); ++k) {
+      std::vector<int> next;
+      for (int m : neighbors[visit[k]])
+        if (level[m] < 0) next.push_back(m);
+      std::stable_sort(next.begin(), next.end(),
+                       [&](int a, int b) { return neighbors[a].size() < neighbors[b].size(); });
+      for (int m : next) {
+        level[m] = level[visit[k]] + 1;
+        visit.push_back(m);
+      }
+    }
+    far = visit.back();
+    for (int m : visit)
+      if (level[m] == level[visit.back()] && neighbors[m].size() < neighbors[far].size()) far = m;
+  };
+  std::vector<char> placed(count, 0);
+  std::vector<int> visit;
+  for (int seed = 0; seed < count; ++seed) {
+    if (placed[seed]) continue;
+    // A pseudo-peripheral start: the far end of two sweeps from the component's first node.
+    int far = seed;
+    for (int sweep = 0; sweep < 2; ++sweep) breadth_first(far, visit, far);
+    breadth_first(far, visit, far);
+    for (int m : visit) placed[m] = 1;
+    order.insert(order.end(), visit.begin(), visit.end());
+  }
+  std::reverse(order.begin(), order.end());
+  std::vector<int> new_index(count);
+  std::vector<MeshPoint> renumbered(count);
+  for (int k = 0; k < count; ++k) {
+    new_index[order[k]] = k;
+    renumbered[k] = nodes[order[k]];
+  }
+  nodes = std::move(renumbered);
+  for (auto& t : tetrahedra)
+    for (int& v : t) v = new_index[v];
+}
+
 // For a positive tetrahedron (0, 1, 2, 3) the faces seen from outside, counter-clockwise,
 // are (0, 2, 1), (0, 1, 3), (1, 2, 3), (0, 3, 2). A face of one tetrahedron only is on the
 // boundary.

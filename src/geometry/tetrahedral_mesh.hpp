@@ -59,6 +59,13 @@ void canonicalize_tetrahedra(std::vector<Tetrahedron>& tetrahedra);
 // Returns how many; call drop_unused_nodes() and canonicalize_tetrahedra() after.
 std::size_t peel_boundary_slivers(const std::vector<MeshPoint>& nodes, std::vector<Tetrahedron>& tetrahedra);
 
+// Renumbers the nodes by reverse Cuthill–McKee on the graph of the tetrahedra's edges
+// (breadth-first from a pseudo-peripheral node, neighbours by increasing degree, the order
+// reversed), so that nodes close in the mesh are close in memory: element loops then
+// gather from a narrow band. Deterministic (ties go to the lower old index). Call
+// canonicalize_tetrahedra() after, which orders the elements by their nodes.
+void renumber_nodes_for_locality(std::vector<MeshPoint>& nodes, std::vector<Tetrahedron>& tetrahedra);
+
 // Keeps only the nodes some tetrahedron uses, in their order.
 void drop_unused_nodes(std::vector<MeshPoint>& nodes, std::vector<Tetrahedron>& tetrahedra);
 

@@ -7,7 +7,8 @@
 // revolved by 2π about x. Element sizes come from a size callback (VesselMeshSizes);
 // surfaces by Frontal-Delaunay, volumes by Delaunay (deterministic, as for cells), Gmsh's
 // default optimizer. The tetrahedra are oriented positively (an inverted or degenerate
-// one, 6√2V/l³ < 1e-3, is an error) and put in canonical order; the boundary faces are
+// one, 6√2V/l³ < 1e-3, is an error), the nodes renumbered by reverse Cuthill–McKee (for
+// the element loops' locality) and the tetrahedra put in canonical order; the boundary faces are
 // those of one tetrahedron, oriented out of the lumen, and classified by position: all
 // three nodes on the plane x = 0 (to 1e-9 of the vessel's size) is the inlet, on x = L
 // the outlet, anything else the wall.
@@ -33,7 +34,7 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 // Changes whenever this file would make a different mesh from the same parameters.
-constexpr int vessel_code_version = 1;
+constexpr int vessel_code_version = 2;  // 2: nodes renumbered for locality
 constexpr const char* cache_header = "rouleau-vessel-mesh 1";
 // Points of the exact cosine curve a transition's spline passes through (the spline is
 // then within ~1e-5 R of it).
@@ -177,6 +178,7 @@ VesselMesh make_vessel_mesh_with_parameters(const VesselProfile& profile, const 
                              " inverted and " + std::to_string(report.degenerate) +
                              " degenerate tetrahedra (worst quality 6√2V/l³ = " + std::to_string(report.worst_quality) +
                              ")");
+  renumber_nodes_for_locality(lumen.nodes, lumen.tetrahedra);
   canonicalize_tetrahedra(lumen.tetrahedra);
   VesselMesh mesh;
   const double length = vessel_length(profile), tolerance = 1e-9 * std::max(length, profile.radius);

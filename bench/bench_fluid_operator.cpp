@@ -172,39 +172,28 @@ void set_operator_counters(benchmark::State& state, const FluidMesh& mesh, Pass 
   state.counters["MB/application"] = operator_bytes(mesh, pass) * 1e-6;
 }
 
-void BM_JacobianAction(benchmark::State& state) {
-  OperatorProblem& p = problem(static_cast<int>(state.range(0)));
+// J(U)δ as GMRES applies it: the state's projected gradient computed once per Krylov solve.
+void jacobian_action(benchmark::State& state, Domain domain) {
+  OperatorProblem& p = problem(static_cast<int>(state.range(0)), domain);
   p.navier_stokes();
-  // As GMRES applies it: the state's projected gradient computed once per Krylov solve.
   rouleau::Vector state_gradient("state_gradient", 9 * p.mesh.num_dof_nodes);
   p.op.project_gradient(p.state, state_gradient);
   time_applications(state, [&] { p.op.jacobian_action(p.state, state_gradient, p.direction, p.result); });
   set_operator_counters(state, p.mesh, Pass::jacobian_action);
 }
 
-void BM_LinearAction(benchmark::State& state) {
-  OperatorProblem& p = problem(static_cast<int>(state.range(0)));
+void linear_action(benchmark::State& state, Domain domain) {
+  OperatorProblem& p = problem(static_cast<int>(state.range(0)), domain);
   p.stokes();
   time_applications(state, [&] { p.op.linear_action(p.direction, p.result); });
   set_operator_counters(state, p.mesh, Pass::linear_action);
 }
 
+void BM_JacobianAction(benchmark::State& state) { jacobian_action(state, Domain::box); }
+void BM_LinearAction(benchmark::State& state) { linear_action(state, Domain::box); }
 // The same two passes on the tetrahedral tube with about the box's number of unknowns.
-void BM_VesselJacobianAction(benchmark::State& state) {
-  OperatorProblem& p = problem(static_cast<int>(state.range(0)), Domain::tube);
-  p.navier_stokes();
-  rouleau::Vector state_gradient("state_gradient", 9 * p.mesh.num_dof_nodes);
-  p.op.project_gradient(p.state, state_gradient);
-  time_applications(state, [&] { p.op.jacobian_action(p.state, state_gradient, p.direction, p.result); });
-  set_operator_counters(state, p.mesh, Pass::jacobian_action);
-}
-
-void BM_VesselLinearAction(benchmark::State& state) {
-  OperatorProblem& p = problem(static_cast<int>(state.range(0)), Domain::tube);
-  p.stokes();
-  time_applications(state, [&] { p.op.linear_action(p.direction, p.result); });
-  set_operator_counters(state, p.mesh, Pass::linear_action);
-}
+void BM_VesselJacobianAction(benchmark::State& state) { jacobian_action(state, Domain::tube); }
+void BM_VesselLinearAction(benchmark::State& state) { linear_action(state, Domain::tube); }
 
 void BM_Residual(benchmark::State& state) {
   OperatorProblem& p = problem(static_cast<int>(state.range(0)));

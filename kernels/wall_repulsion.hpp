@@ -17,6 +17,8 @@
 #include <Kokkos_Core.hpp>
 #include <cmath>
 
+#include "kernels/launch_tags.hpp"
+
 namespace rouleau {
 
 struct VesselWallRepulsion {
@@ -78,8 +80,8 @@ struct VesselWallRepulsion {
   }
 };
 
-// force(a) = f_a (every node; zero away from the wall or off the surface); the reduction
-// sums E_a.
+// force(a) = f_a (every node; zero away from the wall or off the surface); launched with
+// ForcesOnly (parallel_for) or ForcesAndEnergy (parallel_reduce summing E_a).
 template <class NodeVectors, class Weights>
 struct WallRepulsionFunctor {
   VesselWallRepulsion wall;
@@ -87,12 +89,15 @@ struct WallRepulsionFunctor {
   Weights area_weights;   // reference outer-surface area weight per node [μm²], 0 inside
   NodeVectors force;      // [pN]
 
-  KOKKOS_INLINE_FUNCTION void operator()(const int node, double& energy) const {
-    const double p[3] = {positions(node, 0), positions(node, 1), positions(node, 2)};
+  KOKKOS_INLINE_FUNCTION double node(const int n) const {
+    const double p[3] = {positions(n, 0), positions(n, 1), positions(n, 2)};
     double f[3];
-    energy += wall.node_force(p, area_weights(node), f);
-    for (int c = 0; c < 3; ++c) force(node, c) = f[c];
+    const double energy = wall.node_force(p, area_weights(n), f);
+    for (int c = 0; c < 3; ++c) force(n, c) = f[c];
+    return energy;
   }
+  KOKKOS_INLINE_FUNCTION void operator()(ForcesOnly, const int n) const { node(n); }
+  KOKKOS_INLINE_FUNCTION void operator()(ForcesAndEnergy, const int n, double& energy) const { energy += node(n); }
 };
 
 }  // namespace rouleau

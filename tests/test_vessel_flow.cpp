@@ -66,10 +66,11 @@ TubeResult solve_tube(double radius, double length, double element_size) {
   result.tetrahedra = vessel.tetrahedra.size();
   result.gmres_iterations = report.gmres_iterations;
   result.velocity_error = errors.velocity / errors.velocity_norm;
-  const double inflow = -boundary_flow_rate(mesh, velocity, "inlet");
-  result.flow_rate = boundary_flow_rate(mesh, velocity, "outlet");
+  const BoundaryIntegrals integrals(mesh);
+  const double inflow = -integrals.flow_rate(velocity, "inlet");
+  result.flow_rate = integrals.flow_rate(velocity, "outlet");
   result.flow_balance = std::abs(result.flow_rate - inflow) / inflow;
-  result.pressure_drop = boundary_mean_pressure(mesh, pressure, "inlet") - boundary_mean_pressure(mesh, pressure, "outlet");
+  result.pressure_drop = integrals.mean_pressure(pressure, "inlet") - integrals.mean_pressure(pressure, "outlet");
   return result;
 }
 
@@ -135,14 +136,15 @@ TEST(VesselFlow, PressureDrivenTubeCarriesHagenPoiseuillesFlowRate) {
     ASSERT_TRUE(report.converged) << report.failure;
     std::vector<double> velocity, pressure;
     solver.velocity_and_pressure(velocity, pressure);
-    inlet_pressure_errors.push_back(std::abs(boundary_mean_pressure(mesh, pressure, "inlet") - drop) / drop);
-    const double q = boundary_flow_rate(mesh, velocity, "outlet");
-    const double inflow = -boundary_flow_rate(mesh, velocity, "inlet");
+    const BoundaryIntegrals integrals(mesh);
+    inlet_pressure_errors.push_back(std::abs(integrals.mean_pressure(pressure, "inlet") - drop) / drop);
+    const double q = integrals.flow_rate(velocity, "outlet");
+    const double inflow = -integrals.flow_rate(velocity, "inlet");
     errors.push_back(std::abs(q / exact - 1.0));
     std::printf("pressure-driven tube h = %.2f: Q = %.4f um^3/s, pi R^4 dp/(8 mu L) = %.4f (%+.2e); inflow %.4f; "
                 "driving pressure %.4f Pa\n",
                 h, q, exact, q / exact - 1.0, inflow,
-                boundary_mean_pressure(mesh, pressure, "inlet") - boundary_mean_pressure(mesh, pressure, "outlet"));
+                integrals.mean_pressure(pressure, "inlet") - integrals.mean_pressure(pressure, "outlet"));
     EXPECT_NEAR(inflow, q, 1e-8 * q);
   }
   const double order = std::log(errors[1] / errors[3]) / std::log(2.0);
@@ -173,8 +175,9 @@ TEST(VesselFlow, ContractionConservesTheFlowRate) {
     ASSERT_TRUE(report.converged) << report.failure;
     std::vector<double> velocity, pressure;
     solver.velocity_and_pressure(velocity, pressure);
-    const double inflow = -boundary_flow_rate(mesh, velocity, "inlet");
-    const double outflow = boundary_flow_rate(mesh, velocity, "outlet");
+    const BoundaryIntegrals integrals(mesh);
+    const double inflow = -integrals.flow_rate(velocity, "inlet");
+    const double outflow = integrals.flow_rate(velocity, "outlet");
     double deviation = 0.0, throat = 0.0;
     for (int k = 1; k < 40; ++k) {
       const double x = vessel_length(profile) * k / 40.0 + 1e-7;  // off the nodes' planes
@@ -187,7 +190,7 @@ TEST(VesselFlow, ContractionConservesTheFlowRate) {
                 "inflow %.1e, largest cross-section deviation %.2e (throat %.5f); driving pressure %.3f Pa\n",
                 h, vessel.tetrahedra.size(), report.gmres_iterations, inflow, std::abs(outflow - inflow) / inflow,
                 deviation, throat,
-                boundary_mean_pressure(mesh, pressure, "inlet") - boundary_mean_pressure(mesh, pressure, "outlet"));
+                integrals.mean_pressure(pressure, "inlet") - integrals.mean_pressure(pressure, "outlet"));
     EXPECT_LT(std::abs(outflow - inflow) / inflow, 1e-8);
   }
   const double order = std::log(deviations[0] / deviations[1]) / std::log(sizes[0] / sizes[1]);

@@ -31,12 +31,14 @@ void random_nodes(const VesselProfile& profile, int count, NodeVectors& position
 }
 
 TEST(WallRepulsion, ForceIsMinusTheGradientOfTheEnergy) {
+  // Forces from the forces-only launch against central differences of the energies of the
+  // forces-and-energy launch: both paths of the kernel.
   const VesselProfile profile = testing::small_contraction();
   const WallRepulsion wall(profile, pressure, range);
   NodeVectors positions, forces("forces", 200);
   Kokkos::View<double*> weights;
   random_nodes(profile, 200, positions, weights);
-  wall.compute(positions, weights, forces);
+  wall.compute_forces(positions, weights, forces);  // the coupled step's path; energies below
   auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), positions);
   auto f = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), forces);
   // Central differences of the total energy, one node and one direction at a time.
@@ -49,10 +51,10 @@ TEST(WallRepulsion, ForceIsMinusTheGradientOfTheEnergy) {
       Kokkos::deep_copy(moved, x);
       moved(n, c) += eps;
       Kokkos::deep_copy(shifted, moved);
-      const double plus = wall.compute(shifted, weights, scratch);
+      const double plus = wall.compute_forces_and_energy(shifted, weights, scratch);
       moved(n, c) -= 2 * eps;
       Kokkos::deep_copy(shifted, moved);
-      const double minus = wall.compute(shifted, weights, scratch);
+      const double minus = wall.compute_forces_and_energy(shifted, weights, scratch);
       const double gradient = (plus - minus) / (2 * eps);
       worst = std::max(worst, std::abs(f(n, c) + gradient));
       largest = std::max(largest, std::abs(f(n, c)));
@@ -73,7 +75,7 @@ TEST(WallRepulsion, MatchesAPlainSerialReferenceOnTheExactProfile) {
     NodeVectors positions, forces("forces", 500);
     Kokkos::View<double*> weights;
     random_nodes(profile, 500, positions, weights);
-    wall.compute(positions, weights, forces);
+    wall.compute_forces_and_energy(positions, weights, forces);
     auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), positions);
     auto w = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), weights);
     auto f = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), forces);
@@ -117,7 +119,7 @@ TEST(WallRepulsion, ActsOnlyWithinItsRangeWithThePressureAtContact) {
   }
   Kokkos::deep_copy(positions, x);
   Kokkos::deep_copy(weights, w);
-  const double energy = wall.compute(positions, weights, forces);
+  const double energy = wall.compute_forces_and_energy(positions, weights, forces);
   auto f = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), forces);
   EXPECT_EQ(f(0, 1), 0.0);
   EXPECT_EQ(f(1, 1), 0.0);
@@ -145,7 +147,7 @@ TEST(WallRepulsion, ANodePushedAtTheWallStopsWhereTheForcesBalance) {
   double closest = 1.0;
   for (int step = 0; step < 4000; ++step) {
     Kokkos::deep_copy(position, x);
-    wall.compute(position, weight, force);
+    wall.compute_forces_and_energy(position, weight, force);
     auto f = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), force);
     x(0, 2) += mobility_times_step * (push + f(0, 2));
     closest = std::min(closest, 3.0 - x(0, 2));

@@ -111,7 +111,7 @@ void derive_stable_step(const CaseConfig& config, DerivedQuantities& derived) {
   if (config.cells.empty() || config.time.mode == TimeMode::steady) return;
   const double h_f = smallest_fluid_element(config);
   double stiffest = 0.0;
-  std::string stiffest_kind;
+  std::string stiffest_source;  // what sets G_eff, for the reason
   bool volume_constraint = false;
   for (const CellPlacement& cell : config.cells) {
     const CellKindConfig& kind = *find_cell_kind(config, cell.kind);
@@ -122,7 +122,7 @@ void derive_stable_step(const CaseConfig& config, DerivedQuantities& derived) {
                                      kind.area_modulus * area_mode_shape_factor(kind.shape) * h_f / radius;
     if (effective_modulus > stiffest) {
       stiffest = effective_modulus;
-      stiffest_kind = kind.name;
+      stiffest_source = "kind " + kind.name + ", the stiffest membrane";
     }
   }
   // A vessel wall's repulsion: stiffness ∂f/∂d = 2 p_w A / d0 at contact, over the area
@@ -131,16 +131,14 @@ void derive_stable_step(const CaseConfig& config, DerivedQuantities& derived) {
     const double wall = 2.0 * config.vessel.wall_repulsion_pressure * h_f * h_f / config.vessel.wall_repulsion_range;
     if (wall > stiffest) {
       stiffest = wall;
-      stiffest_kind = "the vessel wall's repulsion 2 p_w h_f^2 / d0";
+      stiffest_source = "the vessel wall's repulsion 2 p_w h_f^2 / d0";
     }
   }
   const double C = config.coupling.stable_step_factor;
   derived.stable_dt = C * config.fluid.viscosity * h_f / stiffest;
   derived.stable_dt_reason = "C mu h_f / G_eff = " + formatted("%g", C) + " x " +
                              formatted("%g", config.fluid.viscosity) + " Pa s x " + formatted("%g", h_f) +
-                             " um / " + formatted("%g", stiffest) + " pN/um (" +
-                             (stiffest_kind.rfind("the vessel", 0) == 0 ? stiffest_kind
-                                                                        : "kind " + stiffest_kind + ", the stiffest membrane") +
+                             " um / " + formatted("%g", stiffest) + " pN/um (" + stiffest_source +
                              "; smallest fluid element h_f)" +
                              (volume_constraint ? "; it leaves out the volume constraint (volume_modulus_Pa)" : "");
 }

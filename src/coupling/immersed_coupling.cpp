@@ -94,7 +94,7 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
     });
   if (wall_)
     times.time(wall_stage, [&] {
-      wall_->compute(population_.positions(), population_.surface_area_weights(), wall_forces_);
+      wall_->compute_forces(population_.positions(), population_.surface_area_weights(), wall_forces_);
     });
   times.time(runs_inertia_ ? inertia_stage : elastic_stage, [&] {
     FsiForceFunctor<NodeVectors, Kokkos::View<double*>> sum{population_.internal_forces(),

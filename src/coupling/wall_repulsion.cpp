@@ -52,13 +52,22 @@ WallRepulsion::WallRepulsion(const VesselProfile& profile, double pressure, doub
   wall_.range = range;
 }
 
-double WallRepulsion::compute(const NodeVectors& positions, const Kokkos::View<double*>& area_weights,
-                              const NodeVectors& force) const {
-  ProfilingRegion region("rouleau::WallRepulsion::compute");
+void WallRepulsion::compute_forces(const NodeVectors& positions, const Kokkos::View<double*>& area_weights,
+                                   const NodeVectors& force) const {
+  ProfilingRegion region("rouleau::WallRepulsion::compute_forces");
+  WallRepulsionFunctor<NodeVectors, Kokkos::View<double*>> functor{wall_, positions, area_weights, force};
+  Kokkos::parallel_for("rouleau::WallRepulsion::forces",
+                       Kokkos::RangePolicy<Kokkos::DefaultExecutionSpace, ForcesOnly>(0, positions.extent(0)), functor);
+}
+
+double WallRepulsion::compute_forces_and_energy(const NodeVectors& positions, const Kokkos::View<double*>& area_weights,
+                                                const NodeVectors& force) const {
+  ProfilingRegion region("rouleau::WallRepulsion::compute_forces_and_energy");
   WallRepulsionFunctor<NodeVectors, Kokkos::View<double*>> functor{wall_, positions, area_weights, force};
   double energy = 0.0;
-  Kokkos::parallel_reduce("rouleau::WallRepulsion::forces",
-                          Kokkos::RangePolicy<Kokkos::DefaultExecutionSpace>(0, positions.extent(0)), functor, energy);
+  Kokkos::parallel_reduce("rouleau::WallRepulsion::forces_and_energy",
+                          Kokkos::RangePolicy<Kokkos::DefaultExecutionSpace, ForcesAndEnergy>(0, positions.extent(0)),
+                          functor, energy);
   return energy;
 }
 

@@ -16,10 +16,13 @@ class WallRepulsion {
   // p_w [Pa], d0 [μm].
   WallRepulsion(const VesselProfile& profile, double pressure, double range, int intervals = 2048);
 
-  // force(a) = f_a of every node from its position and reference surface area weight;
-  // returns Σ E_a [pN·μm].
-  double compute(const NodeVectors& positions, const Kokkos::View<double*>& area_weights,
-                 const NodeVectors& force) const;
+  // force(a) = f_a of every node from its position and reference surface area weight (the
+  // coupled step's call: no reduction, no fence).
+  void compute_forces(const NodeVectors& positions, const Kokkos::View<double*>& area_weights,
+                      const NodeVectors& force) const;
+  // The same, returning Σ E_a [pN·μm].
+  double compute_forces_and_energy(const NodeVectors& positions, const Kokkos::View<double*>& area_weights,
+                                   const NodeVectors& force) const;
 
   const VesselWallRepulsion& kernel() const { return wall_; }
 

@@ -1,5 +1,7 @@
 #include "fluid/boundary_conditions.hpp"
 
+#include "fluid/flow_rates.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -104,23 +106,17 @@ FluidBoundaryConditions build_boundary_conditions(const FluidMesh& mesh, const s
   bc.traction_load = Kokkos::View<double*>("rouleau::FluidBoundaryConditions::traction_load", num_unknowns);
   auto load = Kokkos::create_mirror_view(bc.traction_load);
   bool has_traction = false;
+  const BoundaryIntegrals integrals(mesh);
   for (const FluidBoundary& boundary : boundaries) {
     if (boundary.condition.type != BoundaryType::traction) continue;
     has_traction = true;
     const BoundaryFaces& b = mesh.boundary(boundary.name);
     const double pressure = boundary.condition.pressure / scales.pressure;
-    for (const auto& f : b.faces) {
-      const bool triangle = f[3] == f[2];
-      // Area: |d1 × d2| / 2 with d1, d2 the quadrilateral's diagonals or two triangle edges (scaled).
-      double d1[3], d2[3];
-      for (int d = 0; d < 3; ++d) {
-        d1[d] = (coordinates(f[triangle ? 1 : 2], d) - coordinates(f[0], d)) / scales.length;
-        d2[d] = (coordinates(f[triangle ? 2 : 3], d) - coordinates(f[triangle ? 0 : 1], d)) / scales.length;
-      }
-      const double cx = d1[1] * d2[2] - d1[2] * d2[1], cy = d1[2] * d2[0] - d1[0] * d2[2],
-                   cz = d1[0] * d2[1] - d1[1] * d2[0];
-      const double area = 0.5 * std::sqrt(cx * cx + cy * cy + cz * cz);
-      const int corners = triangle ? 3 : 4;
+    const std::vector<double>& areas = integrals.face_areas(boundary.name);
+    for (std::size_t k = 0; k < b.faces.size(); ++k) {
+      const auto& f = b.faces[k];
+      const double area = areas[k] / (scales.length * scales.length);  // scaled
+      const int corners = f[3] == f[2] ? 3 : 4;
       for (int corner = 0; corner < corners; ++corner) {
         const int dof_node = mesh.dof_node_of_node[f[corner]];
         for (int d = 0; d < 3; ++d)

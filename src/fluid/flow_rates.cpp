@@ -18,55 +18,61 @@ double triangle_area(const Point& a, const Point& b, const Point& c) {
   return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
 }
 
-// Σ over the faces of `name` of ∫ f dA for the nodal field f(node), exact for f linear on
-// triangles (A/3 per corner) and bilinear on parallelogram quadrilaterals (A/4 per corner).
-// Also returns the area.
-template <class Field>
-double integrate_over_boundary(const FluidMesh& mesh, const std::string& name, const Field& f, double& area) {
-  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
-  const BoundaryFaces& b = mesh.boundary(name);
-  double integral = 0.0;
-  area = 0.0;
-  for (const auto& face : b.faces) {
-    const bool triangle = face[3] == face[2];
-    const double a = triangle ? triangle_area(position(x, face[0]), position(x, face[1]), position(x, face[2]))
-                              : triangle_area(position(x, face[0]), position(x, face[1]), position(x, face[2])) +
-                                    triangle_area(position(x, face[0]), position(x, face[2]), position(x, face[3]));
-    const int corners = triangle ? 3 : 4;
-    double sum = 0.0;
-    for (int k = 0; k < corners; ++k) sum += f(face[k]);
-    integral += a * sum / corners;
-    area += a;
-  }
-  return integral;
-}
-
 }  // namespace
 
-double boundary_flow_rate(const FluidMesh& mesh, const std::vector<double>& velocity, const std::string& name) {
-  const BoundaryFaces& b = mesh.boundary(name);
+BoundaryIntegrals::BoundaryIntegrals(const FluidMesh& mesh) : mesh_(mesh) {
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
+  for (const BoundaryFaces& b : mesh.boundaries) {
+    std::vector<double>& areas = face_areas_[b.name];
+    for (const auto& face : b.faces) {
+      const bool triangle = face[3] == face[2];
+      double a = triangle_area(position(x, face[0]), position(x, face[1]), position(x, face[2]));
+      if (!triangle) a += triangle_area(position(x, face[0]), position(x, face[2]), position(x, face[3]));
+      areas.push_back(a);
+    }
+  }
+}
+
+const std::vector<double>& BoundaryIntegrals::face_areas(const std::string& name) const {
+  const auto found = face_areas_.find(name);
+  if (found == face_areas_.end())
+    throw std::out_of_range("rouleau::BoundaryIntegrals: no boundary named '" + name + "'");
+  return found->second;
+}
+
+template <class Field>
+double BoundaryIntegrals::integral(const std::string& name, const Field& f) const {
+  const BoundaryFaces& b = mesh_.boundary(name);
+  const std::vector<double>& areas = face_areas(name);
+  double sum = 0.0;
+  for (std::size_t k = 0; k < b.faces.size(); ++k) {
+    const auto& face = b.faces[k];
+    const int corners = face[3] == face[2] ? 3 : 4;
+    double corner_sum = 0.0;
+    for (int c = 0; c < corners; ++c) corner_sum += f(face[c]);
+    sum += areas[k] * corner_sum / corners;
+  }
+  return sum;
+}
+
+double BoundaryIntegrals::area(const std::string& name) const {
+  double sum = 0.0;
+  for (double a : face_areas(name)) sum += a;
+  return sum;
+}
+
+double BoundaryIntegrals::flow_rate(const std::vector<double>& velocity, const std::string& name) const {
+  const BoundaryFaces& b = mesh_.boundary(name);
   if (b.outward_normal[0] == 0.0 && b.outward_normal[1] == 0.0 && b.outward_normal[2] == 0.0)
-    throw std::invalid_argument("rouleau::boundary_flow_rate: boundary '" + name + "' is not planar");
-  double area = 0.0;
-  return integrate_over_boundary(
-      mesh, name,
-      [&](int node) {
-        return velocity[3 * node] * b.outward_normal[0] + velocity[3 * node + 1] * b.outward_normal[1] +
-               velocity[3 * node + 2] * b.outward_normal[2];
-      },
-      area);
+    throw std::invalid_argument("rouleau::BoundaryIntegrals::flow_rate: boundary '" + name + "' is not planar");
+  return integral(name, [&](int node) {
+    return velocity[3 * node] * b.outward_normal[0] + velocity[3 * node + 1] * b.outward_normal[1] +
+           velocity[3 * node + 2] * b.outward_normal[2];
+  });
 }
 
-double boundary_mean_pressure(const FluidMesh& mesh, const std::vector<double>& pressure, const std::string& name) {
-  double area = 0.0;
-  const double integral = integrate_over_boundary(mesh, name, [&](int node) { return pressure[node]; }, area);
-  return integral / area;
-}
-
-double boundary_area(const FluidMesh& mesh, const std::string& name) {
-  double area = 0.0;
-  integrate_over_boundary(mesh, name, [](int) { return 0.0; }, area);
-  return area;
+double BoundaryIntegrals::mean_pressure(const std::vector<double>& pressure, const std::string& name) const {
+  return integral(name, [&](int node) { return pressure[node]; }) / area(name);
 }
 
 double cross_section_flow_rate(const FluidMesh& mesh, const std::vector<double>& velocity, int axis,

@@ -29,13 +29,11 @@
 #include "geometry/cell_mesh.hpp"
 
 #include <gmsh.h>
-#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
@@ -270,15 +268,6 @@ TetrahedralMesh mesh_with_gmsh(const CellKindConfig& kind, double element_size) 
 
 // ---- checks and surfaces
 
-void orient_and_check_tetrahedra(const CellKindConfig& kind, const std::vector<Node>& nodes,
-                                 std::vector<Tetrahedron>& tetrahedra) {
-  const OrientationReport report = orient_tetrahedra(nodes, tetrahedra);
-  if (report.inverted > 0 || report.degenerate > 0)
-    throw std::runtime_error(describe_kind(kind) + ": the mesh has " + std::to_string(report.inverted) +
-                             " inverted and " + std::to_string(report.degenerate) +
-                             " degenerate tetrahedra (worst quality 6√2V/l³ = " + std::to_string(report.worst_quality) +
-                             ")");
-}
 
 struct Surfaces {
   std::vector<Triangle> outer, inner;
@@ -374,15 +363,11 @@ std::vector<std::pair<std::string, std::size_t>> cached_surfaces(bool shell) {
   return {{"outer_surface", 4}, {"inner_surface", shell ? 4 : 0}};
 }
 
-void write_cache_file(const std::string& directory, const CellMesh& mesh, const std::string& parameters) {
-  CachedMesh cached{{mesh.nodes, mesh.tetrahedra},
-                    {{"outer_surface", mesh.outer_surface}, {"inner_surface", mesh.inner_surface}}};
-  write_mesh_cache_file(directory, cache_file_name(mesh.hash), serialize_cached_mesh(cache_header, mesh.hash, parameters, cached));
+CachedMesh to_cached(const CellMesh& mesh) {
+  return {{mesh.nodes, mesh.tetrahedra}, {{"outer_surface", mesh.outer_surface}, {"inner_surface", mesh.inner_surface}}};
 }
 
-CellMesh read_cache_file(const std::string& path, const std::string& hash, const std::string& parameters, bool shell) {
-  CachedMesh cached = read_cached_mesh(path, cache_header, hash, parameters, cached_surfaces(shell));
-  if (!shell && !cached.surfaces[1].triangles.empty()) throw std::runtime_error("a filled body with a cavity wall");
+CellMesh from_cached(CachedMesh cached, const std::string& hash) {
   CellMesh mesh;
   mesh.hash = hash;
   mesh.nodes = std::move(cached.mesh.nodes);
@@ -413,7 +398,7 @@ CellMesh make_cell_mesh_with_parameters(const CellKindConfig& kind, double eleme
   CellMesh mesh;
   mesh.nodes = std::move(raw.nodes);
   mesh.tetrahedra = std::move(raw.tetrahedra);
-  orient_and_check_tetrahedra(kind, mesh.nodes, mesh.tetrahedra);
+  require_valid_orientation(orient_tetrahedra(mesh.nodes, mesh.tetrahedra), describe_kind(kind));
   canonicalize_tetrahedra(mesh.tetrahedra);
   if (peel_boundary_slivers(mesh.nodes, mesh.tetrahedra) > 0) {
     drop_unused_nodes(mesh.nodes, mesh.tetrahedra);
@@ -443,22 +428,14 @@ CellMesh cell_mesh(const CellKindConfig& kind, const std::string& cache_dir) {
   const double element_size = cell_element_size(kind);
   const std::string parameters = canonical_parameters(kind, element_size);
   const std::string hash = fnv1a_hex(parameters);
-  const std::string path = (std::filesystem::path(cache_dir) / cache_file_name(hash)).string();
-  std::error_code error;
-  if (std::filesystem::exists(path, error)) {
-    try {
-      return read_cache_file(path, hash, parameters, kind.body == CellBody::shell);
-    } catch (const std::exception& bad) {
-      spdlog::warn("mesh cache file {} of {} is unusable ({}); meshing again", path, describe_kind(kind), bad.what());
-    }
-  }
-  CellMesh mesh = make_cell_mesh_with_parameters(kind, element_size, parameters);
-  try {
-    write_cache_file(cache_dir, mesh, parameters);
-  } catch (const std::exception& failure) {
-    spdlog::warn("could not store the mesh of {} in the cache {}: {}", describe_kind(kind), cache_dir, failure.what());
-  }
-  return mesh;
+  const bool shell = kind.body == CellBody::shell;
+  CachedMesh cached = cached_or_made(
+      cache_dir, cache_file_name(hash), cache_header, hash, parameters, cached_surfaces(shell), describe_kind(kind),
+      [&] { return to_cached(make_cell_mesh_with_parameters(kind, element_size, parameters)); },
+      [&](const CachedMesh& read) {
+        if (!shell && !read.surfaces[1].triangles.empty()) throw std::runtime_error("a filled body with a cavity wall");
+      });
+  return from_cached(std::move(cached), hash);
 }
 
 }  // namespace rouleau

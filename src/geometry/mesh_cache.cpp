@@ -1,5 +1,6 @@
 #include "geometry/mesh_cache.hpp"
 
+#include <spdlog/spdlog.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -116,6 +117,31 @@ void write_mesh_cache_file(const std::string& directory, const std::string& file
     fs::remove(temporary, ignored);
     throw;
   }
+}
+
+CachedMesh cached_or_made(const std::string& directory, const std::string& file_name, const std::string& header,
+                          const std::string& hash, const std::string& parameters,
+                          const std::vector<std::pair<std::string, std::size_t>>& surface_names,
+                          const std::string& what, const std::function<CachedMesh()>& make,
+                          const std::function<void(const CachedMesh&)>& check) {
+  const std::string path = (std::filesystem::path(directory) / file_name).string();
+  std::error_code error;
+  if (std::filesystem::exists(path, error)) {
+    try {
+      CachedMesh cached = read_cached_mesh(path, header, hash, parameters, surface_names);
+      if (check) check(cached);
+      return cached;
+    } catch (const std::exception& bad) {
+      spdlog::warn("mesh cache file {} of {} is unusable ({}); meshing again", path, what, bad.what());
+    }
+  }
+  CachedMesh made = make();
+  try {
+    write_mesh_cache_file(directory, file_name, serialize_cached_mesh(header, hash, parameters, made));
+  } catch (const std::exception& failure) {
+    spdlog::warn("could not store the mesh of {} in the cache {}: {}", what, directory, failure.what());
+  }
+  return made;
 }
 
 std::string default_mesh_cache_dir() {

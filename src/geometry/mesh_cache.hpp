@@ -10,6 +10,7 @@
 //   <surface name> <F>     then F lines "i j k", for each named surface in turn
 //   end
 // Host-only: includes no Kokkos header.
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -42,6 +43,16 @@ CachedMesh read_cached_mesh(const std::string& path, const std::string& header, 
 // Writes `text` to directory/file_name through a temporary file of this process and call
 // (two processes meshing the same body at once do not share it) and an atomic rename.
 void write_mesh_cache_file(const std::string& directory, const std::string& file_name, const std::string& text);
+
+// The mesh stored as directory/file_name when a readable file with this header, hash and
+// parameters is there (and `check`, when given, accepts it: it throws with the reason
+// otherwise); else make()'s, stored there. An unusable cache file or a failed store is
+// warned about, naming `what`, and bypassed: the cache never stops a run.
+CachedMesh cached_or_made(const std::string& directory, const std::string& file_name, const std::string& header,
+                          const std::string& hash, const std::string& parameters,
+                          const std::vector<std::pair<std::string, std::size_t>>& surface_names,
+                          const std::string& what, const std::function<CachedMesh()>& make,
+                          const std::function<void(const CachedMesh&)>& check = {});
 
 // $ROULEAU_MESH_CACHE when set, else $XDG_CACHE_HOME/rouleau/meshes, else
 // $HOME/.cache/rouleau/meshes, else ./.rouleau-mesh-cache.

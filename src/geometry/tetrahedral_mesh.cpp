@@ -111,6 +111,13 @@ OrientationReport orient_tetrahedra(const std::vector<MeshPoint>& nodes, std::ve
   return report;
 }
 
+void require_valid_orientation(const OrientationReport& report, const std::string& what) {
+  if (report.inverted == 0 && report.degenerate == 0) return;
+  throw std::runtime_error(what + ": the mesh has " + std::to_string(report.inverted) + " inverted and " +
+                           std::to_string(report.degenerate) + " degenerate tetrahedra (worst quality 6√2V/l³ = " +
+                           std::to_string(report.worst_quality) + ")");
+}
+
 void canonicalize_tetrahedra(std::vector<Tetrahedron>& tetrahedra) {
   for (auto& t : tetrahedra) {
     int inversions = 0;

@@ -49,6 +49,10 @@ struct OrientationReport {
 };
 OrientationReport orient_tetrahedra(const std::vector<MeshPoint>& nodes, std::vector<Tetrahedron>& tetrahedra);
 
+// Throws std::runtime_error "<what>: the mesh has I inverted and D degenerate tetrahedra
+// (worst quality …)" when the report counts any.
+void require_valid_orientation(const OrientationReport& report, const std::string& what);
+
 // Canonical form: each tetrahedron's vertices ascending up to an even permutation (the
 // orientation stays), the tetrahedra sorted. Gmsh may return the same tetrahedra in
 // another order; then the mesh, its surfaces and cache files are the same every time.

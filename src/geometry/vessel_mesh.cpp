@@ -18,11 +18,9 @@
 #include "geometry/vessel_mesh.hpp"
 
 #include <gmsh.h>
-#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <sstream>
 #include <stdexcept>
 
@@ -162,9 +160,9 @@ void check_input(const VesselProfile& profile, const VesselMeshSizes& sizes) {
     throw std::runtime_error("vessel." + problem->key + ": " + problem->reason);
 }
 
+// Called after check_input().
 VesselMesh make_vessel_mesh_with_parameters(const VesselProfile& profile, const VesselMeshSizes& sizes,
                                             const std::string& parameters) {
-  check_input(profile, sizes);
   TetrahedralMesh lumen;
   try {
     lumen = mesh_lumen(profile, sizes);
@@ -172,12 +170,7 @@ VesselMesh make_vessel_mesh_with_parameters(const VesselProfile& profile, const 
     throw std::runtime_error(describe(profile) + ": Gmsh could not mesh it: " + current_gmsh_error());
   }
   if (lumen.tetrahedra.empty()) throw std::runtime_error(describe(profile) + ": Gmsh made no tetrahedra");
-  const OrientationReport report = orient_tetrahedra(lumen.nodes, lumen.tetrahedra);
-  if (report.inverted > 0 || report.degenerate > 0)
-    throw std::runtime_error(describe(profile) + ": the mesh has " + std::to_string(report.inverted) +
-                             " inverted and " + std::to_string(report.degenerate) +
-                             " degenerate tetrahedra (worst quality 6√2V/l³ = " + std::to_string(report.worst_quality) +
-                             ")");
+  require_valid_orientation(orient_tetrahedra(lumen.nodes, lumen.tetrahedra), describe(profile));
   renumber_nodes_for_locality(lumen.nodes, lumen.tetrahedra);
   canonicalize_tetrahedra(lumen.tetrahedra);
   VesselMesh mesh;
@@ -195,6 +188,10 @@ VesselMesh make_vessel_mesh_with_parameters(const VesselProfile& profile, const 
   mesh.tetrahedra = std::move(lumen.tetrahedra);
   mesh.hash = fnv1a_hex(parameters);
   return mesh;
+}
+
+CachedMesh to_cached(const VesselMesh& mesh) {
+  return {{mesh.nodes, mesh.tetrahedra}, {{"inlet", mesh.inlet}, {"outlet", mesh.outlet}, {"wall", mesh.wall}}};
 }
 
 }  // namespace
@@ -229,30 +226,16 @@ VesselMesh vessel_mesh(const VesselProfile& profile, const VesselMeshSizes& size
   check_input(profile, sizes);
   const std::string parameters = canonical_parameters(profile, sizes);
   const std::string hash = fnv1a_hex(parameters);
-  const std::string path = (std::filesystem::path(cache_dir) / cache_file_name(hash)).string();
-  std::error_code error;
-  if (std::filesystem::exists(path, error)) {
-    try {
-      CachedMesh cached = read_cached_mesh(path, cache_header, hash, parameters, cached_surfaces());
-      VesselMesh mesh;
-      mesh.hash = hash;
-      mesh.nodes = std::move(cached.mesh.nodes);
-      mesh.tetrahedra = std::move(cached.mesh.tetrahedra);
-      mesh.inlet = std::move(cached.surfaces[0].triangles);
-      mesh.outlet = std::move(cached.surfaces[1].triangles);
-      mesh.wall = std::move(cached.surfaces[2].triangles);
-      return mesh;
-    } catch (const std::exception& bad) {
-      spdlog::warn("mesh cache file {} of {} is unusable ({}); meshing again", path, describe(profile), bad.what());
-    }
-  }
-  VesselMesh mesh = make_vessel_mesh_with_parameters(profile, sizes, parameters);
-  try {
-    CachedMesh cached{{mesh.nodes, mesh.tetrahedra}, {{"inlet", mesh.inlet}, {"outlet", mesh.outlet}, {"wall", mesh.wall}}};
-    write_mesh_cache_file(cache_dir, cache_file_name(hash), serialize_cached_mesh(cache_header, hash, parameters, cached));
-  } catch (const std::exception& failure) {
-    spdlog::warn("could not store the mesh of {} in the cache {}: {}", describe(profile), cache_dir, failure.what());
-  }
+  CachedMesh cached =
+      cached_or_made(cache_dir, cache_file_name(hash), cache_header, hash, parameters, cached_surfaces(),
+                     describe(profile), [&] { return to_cached(make_vessel_mesh_with_parameters(profile, sizes, parameters)); });
+  VesselMesh mesh;
+  mesh.hash = hash;
+  mesh.nodes = std::move(cached.mesh.nodes);
+  mesh.tetrahedra = std::move(cached.mesh.tetrahedra);
+  mesh.inlet = std::move(cached.surfaces[0].triangles);
+  mesh.outlet = std::move(cached.surfaces[1].triangles);
+  mesh.wall = std::move(cached.surfaces[2].triangles);
   return mesh;
 }
 

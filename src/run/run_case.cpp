@@ -122,7 +122,8 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
 
   const CellDiagnostics cell_diagnostics(cells, config);
   CouplingDiagnostics coupling_diagnostics;
-  std::vector<std::string> columns = FluidDiagnostics::columns(config);
+  const FluidDiagnostics fluid_diagnostics(config, simulation.mesh());
+  std::vector<std::string> columns = fluid_diagnostics.columns();
   if (cells.population) {
     const auto cell_columns = cell_diagnostics.columns();
     columns.insert(columns.end(), cell_columns.begin(), cell_columns.end());
@@ -134,7 +135,7 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
   DiagnosticsTable table(out + "/diagnostics.csv", columns);
   auto add_diagnostics_row = [&] {
     std::vector<double> row =
-        FluidDiagnostics::row(config, solver, simulation.steps(), simulation.last_report().fluid,
+        fluid_diagnostics.row(solver, simulation.steps(), simulation.last_report().fluid,
                               std::chrono::duration<double>(Clock::now() - run_start).count());
     if (cells.population) {
       const std::vector<double> cell_row = times.time("cell diagnostics", [&] { return cell_diagnostics.row(cells); });

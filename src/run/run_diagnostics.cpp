@@ -9,7 +9,12 @@
 
 namespace rouleau {
 
-std::vector<std::string> FluidDiagnostics::columns(const CaseConfig& config) {
+FluidDiagnostics::FluidDiagnostics(const CaseConfig& config, const FluidMesh& mesh) : config_(config) {
+  if (config.vessel.enabled) boundary_integrals_ = std::make_unique<BoundaryIntegrals>(mesh);
+}
+
+std::vector<std::string> FluidDiagnostics::columns() const {
+  const CaseConfig& config = config_;
   std::vector<std::string> names{"step", "time_s", "newton_iterations", "gmres_iterations", "momentum_residual",
                                  "continuity_residual", "mean_velocity_x_um_s", "mean_velocity_y_um_s",
                                  "mean_velocity_z_um_s", "fluid_kinetic_energy_pN_um"};
@@ -22,25 +27,23 @@ std::vector<std::string> FluidDiagnostics::columns(const CaseConfig& config) {
   return names;
 }
 
-namespace {
 // Flow rates in and out, driving pressure, mean wall shear stress, relative apparent viscosity.
-std::vector<double> vessel_row(const CaseConfig& config, const FluidSolver& solver) {
-  const FluidMesh& mesh = solver.fluid_operator().mesh();
+std::vector<double> FluidDiagnostics::vessel_row(const FluidSolver& solver) const {
+  const BoundaryIntegrals& integrals = *boundary_integrals_;
   std::vector<double> velocity, pressure;
   solver.velocity_and_pressure(velocity, pressure);
-  const double inflow = -boundary_flow_rate(mesh, velocity, "inlet");
-  const double outflow = boundary_flow_rate(mesh, velocity, "outlet");
-  const double driving_pressure =
-      boundary_mean_pressure(mesh, pressure, "inlet") - boundary_mean_pressure(mesh, pressure, "outlet");
+  const double inflow = -integrals.flow_rate(velocity, "inlet");
+  const double outflow = integrals.flow_rate(velocity, "outlet");
+  const double driving_pressure = integrals.mean_pressure(pressure, "inlet") - integrals.mean_pressure(pressure, "outlet");
   // The force the fluid exerts on the wall along the axis, per wall area.
-  const double wall_shear = solver.boundary_forces({"wall"})[0][0] / boundary_area(mesh, "wall");
-  const double plasma_drop = vessel_poiseuille_drop(config.vessel.profile, config.fluid.viscosity, outflow);
+  const double wall_shear = solver.boundary_forces({"wall"})[0][0] / integrals.area("wall");
+  const double plasma_drop = vessel_poiseuille_drop(config_.vessel.profile, config_.fluid.viscosity, outflow);
   return {inflow, outflow, driving_pressure, wall_shear, plasma_drop != 0.0 ? driving_pressure / plasma_drop : NAN};
 }
 
 // Wall shear stress on the y walls and τ_w / (μ γ̇).
-std::vector<double> shear_box_row(const CaseConfig& config, const FluidSolver& solver) {
-  const DomainConfig& domain = config.domain;
+std::vector<double> FluidDiagnostics::shear_box_row(const FluidSolver& solver) const {
+  const DomainConfig& domain = config_.domain;
   const double area = (domain.upper[0] - domain.lower[0]) * (domain.upper[2] - domain.lower[2]);
   double shear[2] = {NAN, NAN};
   std::vector<std::string> walls;
@@ -60,13 +63,12 @@ std::vector<double> shear_box_row(const CaseConfig& config, const FluidSolver& s
   const double shear_rate =
       (domain.boundary[Side::y_max].velocity[0] - domain.boundary[Side::y_min].velocity[0]) / height;
   if (std::isfinite(shear[1]) && shear_rate != 0.0)
-    relative_viscosity = shear[1] / (config.fluid.viscosity * shear_rate);
+    relative_viscosity = shear[1] / (config_.fluid.viscosity * shear_rate);
   return {shear[0], shear[1], relative_viscosity};
 }
-}  // namespace
 
-std::vector<double> FluidDiagnostics::row(const CaseConfig& config, const FluidSolver& solver, int step,
-                                          const FluidSolveReport& report, double wall_time) {
+std::vector<double> FluidDiagnostics::row(const FluidSolver& solver, int step, const FluidSolveReport& report,
+                                          double wall_time) const {
   const auto u = solver.mean_velocity();
   std::vector<double> values{double(step),
                              solver.time(),
@@ -78,7 +80,7 @@ std::vector<double> FluidDiagnostics::row(const CaseConfig& config, const FluidS
                              u[1],
                              u[2],
                              solver.kinetic_energy()};
-  const std::vector<double> domain_values = config.vessel.enabled ? vessel_row(config, solver) : shear_box_row(config, solver);
+  const std::vector<double> domain_values = boundary_integrals_ ? vessel_row(solver) : shear_box_row(solver);
   values.insert(values.end(), domain_values.begin(), domain_values.end());
   values.push_back(wall_time);
   return values;

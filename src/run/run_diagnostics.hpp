@@ -13,6 +13,7 @@
 #include "cells/cells_from_case.hpp"
 #include "config/case_config.hpp"
 #include "coupling/immersed_coupling.hpp"
+#include "fluid/flow_rates.hpp"
 #include "fluid/fluid_solver.hpp"
 #include "run/stage_times.hpp"
 
@@ -24,11 +25,20 @@ namespace rouleau {
 // shear stress F_x / A_wall, and the relative apparent viscosity Δp / Δp_HP(Q) against
 // Hagen–Poiseuille's drop for the outflow Q (vessel_poiseuille_drop(): 1 for plasma in a
 // tube; a contraction's cell-free run gives its plasma value).
-struct FluidDiagnostics {
-  static std::vector<std::string> columns(const CaseConfig& config);
+class FluidDiagnostics {
+ public:
+  // `config` and `mesh` must outlive it; a vessel's boundary areas are computed here, once.
+  FluidDiagnostics(const CaseConfig& config, const FluidMesh& mesh);
+  std::vector<std::string> columns() const;
   // `wall_time`: seconds since the run started.
-  static std::vector<double> row(const CaseConfig& config, const FluidSolver& solver, int step,
-                                 const FluidSolveReport& report, double wall_time);
+  std::vector<double> row(const FluidSolver& solver, int step, const FluidSolveReport& report, double wall_time) const;
+
+ private:
+  std::vector<double> vessel_row(const FluidSolver& solver) const;
+  std::vector<double> shear_box_row(const FluidSolver& solver) const;
+
+  const CaseConfig& config_;
+  std::unique_ptr<BoundaryIntegrals> boundary_integrals_;  // vessels
 };
 
 // Energies are computed at the current positions (one extra force evaluation per row).

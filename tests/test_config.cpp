@@ -551,6 +551,40 @@ TEST(ConfigCoupling, StableStepIsViscosityTimesElementOverMembraneModulus) {
   EXPECT_EQ(rouleau::derive_quantities(rouleau::load_case(good_case)).stable_dt, 0.0);
 }
 
+TEST(ConfigCoupling, MorseStiffnessBoundsTheStepOfInteractingCells) {
+  // Two capsules with the interaction on: flat faces at the balance gap h* = r0 − ln2/β
+  // stiffen as 8π β De h* (p(h) = 2π h φ(h)), a grid-scale modulus G = 8π β De h* h_f²;
+  // with De × 5 (the paper's two-cell scene) it sets the step, and sickle cells (De × 5
+  // per kind) five times more. One cell alone has no pair to bound.
+  const std::vector<std::string> two_capsules{
+      "cells=[{kind=\"capsule\", center_um=[20, 0, 10]}, {kind=\"capsule\", center_um=[20, 0, 17]}]",
+      "interaction.enabled=true", "interaction.strength_multiplier=5", "time.dt_s=1e-7"};
+  const CaseConfig config = rouleau::load_case(good_case, two_capsules);
+  double h_f = 1e300;
+  for (int d = 0; d < 3; ++d)
+    h_f = std::min(h_f, rouleau::smallest_graded_interval(config.domain.lower[d], config.domain.upper[d],
+                                                          config.domain.elements[d], config.domain.wall_grading[d]));
+  const rouleau::MorseConfig& law = config.interaction.morse;
+  const double balance_gap = law.zero_force_length - std::log(2.0) / law.beta;
+  const double morse_modulus = 8.0 * M_PI * law.beta * 5.0 * law.well_depth * balance_gap * h_f * h_f;
+  const rouleau::DerivedQuantities derived = rouleau::derive_quantities(config);
+  std::printf("stable step with Morse x5: %.4g s (G_Morse %.4g pN/um at h_f %.3g um): %s\n", derived.stable_dt,
+              morse_modulus, h_f, derived.stable_dt_reason.c_str());
+  const double expected = config.fluid.viscosity * h_f / morse_modulus;
+  EXPECT_NEAR(derived.stable_dt, expected, 1e-14 * expected);
+  EXPECT_NE(derived.stable_dt_reason.find("Morse"), std::string::npos);
+  std::vector<std::string> sickles = two_capsules;
+  sickles[0] = "cells=[{kind=\"sickle\", center_um=[20, 0, 10]}, {kind=\"sickle\", center_um=[20, 0, 17]}]";
+  EXPECT_NEAR(rouleau::derive_quantities(rouleau::load_case(good_case, sickles)).stable_dt, expected / 5.0,
+              1e-14 * expected);
+  std::vector<std::string> interaction_off = two_capsules;
+  interaction_off[1] = "interaction.enabled=false";
+  const CellKindConfig& capsule = kind_of(config, "capsule");
+  const double membrane_step = config.fluid.viscosity * h_f / (capsule.shear_modulus * capsule.shell_thickness);
+  EXPECT_NEAR(rouleau::derive_quantities(rouleau::load_case(good_case, interaction_off)).stable_dt, membrane_step,
+              1e-14 * membrane_step);
+}
+
 TEST(ConfigCells, OverridesReachKindsAndCells) {
   const CaseConfig config = rouleau::load_case(
       good_case, {"cell_kinds.sickle.shear_modulus_Pa=100", "cells=[{kind=\"capsule\", center_um=[20, 0, 10]}]",

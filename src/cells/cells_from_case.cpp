@@ -10,21 +10,12 @@
 namespace rouleau {
 
 std::vector<MorsePotential> case_morse_potentials(const CaseConfig& config) {
-  const InteractionConfig& interaction = config.interaction;
   const std::size_t n = config.cell_kinds.size();
   std::vector<MorsePotential> potentials(n * n);
-  auto potential_of = [&](const MorseConfig& morse, double well_depth) {
-    return MorsePotential{interaction.strength * well_depth, morse.beta, morse.zero_force_length, morse.cutoff};
-  };
   for (std::size_t a = 0; a < n; ++a)
     for (std::size_t b = 0; b < n; ++b) {
-      const CellKindConfig &kind_a = config.cell_kinds[a], &kind_b = config.cell_kinds[b];
-      const double factor = std::sqrt(kind_a.morse_well_depth_factor * kind_b.morse_well_depth_factor);
-      potentials[a * n + b] = potential_of(interaction.morse, factor * interaction.morse.well_depth);
-      for (const MorsePairConfig& pair : interaction.pairs)
-        if ((pair.kind_a == kind_a.name && pair.kind_b == kind_b.name) ||
-            (pair.kind_a == kind_b.name && pair.kind_b == kind_a.name))
-          potentials[a * n + b] = potential_of(pair.morse, pair.morse.well_depth);
+      const MorseConfig law = morse_law_between(config, config.cell_kinds[a], config.cell_kinds[b]);
+      potentials[a * n + b] = MorsePotential{law.well_depth, law.beta, law.zero_force_length, law.cutoff};
     }
   return potentials;
 }

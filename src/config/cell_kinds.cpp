@@ -1,6 +1,7 @@
 #include "config/cell_kinds.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace rouleau {
 namespace {
@@ -51,6 +52,17 @@ const CellKindConfig* find_cell_kind(const CaseConfig& config, const std::string
   const auto found = std::find_if(config.cell_kinds.begin(), config.cell_kinds.end(),
                                   [&](const CellKindConfig& kind) { return kind.name == name; });
   return found == config.cell_kinds.end() ? nullptr : &*found;
+}
+
+MorseConfig morse_law_between(const CaseConfig& config, const CellKindConfig& a, const CellKindConfig& b) {
+  const InteractionConfig& interaction = config.interaction;
+  MorseConfig law = interaction.morse;
+  law.well_depth *= std::sqrt(a.morse_well_depth_factor * b.morse_well_depth_factor);
+  for (const MorsePairConfig& pair : interaction.pairs)
+    if ((pair.kind_a == a.name && pair.kind_b == b.name) || (pair.kind_a == b.name && pair.kind_b == a.name))
+      law = pair.morse;
+  law.well_depth *= interaction.strength;
+  return law;
 }
 
 double bulk_modulus_from_poisson(double shear_modulus, double poisson_ratio) {

@@ -51,6 +51,11 @@ std::vector<CellKindConfig> builtin_cell_kinds();
 // The kind called `name` in the case (config.cell_kinds), or nullptr.
 const CellKindConfig* find_cell_kind(const CaseConfig& config, const std::string& name);
 
+// The Morse law between kinds a and b: an [[interaction.pair]] entry's law when there is
+// one, else [interaction]'s with De √(f_a f_b) (the kinds' morse_well_depth_factor); its
+// De times [interaction].strength_multiplier either way.
+MorseConfig morse_law_between(const CaseConfig& config, const CellKindConfig& a, const CellKindConfig& b);
+
 // Bulk modulus of an isotropic solid from its shear modulus and Poisson ratio:
 // K = 2G(1+ν) / (3(1−2ν)), for −1 < ν < 1/2. [same unit as G]
 double bulk_modulus_from_poisson(double shear_modulus, double poisson_ratio);

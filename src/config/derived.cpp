@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <set>
 #include <string>
 
 #include "config/cell_kinds.hpp"
@@ -133,6 +134,28 @@ void derive_stable_step(const CaseConfig& config, DerivedQuantities& derived) {
       stiffest = wall;
       stiffest_source = "the vessel wall's repulsion 2 p_w h_f^2 / d0";
     }
+  }
+  // The Morse law between two cells' faces at their balance gap h* = r0 − ln2/β (where
+  // φ(h*) = 0): the normal pressure between flat faces at gap h is p(h) = 2π h φ(h), so
+  // their stiffness there is |dp/dh| = 2π h* |φ'(h*)| = 8π β De h* [Pa/μm]. A patch of
+  // the fluid element's size h_f relaxes through the fluid at the rate k h_f / μ, i.e. a
+  // grid-scale modulus G_Morse = 8π β De h* h_f², for the strongest law between kinds
+  // the case places (two cells or more).
+  if (config.interaction.enabled && config.cells.size() >= 2) {
+    std::set<std::string> placed_kinds;
+    for (const CellPlacement& cell : config.cells) placed_kinds.insert(cell.kind);
+    for (const std::string& kind_a : placed_kinds)
+      for (const std::string& kind_b : placed_kinds) {
+        const MorseConfig law =
+            morse_law_between(config, *find_cell_kind(config, kind_a), *find_cell_kind(config, kind_b));
+        const double balance_gap = law.zero_force_length - std::log(2.0) / law.beta;
+        const double morse = 8.0 * M_PI * law.beta * law.well_depth * std::max(balance_gap, 0.0) * h_f * h_f;
+        if (morse > stiffest) {
+          stiffest = morse;
+          stiffest_source = "the Morse law between kinds " + kind_a + " and " + kind_b +
+                            " at its balance gap, 8 pi beta De h* h_f^2";
+        }
+      }
   }
   const double C = config.coupling.stable_step_factor;
   derived.stable_dt = C * config.fluid.viscosity * h_f / stiffest;

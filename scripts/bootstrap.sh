@@ -84,7 +84,7 @@ installed() { [ "$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null || true)" = "in
 packages=(
   g++ cmake make pkg-config dpkg-dev ca-certificates tar gzip xz-utils
   libeigen3-dev libhdf5-dev libtomlplusplus-dev libcli11-dev libspdlog-dev libfmt-dev
-  libgtest-dev libgmock-dev libbenchmark-dev libgmsh-dev python3 python3-matplotlib
+  libgtest-dev libgmock-dev libbenchmark-dev libgmsh-dev python3 python3-matplotlib python3-h5py
 )
 if [ "$cuda" = 1 ]; then
   packages+=(nvidia-cuda-toolkit g++-11 gcc-11)

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Figures from a rouleau run's diagnostics.csv (and its case.resolved.toml).
 
-    scripts/plot_diagnostics.py RUN_DIR [--out FOLDER]
+    scripts/plot_diagnostics.py RUN_DIR [--out FOLDER] [--plane xy|xz|yz] [--snapshots N]
 
 Writes PNG files into RUN_DIR/figures (or FOLDER) and prints their paths:
   driving_pressure.png  vessels: the driving pressure against time (the paper's Fig. 17),
@@ -11,8 +11,11 @@ Writes PNG files into RUN_DIR/figures (or FOLDER) and prints their paths:
   volumes.png           cells: each cell's volume relative to its first row
   wall_stress.png       the wall shear stress and the relative apparent viscosity
   solver.png            Newton and GMRES iterations per row
-Only the figures the run's columns allow are drawn. Needs matplotlib (Debian's
-python3-matplotlib).
+  cross_sections.png    cells: the nodes within half a micrometre of a plane through the
+                        cells' mean centre (--plane, default xy) at N field outputs spread
+                        over the run (the paper's snapshot figures, e.g. Figs. 6 and 8-16)
+Only the figures the run's columns and files allow are drawn. Needs matplotlib
+(Debian's python3-matplotlib), and h5py (python3-h5py) for the cross-sections.
 """
 import argparse
 import csv
@@ -141,10 +144,54 @@ def plot_solver(columns, folder, written):
     save(figure, folder, "solver.png", written)
 
 
+def plot_cross_sections(run_dir, plane, snapshots, folder, written):
+    """Cell nodes near a plane at `snapshots` field outputs, one panel each, coloured by cell."""
+    import glob
+    import re
+    try:
+        import h5py
+    except ImportError:
+        print("plot_diagnostics: no h5py (python3-h5py): cross-sections skipped", file=sys.stderr)
+        return
+    files = sorted(glob.glob(os.path.join(run_dir, "fields_[0-9]*.h5")),
+                   key=lambda path: int(re.findall(r"(\d+)\.h5$", path)[0]))
+    with_cells = []
+    for path in files:
+        with h5py.File(path, "r") as f:
+            if "cells" in f:
+                with_cells.append(path)
+    if not with_cells:
+        return
+    count = min(snapshots, len(with_cells))
+    chosen = [with_cells[round(i * (len(with_cells) - 1) / max(count - 1, 1))] for i in range(count)]
+    axes_of = {"xy": (0, 1, 2), "xz": (0, 2, 1), "yz": (1, 2, 0)}
+    first, second, normal = axes_of[plane]
+    names = "xyz"
+    figure, panels = plt.subplots(1, count, figsize=(3.2 * count, 3.4), squeeze=False)
+    centre = None
+    for panel, path in zip(panels[0], chosen):
+        with h5py.File(path, "r") as f:
+            x = f["cells/coordinates"][()]
+            cell = f["cells/cell_id"][()]
+            time = float(f["time"][0])
+        if centre is None:  # the plane through the cells' mean centre at the first snapshot
+            centre = x[:, normal].mean()
+        near = abs(x[:, normal] - centre) < 0.5
+        panel.scatter(x[near, first], x[near, second], c=cell[near], cmap="tab10", vmin=0, vmax=9, s=3)
+        panel.set_aspect("equal")
+        panel.set_title(f"t = {time:.4g} s", fontsize="small")
+        panel.set_xlabel(f"{names[first]} [μm]")
+        panel.set_ylabel(f"{names[second]} [μm]")
+    save(figure, folder, "cross_sections.png", written)
+
+
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("run_dir")
     parser.add_argument("--out", help="folder for the figures (default RUN_DIR/figures)")
+    parser.add_argument("--plane", choices=["xy", "xz", "yz"], default="xy",
+                        help="the cross-sections' plane (default xy)")
+    parser.add_argument("--snapshots", type=int, default=4, help="cross-sections drawn (default 4)")
     arguments = parser.parse_args(argv)
     columns = read_columns(os.path.join(arguments.run_dir, "diagnostics.csv"))
     case = {}
@@ -160,6 +207,7 @@ def main(argv):
     plot_cells(columns, folder, written)
     plot_walls(columns, folder, written)
     plot_solver(columns, folder, written)
+    plot_cross_sections(arguments.run_dir, arguments.plane, arguments.snapshots, folder, written)
     for path in written:
         print(path)
     return 0

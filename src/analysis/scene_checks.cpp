@@ -1,6 +1,7 @@
 #include "analysis/scene_checks.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace rouleau {
@@ -39,6 +40,42 @@ AggregationCheck check_aggregation(const DiagnosticsRows& rows, double zero_forc
   check.settled = check.settled_gap_range < AggregationCheck::settled_range_r0 * zero_force_length;
   check.open = check.final_gap >= AggregationCheck::open_fraction * check.initial_gap;
   return check;
+}
+
+StackMeasures measure_stack(const DiagnosticsRows& rows, int cells, double zero_force_length) {
+  if (rows.empty()) throw std::runtime_error("rouleau::measure_stack: no diagnostics rows");
+  StackMeasures m;
+  m.cells = cells;
+  const auto& first = rows.front();
+  const auto& last = rows.back();
+  auto value = [](const std::map<std::string, double>& row, const std::string& column) {
+    const auto found = row.find(column);
+    if (found == row.end()) throw std::runtime_error("rouleau::measure_stack: no column \"" + column + "\"");
+    return found->second;
+  };
+  auto cell = [](int c, const char* what) { return "cell" + std::to_string(c) + "_" + what; };
+  m.largest_gap_growth = -1e300;
+  for (int c = 0; c + 1 < cells; ++c) {
+    const std::string gap = "gap_" + std::to_string(c) + "_" + std::to_string(c + 1) + "_um";
+    m.largest_gap_growth = std::max(m.largest_gap_growth, value(last, gap) - value(first, gap));
+    const double separation_first = value(first, cell(c + 1, "centroid_y_um")) - value(first, cell(c, "centroid_y_um"));
+    const double separation_last = value(last, cell(c + 1, "centroid_y_um")) - value(last, cell(c, "centroid_y_um"));
+    m.largest_separation_change = std::max(m.largest_separation_change, std::fabs(separation_last - separation_first));
+  }
+  double smallest = 1e300, largest = -1e300, sum = 0.0;
+  for (int c = 0; c < cells; ++c) {
+    const double inclination = value(last, cell(c, "inclination_deg"));
+    smallest = std::min(smallest, inclination);
+    largest = std::max(largest, inclination);
+    sum += inclination;
+  }
+  m.mean_inclination_deg = sum / cells;
+  m.inclination_spread_deg = largest - smallest;
+  const double dx = value(last, cell(cells - 1, "centroid_x_um")) - value(last, cell(0, "centroid_x_um"));
+  const double dy = value(last, cell(cells - 1, "centroid_y_um")) - value(last, cell(0, "centroid_y_um"));
+  m.stack_axis_deg = std::atan2(dx, dy) * 180.0 / M_PI;
+  m.intact = m.largest_gap_growth < zero_force_length;
+  return m;
 }
 
 }  // namespace rouleau

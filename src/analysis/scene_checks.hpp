@@ -37,4 +37,24 @@ struct AggregationCheck {
 // Measures the check between cells `a` and `b` (indices) for Morse length r0 [μm].
 AggregationCheck check_aggregation(const DiagnosticsRows& rows, double zero_force_length, int a = 0, int b = 1);
 
+// A stack of cells in simple shear (Liu et al. 2004, Figs. 7-12): cells 0, 1, ... stacked
+// along y in that order, measured at the first and the last row. Neighbours are (i, i+1).
+struct StackMeasures {
+  int cells = 0;
+  double largest_gap_growth = 0.0;         // [μm] max over neighbours of last − first gap_i_(i+1)
+  double largest_separation_change = 0.0;  // [μm] max over neighbours of |Δy_last − Δy_first| (centroids)
+  double mean_inclination_deg = 0.0;       // last row: the cells' mean inclination in the shear plane
+                                           // (0 = major axis along the flow)
+  double inclination_spread_deg = 0.0;     // last row: largest − smallest inclination
+  double stack_axis_deg = 0.0;             // last row: the first-to-last centroid line's angle from +y
+                                           // toward +x. The shear (u = γ̇ y) turns a body clockwise: by θ,
+                                           // the axis to +θ and the discs' inclination to −θ, so a stack
+                                           // turning as one body keeps stack_axis ≈ −mean_inclination
+  // The aggregate is intact while every neighbour gap has grown by less than r0.
+  bool intact = false;
+};
+
+// Measures the stack of the run's first `cells` cells; r0 [μm] for the intact test.
+StackMeasures measure_stack(const DiagnosticsRows& rows, int cells, double zero_force_length);
+
 }  // namespace rouleau

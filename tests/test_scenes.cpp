@@ -68,7 +68,7 @@ TEST(Scenes, StackedCellsMoveWithTheShearAndAttractOnlyWithTheInteraction) {
   const std::string fast = " --set boundary.y_min.velocity_um_s=[-30,0,0] --set boundary.y_max.velocity_um_s=[30,0,0]";
   const auto free_cells = run_scene("stack_shear", "_free", reduced + fast + " --set interaction.enabled=false");
   const double r0 = 0.25;
-  const auto free_measures = rouleau::measure_stack(free_cells, 4, r0);
+  const auto free_measures = rouleau::measure_stack(free_cells, 4, 4, r0);
   const auto x_top = rouleau::diagnostics_column(free_cells, "cell3_centroid_x_um");
   const auto x_bottom = rouleau::diagnostics_column(free_cells, "cell0_centroid_x_um");
   const auto time = rouleau::diagnostics_column(free_cells, "time_s");
@@ -82,7 +82,7 @@ TEST(Scenes, StackedCellsMoveWithTheShearAndAttractOnlyWithTheInteraction) {
   EXPECT_LT(free_measures.largest_separation_change, 0.01);
   EXPECT_LT(std::fabs(free_measures.largest_gap_growth), 0.01);
   const auto aggregating = run_scene("stack_shear", "_on", reduced);
-  const auto on = rouleau::measure_stack(aggregating, 4, r0);
+  const auto on = rouleau::measure_stack(aggregating, 4, 4, r0);
   std::printf("interaction, 0.5 1/s: largest neighbour gap growth %.4f um (the gaps close)\n", on.largest_gap_growth);
   EXPECT_LT(on.largest_gap_growth, -0.02);
   EXPECT_TRUE(on.intact);

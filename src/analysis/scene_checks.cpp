@@ -42,7 +42,7 @@ AggregationCheck check_aggregation(const DiagnosticsRows& rows, double zero_forc
   return check;
 }
 
-StackMeasures measure_stack(const DiagnosticsRows& rows, int cells, double zero_force_length) {
+StackMeasures measure_stack(const DiagnosticsRows& rows, int cells, int cells_per_stack, double zero_force_length) {
   if (rows.empty()) throw std::runtime_error("rouleau::measure_stack: no diagnostics rows");
   StackMeasures m;
   m.cells = cells;
@@ -56,6 +56,7 @@ StackMeasures measure_stack(const DiagnosticsRows& rows, int cells, double zero_
   auto cell = [](int c, const char* what) { return "cell" + std::to_string(c) + "_" + what; };
   m.largest_gap_growth = -1e300;
   for (int c = 0; c + 1 < cells; ++c) {
+    if ((c + 1) % cells_per_stack == 0) continue;  // c is the top of its column
     const std::string gap = "gap_" + std::to_string(c) + "_" + std::to_string(c + 1) + "_um";
     m.largest_gap_growth = std::max(m.largest_gap_growth, value(last, gap) - value(first, gap));
     const double separation_first = value(first, cell(c + 1, "centroid_y_um")) - value(first, cell(c, "centroid_y_um"));
@@ -71,8 +72,9 @@ StackMeasures measure_stack(const DiagnosticsRows& rows, int cells, double zero_
   }
   m.mean_inclination_deg = sum / cells;
   m.inclination_spread_deg = largest - smallest;
-  const double dx = value(last, cell(cells - 1, "centroid_x_um")) - value(last, cell(0, "centroid_x_um"));
-  const double dy = value(last, cell(cells - 1, "centroid_y_um")) - value(last, cell(0, "centroid_y_um"));
+  const int top = std::min(cells_per_stack, cells) - 1;
+  const double dx = value(last, cell(top, "centroid_x_um")) - value(last, cell(0, "centroid_x_um"));
+  const double dy = value(last, cell(top, "centroid_y_um")) - value(last, cell(0, "centroid_y_um"));
   m.stack_axis_deg = std::atan2(dx, dy) * 180.0 / M_PI;
   m.intact = m.largest_gap_growth < zero_force_length;
   return m;

@@ -37,8 +37,10 @@ struct AggregationCheck {
 // Measures the check between cells `a` and `b` (indices) for Morse length r0 [μm].
 AggregationCheck check_aggregation(const DiagnosticsRows& rows, double zero_force_length, int a = 0, int b = 1);
 
-// A stack of cells in simple shear (Liu et al. 2004, Figs. 7-12): cells 0, 1, ... stacked
-// along y in that order, measured at the first and the last row. Neighbours are (i, i+1).
+// Stacks of cells in simple shear (Liu et al. 2004, Figs. 7-12): columns of
+// `cells_per_stack` cells each, cells 0, 1, ... stacked along y in that order within a
+// column, columns one after the other; measured at the first and the last row. Neighbours
+// are (i, i+1) within a column; the stack axis is the first column's.
 struct StackMeasures {
   int cells = 0;
   double largest_gap_growth = 0.0;         // [μm] max over neighbours of last − first gap_i_(i+1)
@@ -54,7 +56,8 @@ struct StackMeasures {
   bool intact = false;
 };
 
-// Measures the stack of the run's first `cells` cells; r0 [μm] for the intact test.
-StackMeasures measure_stack(const DiagnosticsRows& rows, int cells, double zero_force_length);
+// Measures the run's first `cells` cells in columns of `cells_per_stack`; r0 [μm] for the
+// intact test.
+StackMeasures measure_stack(const DiagnosticsRows& rows, int cells, int cells_per_stack, double zero_force_length);
 
 }  // namespace rouleau

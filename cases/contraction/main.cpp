@@ -1,11 +1,14 @@
-// Plasma through a micro-vessel contraction: runs cases/contraction/case.toml (or the file
-// given) and sets the driving pressure against Hagen–Poiseuille's drop summed over the
-// cross-sections, (8 μ Q / π) ∫ dx / R(x)⁴, and the outflow against the inflow.
+// Plasma, and cells, through a micro-vessel contraction (paper Figs. 13-15): runs
+// cases/contraction/case.toml (or the file given: cells.toml for the cells) and sets the
+// driving pressure against Hagen–Poiseuille's drop summed over the cross-sections,
+// (8 μ Q / π) ∫ dx / R(x)⁴, and the outflow against the inflow; with cells, it prints how
+// many have passed the throat over time with the driving pressure.
 //   case_contraction [CASE.toml] [--out DIR] [--set KEY=VALUE]... (the options of `rouleau run`)
 #include <Kokkos_Core.hpp>
 #include <cmath>
 #include <cstdio>
 
+#include "analysis/scene_checks.hpp"
 #include "geometry/vessel_profile.hpp"
 #include "io/diagnostics_reader.hpp"
 #include "run/run_case.hpp"
@@ -15,11 +18,23 @@ int main(int argc, char** argv) {
   // Inputs and run
   const auto run = rouleau::run_case_driver(argc, argv, ROULEAU_CASE_DIR "/case.toml", "runs/contraction");
   if (!run.ran) return run.status;
-  // What is special to this case: the pressure the contraction costs, and mass balance.
-  const auto last = rouleau::read_last_diagnostics(run.options.output_dir + "/diagnostics.csv");
+  // What is special to this case: the cells' passage, the pressure the contraction costs,
+  // and mass balance.
+  const auto rows = rouleau::read_diagnostics(run.options.output_dir + "/diagnostics.csv");
+  const rouleau::VesselProfile& profile = run.config.vessel.profile;
+  const int cells = static_cast<int>(run.config.cells.size());
+  if (cells > 0) {
+    const double throat_exit = profile.inlet_length + profile.contraction_length + profile.throat_length;
+    std::printf("%10s %12s %12s   (cells past the throat's exit at x = %.1f um, of %d)\n", "time_s", "cells_past",
+                "driving_Pa", throat_exit, cells);
+    for (const auto& row : rows)
+      std::printf("%10.4f %12d %12.5f\n", row.at("time_s"), rouleau::cells_past(row, cells, throat_exit),
+                  row.at("driving_pressure_Pa"));
+  }
+  const auto& last = rows.back();
   const double inflow = last.at("flow_rate_inlet_um3_s"), outflow = last.at("flow_rate_outlet_um3_s");
   const double drop = last.at("driving_pressure_Pa");
-  const double lubrication = rouleau::vessel_poiseuille_drop(run.config.vessel.profile, run.config.fluid.viscosity, outflow);
+  const double lubrication = rouleau::vessel_poiseuille_drop(profile, run.config.fluid.viscosity, outflow);
   std::printf("flow rate in %.4f, out %.4f um^3/s (relative difference %.1e)\n", inflow, outflow,
               std::fabs(outflow - inflow) / inflow);
   std::printf("driving pressure %.5f Pa; Hagen-Poiseuille summed over the cross-sections %.5f Pa; ratio %.4f "

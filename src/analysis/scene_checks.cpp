@@ -42,6 +42,17 @@ AggregationCheck check_aggregation(const DiagnosticsRows& rows, double zero_forc
   return check;
 }
 
+int cells_past(const std::map<std::string, double>& row, int cells, double x) {
+  int past = 0;
+  for (int c = 0; c < cells; ++c) {
+    const std::string column = "cell" + std::to_string(c) + "_centroid_x_um";
+    const auto found = row.find(column);
+    if (found == row.end()) throw std::runtime_error("rouleau::cells_past: no column \"" + column + "\"");
+    if (found->second > x) ++past;
+  }
+  return past;
+}
+
 StackMeasures measure_stack(const DiagnosticsRows& rows, int cells, int cells_per_stack, double zero_force_length) {
   if (rows.empty()) throw std::runtime_error("rouleau::measure_stack: no diagnostics rows");
   StackMeasures m;

@@ -37,6 +37,10 @@ struct AggregationCheck {
 // Measures the check between cells `a` and `b` (indices) for Morse length r0 [μm].
 AggregationCheck check_aggregation(const DiagnosticsRows& rows, double zero_force_length, int a = 0, int b = 1);
 
+// Cells through a vessel (Liu et al. 2004, Figs. 13-17): how many of the run's first
+// `cells` cells have their centroid beyond `x` [μm] (the throat's exit) in `row`.
+int cells_past(const std::map<std::string, double>& row, int cells, double x);
+
 // Stacks of cells in simple shear (Liu et al. 2004, Figs. 7-12): columns of
 // `cells_per_stack` cells each, cells 0, 1, ... stacked along y in that order within a
 // column, columns one after the other; measured at the first and the last row. Neighbours

@@ -38,4 +38,11 @@ Outcome run_rouleau(const std::string& arguments) {
   return outcome;
 }
 
+// An empty output folder for a run, unique to this process: TMPDIR/rouleau_run_NAME_PID.
+std::string fresh_output_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("rouleau_run_" + name + "_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  return dir.string();
+}
+
 }  // namespace

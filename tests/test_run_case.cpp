@@ -18,12 +18,6 @@ namespace {
 
 const std::string cases_dir = std::string(ROULEAU_SOURCE_DIR) + "/cases";
 
-std::string fresh_output_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("rouleau_run_" + name + "_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  return dir.string();
-}
-
 // The discrete mean of the parabola 6s(1 − s) interpolated linearly between the nodes of
 // `elements` intervals graded by `grading` on [0, 1] (the trapezoid rule).
 double nodal_parabola_mean(int elements, double grading) {

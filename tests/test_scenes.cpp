@@ -17,12 +17,6 @@ namespace {
 
 const std::string cases_dir = std::string(ROULEAU_SOURCE_DIR) + "/cases";
 
-std::string fresh_output_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("rouleau_scene_" + name + "_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  return dir.string();
-}
-
 // Runs cases/NAME/case.toml with `overrides` (each a --set) and returns its diagnostics.
 rouleau::DiagnosticsRows run_scene(const std::string& name, const std::string& tag, const std::string& overrides) {
   const std::string out = fresh_output_dir(name + tag);

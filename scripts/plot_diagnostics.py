@@ -19,8 +19,10 @@ Only the figures the run's columns and files allow are drawn. Needs matplotlib
 """
 import argparse
 import csv
+import glob
 import math
 import os
+import re
 import sys
 import tomllib
 
@@ -146,8 +148,6 @@ def plot_solver(columns, folder, written):
 
 def plot_cross_sections(run_dir, plane, snapshots, folder, written):
     """Cell nodes near a plane at `snapshots` field outputs, one panel each, coloured by cell."""
-    import glob
-    import re
     try:
         import h5py
     except ImportError:
@@ -177,7 +177,7 @@ def plot_cross_sections(run_dir, plane, snapshots, folder, written):
         if centre is None:  # the plane through the cells' mean centre at the first snapshot
             centre = x[:, normal].mean()
         near = abs(x[:, normal] - centre) < 0.5
-        panel.scatter(x[near, first], x[near, second], c=cell[near], cmap="tab10", vmin=0, vmax=9, s=3)
+        panel.scatter(x[near, first], x[near, second], c=cell[near] % 10, cmap="tab10", vmin=0, vmax=9, s=3)
         panel.set_aspect("equal")
         panel.set_title(f"t = {time:.4g} s", fontsize="small")
         panel.set_xlabel(f"{names[first]} [μm]")

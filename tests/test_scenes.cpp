@@ -6,10 +6,12 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 
 #include "analysis/scene_checks.hpp"
+#include "config/case_config.hpp"
 #include "io/diagnostics_reader.hpp"
 #include "run_rouleau.hpp"
 
@@ -33,7 +35,7 @@ TEST(Scenes, TwoCellsAggregateAndStayWithTheInteractionAndNotWithout) {
   const std::string reduced = " --set domain.elements=[12,12,10] --set cell_kinds.normal.resolution=coarse"
                               " --set output.fields=false";
   const auto with = run_scene("aggregation", "_on", reduced + " --set time.end_s=0.0015");
-  const double r0 = 0.25;
+  const double r0 = rouleau::MorseConfig{}.zero_force_length;  // the cases use the default law
   const auto on = rouleau::check_aggregation(with, r0);
   std::printf("interaction on: gap %.4f -> %.4f um (closed below %.4f), last quarter's range %.2e um, contact area "
               "%.3f um^2\n", on.initial_gap, on.final_gap, rouleau::AggregationCheck::closed_gap_r0 * r0,
@@ -44,10 +46,22 @@ TEST(Scenes, TwoCellsAggregateAndStayWithTheInteractionAndNotWithout) {
     const auto v = rouleau::diagnostics_column(with, volume);
     EXPECT_NEAR(v.back(), v.front(), 0.01 * v.front()) << volume;
   }
-  const auto without = run_scene("aggregation", "_off", reduced + " --set time.end_s=0.0003 --set interaction.enabled=false");
-  const auto off = rouleau::check_aggregation(without, r0);
+  // Without the interaction, with its fields: the cross-sections of the cells are drawn.
+  const std::string off_dir = fresh_output_dir("aggregation_off");
+  const Outcome o = run_rouleau("run " + cases_dir + "/aggregation/case.toml --no-progress --out " + off_dir +
+                                " --set domain.elements=[12,12,10] --set cell_kinds.normal.resolution=coarse"
+                                " --set time.end_s=0.0003 --set interaction.enabled=false");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto off = rouleau::check_aggregation(rouleau::read_diagnostics(off_dir + "/diagnostics.csv"), r0);
   std::printf("interaction off: gap %.4f -> %.4f um\n", off.initial_gap, off.final_gap);
   EXPECT_TRUE(off.open);
+  // Debian's interpreter, which has python3-matplotlib and python3-h5py (scripts/bootstrap.sh).
+  ASSERT_EQ(std::system(("/usr/bin/python3 " + std::string(ROULEAU_SOURCE_DIR) + "/scripts/plot_diagnostics.py " +
+                         off_dir + " --plane xz > /dev/null").c_str()),
+            0);
+  const std::string png = file_contents(off_dir + "/figures/cross_sections.png");
+  EXPECT_GT(png.size(), 1000u);
+  EXPECT_EQ(png.substr(1, 3), "PNG");
 }
 
 TEST(Scenes, StackedCellsMoveWithTheShearAndAttractOnlyWithTheInteraction) {
@@ -63,7 +77,7 @@ TEST(Scenes, StackedCellsMoveWithTheShearAndAttractOnlyWithTheInteraction) {
                               " --set output.fields=false --set output.diagnostics_every_steps=10";
   const std::string fast = " --set boundary.y_min.velocity_um_s=[-30,0,0] --set boundary.y_max.velocity_um_s=[30,0,0]";
   const auto free_cells = run_scene("stack_shear", "_free", reduced + fast + " --set interaction.enabled=false");
-  const double r0 = 0.25;
+  const double r0 = rouleau::MorseConfig{}.zero_force_length;  // the cases use the default law
   const auto free_measures = rouleau::measure_stack(free_cells, 4, 4, r0);
   const auto x_top = rouleau::diagnostics_column(free_cells, "cell3_centroid_x_um");
   const auto x_bottom = rouleau::diagnostics_column(free_cells, "cell0_centroid_x_um");

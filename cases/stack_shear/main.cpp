@@ -40,7 +40,8 @@ int main(int argc, char** argv) {
   // The shear rate from the walls: (u_top − u_bottom) / H.
   const auto& domain = run.config.domain;
   const double shear_rate =
-      (domain.boundary[3].velocity[0] - domain.boundary[2].velocity[0]) / (domain.upper[1] - domain.lower[1]);
+      (domain.boundary[rouleau::Side::y_max].velocity[0] - domain.boundary[rouleau::Side::y_min].velocity[0]) /
+      (domain.upper[1] - domain.lower[1]);
   const double r0 = run.config.interaction.morse.zero_force_length;
   const rouleau::StackMeasures m = rouleau::measure_stack(rows, cells, cells_per_stack, r0);
   std::printf("shear rate %.3g 1/s, t = %.4g s (strain %.3g): largest neighbour gap growth %.4f um, largest change "

@@ -6,14 +6,16 @@
 
 namespace rouleau {
 
+double diagnostics_value(const std::map<std::string, double>& row, const std::string& column) {
+  const auto found = row.find(column);
+  if (found == row.end()) throw std::runtime_error("rouleau: the diagnostics have no column \"" + column + "\"");
+  return found->second;
+}
+
 std::vector<double> diagnostics_column(const DiagnosticsRows& rows, const std::string& column) {
   std::vector<double> values;
   values.reserve(rows.size());
-  for (const auto& row : rows) {
-    const auto found = row.find(column);
-    if (found == row.end()) throw std::runtime_error("rouleau::diagnostics_column: no column \"" + column + "\"");
-    values.push_back(found->second);
-  }
+  for (const auto& row : rows) values.push_back(diagnostics_value(row, column));
   return values;
 }
 
@@ -44,39 +46,32 @@ AggregationCheck check_aggregation(const DiagnosticsRows& rows, double zero_forc
 
 int cells_past(const std::map<std::string, double>& row, int cells, double x) {
   int past = 0;
-  for (int c = 0; c < cells; ++c) {
-    const std::string column = "cell" + std::to_string(c) + "_centroid_x_um";
-    const auto found = row.find(column);
-    if (found == row.end()) throw std::runtime_error("rouleau::cells_past: no column \"" + column + "\"");
-    if (found->second > x) ++past;
-  }
+  for (int c = 0; c < cells; ++c)
+    if (diagnostics_value(row, "cell" + std::to_string(c) + "_centroid_x_um") > x) ++past;
   return past;
 }
 
 StackMeasures measure_stack(const DiagnosticsRows& rows, int cells, int cells_per_stack, double zero_force_length) {
   if (rows.empty()) throw std::runtime_error("rouleau::measure_stack: no diagnostics rows");
   StackMeasures m;
-  m.cells = cells;
   const auto& first = rows.front();
   const auto& last = rows.back();
-  auto value = [](const std::map<std::string, double>& row, const std::string& column) {
-    const auto found = row.find(column);
-    if (found == row.end()) throw std::runtime_error("rouleau::measure_stack: no column \"" + column + "\"");
-    return found->second;
+  // Cell c's value of `what` (a cellC_ column) in `row`.
+  auto of_cell = [](const std::map<std::string, double>& row, int c, const char* what) {
+    return diagnostics_value(row, "cell" + std::to_string(c) + "_" + what);
   };
-  auto cell = [](int c, const char* what) { return "cell" + std::to_string(c) + "_" + what; };
+  auto y = [&](const std::map<std::string, double>& row, int c) { return of_cell(row, c, "centroid_y_um"); };
   m.largest_gap_growth = -1e300;
   for (int c = 0; c + 1 < cells; ++c) {
     if ((c + 1) % cells_per_stack == 0) continue;  // c is the top of its column
     const std::string gap = "gap_" + std::to_string(c) + "_" + std::to_string(c + 1) + "_um";
-    m.largest_gap_growth = std::max(m.largest_gap_growth, value(last, gap) - value(first, gap));
-    const double separation_first = value(first, cell(c + 1, "centroid_y_um")) - value(first, cell(c, "centroid_y_um"));
-    const double separation_last = value(last, cell(c + 1, "centroid_y_um")) - value(last, cell(c, "centroid_y_um"));
-    m.largest_separation_change = std::max(m.largest_separation_change, std::fabs(separation_last - separation_first));
+    m.largest_gap_growth = std::max(m.largest_gap_growth, diagnostics_value(last, gap) - diagnostics_value(first, gap));
+    const double separation_change = (y(last, c + 1) - y(last, c)) - (y(first, c + 1) - y(first, c));
+    m.largest_separation_change = std::max(m.largest_separation_change, std::fabs(separation_change));
   }
   double smallest = 1e300, largest = -1e300, sum = 0.0;
   for (int c = 0; c < cells; ++c) {
-    const double inclination = value(last, cell(c, "inclination_deg"));
+    const double inclination = of_cell(last, c, "inclination_deg");
     smallest = std::min(smallest, inclination);
     largest = std::max(largest, inclination);
     sum += inclination;
@@ -84,8 +79,8 @@ StackMeasures measure_stack(const DiagnosticsRows& rows, int cells, int cells_pe
   m.mean_inclination_deg = sum / cells;
   m.inclination_spread_deg = largest - smallest;
   const int top = std::min(cells_per_stack, cells) - 1;
-  const double dx = value(last, cell(top, "centroid_x_um")) - value(last, cell(0, "centroid_x_um"));
-  const double dy = value(last, cell(top, "centroid_y_um")) - value(last, cell(0, "centroid_y_um"));
+  const double dx = of_cell(last, top, "centroid_x_um") - of_cell(last, 0, "centroid_x_um");
+  const double dy = y(last, top) - y(last, 0);
   m.stack_axis_deg = std::atan2(dx, dy) * 180.0 / M_PI;
   m.intact = m.largest_gap_growth < zero_force_length;
   return m;

@@ -11,8 +11,9 @@ namespace rouleau {
 
 using DiagnosticsRows = std::vector<std::map<std::string, double>>;
 
-// The values of one column over the run, in row order. Throws std::runtime_error naming the
-// column when the rows lack it.
+// The value of one column in a row, and its values over the run in row order. Both throw
+// std::runtime_error naming the column when a row lacks it.
+double diagnostics_value(const std::map<std::string, double>& row, const std::string& column);
 std::vector<double> diagnostics_column(const DiagnosticsRows& rows, const std::string& column);
 
 // Two cells aggregating in quiescent plasma (Liu et al. 2004, Fig. 6): the gap between
@@ -46,7 +47,6 @@ int cells_past(const std::map<std::string, double>& row, int cells, double x);
 // column, columns one after the other; measured at the first and the last row. Neighbours
 // are (i, i+1) within a column; the stack axis is the first column's.
 struct StackMeasures {
-  int cells = 0;
   double largest_gap_growth = 0.0;         // [μm] max over neighbours of last − first gap_i_(i+1)
   double largest_separation_change = 0.0;  // [μm] max over neighbours of |Δy_last − Δy_first| (centroids)
   double mean_inclination_deg = 0.0;       // last row: the cells' mean inclination in the shear plane

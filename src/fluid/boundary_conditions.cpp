@@ -1,11 +1,11 @@
 #include "fluid/boundary_conditions.hpp"
 
-#include "fluid/flow_rates.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <stdexcept>
+
+#include "fluid/flow_rates.hpp"
 
 namespace rouleau {
 

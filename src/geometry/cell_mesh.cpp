@@ -268,7 +268,6 @@ TetrahedralMesh mesh_with_gmsh(const CellKindConfig& kind, double element_size) 
 
 // ---- checks and surfaces
 
-
 struct Surfaces {
   std::vector<Triangle> outer, inner;
 };

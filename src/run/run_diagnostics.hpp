@@ -4,10 +4,9 @@
 // viscosity), the cells (energies, volumes and their drift, centroids, inclination and
 // Taylor deformation in the shear plane) and the coupling
 // (power spread and interpolated, speeds, time per stage since the previous row).
+#include <memory>
 #include <string>
 #include <vector>
-
-#include <memory>
 
 #include "cells/cell_gaps.hpp"
 #include "cells/cells_from_case.hpp"

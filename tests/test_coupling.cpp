@@ -2,7 +2,9 @@
 // a cell at rest stays at rest, a stiff sphere in simple shear turns at half the shear
 // rate (the rigid-sphere value; Jeffery 1922) with the error falling under refinement,
 // the power spread equals the power interpolated, and the scene with its skipped stages
-// gives the full stage list's answer to round-off.
+// gives the full stage list's answer to round-off. The semi-implicit coupling's stiffness
+// is the Hessian of the cells' energy: symmetric, linear, and its quadratic form the
+// energy's second difference.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -11,12 +13,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <string>
 
 #include "capsule_in_shear.hpp"
 #include "sphere_in_shear.hpp"
 #include "cells/cell_shape.hpp"
 #include "config/load_case.hpp"
+#include "coupling/cell_stiffness.hpp"
 #include "run/simulation.hpp"
 
 namespace {
@@ -186,6 +190,119 @@ TEST(Coupling, SkippedStagesChangeNothingButRoundOff) {
               "displacement %.3g um\n", largest_difference, largest_displacement);
   EXPECT_GT(largest_displacement, 1e-4);  // the cells did move
   EXPECT_LT(largest_difference, 1e-10 * largest_displacement);
+}
+
+TEST(Coupling, SemiImplicitStiffnessIsTheSymmetricHessianOfTheCellsEnergy) {
+  // Two capsules 0.4 um apart, each node moved at random by up to 0.02 um (a stressed
+  // state), the Morse law in range. The stiffness operator of the semi-implicit coupling,
+  // Ŝ u = −S K (Δt U I u) / (P L²) with K = ∂f/∂x by one-sided differences
+  // (coupling/cell_stiffness.hpp), must be, for random fluid velocities u, w:
+  //   symmetric:  ⟨w, Ŝ u⟩ = ⟨u, Ŝ w⟩ (S = Iᵀ, K a Hessian);
+  //   linear:     Ŝ (2u + 3w) = 2 Ŝ u + 3 Ŝ w;
+  //   the energy's curvature: P L² Δt U ⟨u, Ŝ u⟩ = −⟨δx, K δx⟩ = d²E/ds² along δx = Δt U I u,
+  //   E the elastic plus interaction energy, by a central second difference of E.
+  // The differences' truncation error is about h/ℓ ≈ 1e-5 (h = 1e-6 um, ℓ ≈ 0.16 um):
+  // each is held to 1e-4. The second difference of E takes node displacements of 0.01 um:
+  // its truncation error then falls as ε² (3e-5 here; 2e-4 at 0.03 um) while below about
+  // 3e-3 um the round-off of E (2 pN um) takes over (3e-3 at 1e-3 um, 7e-2 at 1e-4 um);
+  // it is held to 1e-3.
+  const CaseConfig config = load_text(shear_box(16.0, 12, 0.0) +
+                                      "[time]\ndt_s = 2e-5\nend_s = 1e-3\n"
+                                      "[cell_kinds.capsule]\nresolution = \"coarse\"\n"
+                                      "[[cells]]\nkind = \"capsule\"\ncenter_um = [-3.02, 0.1, 0]\n"
+                                      "[[cells]]\nkind = \"capsule\"\ncenter_um = [3.02, -0.1, 0]\n"
+                                      "[interaction]\nenabled = true\n");
+  Simulation simulation(config, scratch("meshes"));
+  rouleau::CellPopulation& population = *simulation.cells().population;
+  rouleau::SurfaceInteraction& interaction = *simulation.cells().interaction;
+  const int nodes = population.num_nodes();
+  std::mt19937 random(20041);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  {
+    auto x = host(population.positions());
+    for (int n = 0; n < nodes; ++n)
+      for (int c = 0; c < 3; ++c) x(n, c) += 0.02 * unit(random);
+    Kokkos::deep_copy(population.positions(), x);
+  }
+  rouleau::RkpmCoupler rkpm(simulation.mesh());
+  rkpm.update(population.positions());
+  using NodeVectors = rouleau::CellPopulation::NodeVectors;
+  NodeVectors scratch_forces("scratch_forces", nodes);
+  const rouleau::FluidScales scales = simulation.fluid().scales();
+  rouleau::CellStiffness stiffness(
+      rkpm, population.positions(),
+      [&](const NodeVectors& out) {
+        rouleau::position_dependent_forces(population, &interaction, nullptr, scratch_forces, out);
+      },
+      scales);
+  const double dt = 2e-4;
+  stiffness.linearize(dt);
+
+  const int unknowns = simulation.fluid().fluid_operator().num_unknowns();
+  using Vector = Kokkos::View<double*>;
+  auto random_velocity = [&] {
+    Vector v("velocity", unknowns);
+    auto h = Kokkos::create_mirror_view(v);
+    for (int i = 0; i < unknowns; ++i) h(i) = i % 4 == 3 ? 0.0 : unit(random);
+    Kokkos::deep_copy(v, h);
+    return v;
+  };
+  auto apply = [&](const Vector& v) {
+    Vector y("stiffness_action", unknowns);
+    stiffness.apply(v, y);
+    return Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), y);
+  };
+  auto dot = [&](const auto& a, const auto& b) {
+    double sum = 0.0;
+    for (int i = 0; i < unknowns; ++i) sum += a(i) * b(i);
+    return sum;
+  };
+  const Vector u = random_velocity(), w = random_velocity();
+  const auto u_host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), u);
+  const auto w_host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), w);
+  Vector combination("combination", unknowns);
+  Kokkos::parallel_for(unknowns, KOKKOS_LAMBDA(const int i) { combination(i) = 2.0 * u(i) + 3.0 * w(i); });
+  const auto Su = apply(u), Sw = apply(w), Sc = apply(combination);
+
+  const double uSu = dot(u_host, Su), wSw = dot(w_host, Sw);
+  const double asymmetry = std::fabs(dot(w_host, Su) - dot(u_host, Sw)) / std::sqrt(std::fabs(uSu * wSw));
+  double nonlinearity = 0.0, norm = 0.0;
+  for (int i = 0; i < unknowns; ++i) {
+    nonlinearity = std::max(nonlinearity, std::fabs(Sc(i) - 2.0 * Su(i) - 3.0 * Sw(i)));
+    norm = std::max(norm, std::fabs(Sc(i)));
+  }
+
+  // d²E/ds² along δx = Δt U I u, by E(±ε) with ε max|δx| = 0.01 um.
+  NodeVectors displacement("displacement", nodes);
+  rkpm.interpolate(u, 4, displacement);
+  auto delta = host(displacement);
+  double largest = 0.0;
+  for (int n = 0; n < nodes; ++n)
+    for (int c = 0; c < 3; ++c) {
+      delta(n, c) *= dt * scales.velocity;
+      largest = std::max(largest, std::fabs(delta(n, c)));
+    }
+  const auto base = host(population.positions());
+  auto energy_at = [&](double s) {
+    auto x = host(population.positions());
+    for (int n = 0; n < nodes; ++n)
+      for (int c = 0; c < 3; ++c) x(n, c) = base(n, c) + s * delta(n, c);
+    Kokkos::deep_copy(population.positions(), x);
+    const double energy = population.compute_internal_forces_and_energy() + interaction.compute_forces_and_energy();
+    Kokkos::deep_copy(population.positions(), base);
+    return energy;
+  };
+  const double epsilon = 1e-2 / largest;
+  const double curvature = (energy_at(epsilon) - 2.0 * energy_at(0.0) + energy_at(-epsilon)) / (epsilon * epsilon);
+  const double quadratic_form = scales.force() * dt * scales.velocity * uSu;
+  std::printf("semi-implicit stiffness: asymmetry %.2e, nonlinearity %.2e, <u,Su> P L^2 dt U = %.6e pN um vs "
+              "d2E/ds2 = %.6e pN um (relative difference %.2e), %ld force evaluations\n",
+              asymmetry, nonlinearity / norm, quadratic_form, curvature,
+              std::fabs(quadratic_form - curvature) / std::fabs(curvature), stiffness.evaluations());
+  EXPECT_LT(asymmetry, 1e-4);
+  EXPECT_LT(nonlinearity, 1e-4 * norm);
+  EXPECT_NEAR(quadratic_form, curvature, 1e-3 * std::fabs(curvature));
+  EXPECT_EQ(stiffness.evaluations(), 4);  // one linearization, three actions
 }
 
 }  // namespace

@@ -206,7 +206,16 @@ struct InteractionConfig {
 };
 
 // ---- the fluid–structure coupling (paper eqs. 5–7, 15, 16; DESIGN.md "Coupling")
+// How the cells' forces meet the fluid solve (ImmersedCoupling):
+//   explicit:      the forces at x^n are spread and the fluid solved (DESIGN.md); stable
+//                  only below Δt ≈ C μ h_f / G_eff;
+//   semi_implicit: the forces at x^{n+1} = x^n + Δt I u^{n+1}, linearized about x^n
+//                  (f^n + K Δt I u^{n+1}), enter the fluid solve, so the cells' stiffness
+//                  no longer bounds the step (coupling/cell_stiffness.hpp).
+enum class CouplingScheme { explicit_forces, semi_implicit };
+
 struct CouplingConfig {
+  CouplingScheme scheme = CouplingScheme::explicit_forces;  // key scheme
   // RKPM support radius a_J = support_elements × the local element size at fluid node J.
   double support_elements = 2.0;     // key support_elements
   // C in the explicit coupling's stable step Δt ≤ C μ h_f / G_s (derive_quantities()).

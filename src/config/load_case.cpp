@@ -831,7 +831,9 @@ void read_interaction(const TableReader& root, CaseConfig& config) {
 
 void read_coupling(const TableReader& root, CouplingConfig& coupling) {
   const TableReader section = root.table(
-      "coupling", {"support_elements", "stable_step_factor", "allow_unstable_step", "gravity_m_s2"});
+      "coupling", {"scheme", "support_elements", "stable_step_factor", "allow_unstable_step", "gravity_m_s2"});
+  assign(coupling.scheme, section.choice("scheme", choices_of({CouplingScheme::explicit_forces,
+                                                               CouplingScheme::semi_implicit})));
   // Below one element a point's support may hold too few fluid nodes for the moment matrix.
   assign(coupling.support_elements, section.number("support_elements", Range::closed(1.0, 8.0)));
   assign(coupling.stable_step_factor, section.number("stable_step_factor", Range::above(0)));
@@ -845,9 +847,11 @@ void read_scene(const TableReader& root, SceneConfig& scene) {
   assign(scene.skip_unneeded_stages, section.boolean("skip_unneeded_stages"));
 }
 
-// The explicit coupling refuses a step above its stable estimate unless asked to force it.
+// The explicit coupling refuses a step above its stable estimate unless asked to force it
+// (the semi-implicit coupling is not bound by it).
 void check_time_step(const CaseConfig& config) {
   const DerivedQuantities derived = derive_quantities(config);
+  if (config.coupling.scheme == CouplingScheme::semi_implicit) return;
   if (derived.stable_dt <= 0.0 || config.time.dt <= derived.stable_dt || config.coupling.allow_unstable_step) return;
   throw InputError(config.source_file, "time.dt_s",
                    format_number(config.time.dt) + " s exceeds the explicit coupling's stable step " +
@@ -885,6 +889,10 @@ const char* toml_name(InflowProfile profile) {
   return profile == InflowProfile::uniform ? "uniform" : "parabolic";
 }
 const char* toml_name(TimeMode mode) { return mode == TimeMode::steady ? "steady" : "transient"; }
+const char* toml_name(CouplingScheme scheme) {
+  return scheme == CouplingScheme::semi_implicit ? "semi_implicit" : "explicit";
+}
+
 const char* toml_name(TimeScheme scheme) { return scheme == TimeScheme::bdf2 ? "bdf2" : "backward_euler"; }
 const char* toml_name(StokesChoice choice) {
   switch (choice) {

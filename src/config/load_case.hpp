@@ -37,6 +37,7 @@ const char* toml_name(BoundaryType type);
 const char* toml_name(InflowProfile profile);
 const char* toml_name(TimeMode mode);
 const char* toml_name(TimeScheme scheme);
+const char* toml_name(CouplingScheme scheme);
 const char* toml_name(StokesChoice choice);
 const char* toml_name(PreconditionerType type);
 const char* toml_name(InteractionQuadrature quadrature);

@@ -243,6 +243,7 @@ std::string resolved_case_toml(const CaseConfig& config, const DerivedQuantities
 
   const CouplingConfig& coupling = config.coupling;
   toml_file.table("coupling");
+  toml_file.key("scheme", toml_name(coupling.scheme));
   toml_file.key("support_elements", coupling.support_elements);
   toml_file.key("stable_step_factor", coupling.stable_step_factor);
   toml_file.key("allow_unstable_step", coupling.allow_unstable_step);

@@ -75,6 +75,16 @@ ImmersedCoupling::ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, c
     for (int n = 0; n < nodes; ++n) host(n) = mass[n];
     Kokkos::deep_copy(excess_mass_, host);
   }
+  if (config.coupling.scheme == CouplingScheme::semi_implicit) {
+    stiffness_scratch_ = NodeVectors("rouleau::ImmersedCoupling::stiffness_scratch", nodes);
+    force_change_ = NodeVectors("rouleau::ImmersedCoupling::force_change", nodes);
+    stiffness_ = std::make_unique<CellStiffness>(
+        rkpm_, population_.positions(),
+        [this](const NodeVectors& out) {
+          position_dependent_forces(population_, interaction_, wall_.get(), stiffness_scratch_, out);
+        },
+        fluid.scales());
+  }
   // Without skips the RKPM correction runs everywhere (it changes nothing but round-off
   // where the plain window reproduces linear fields).
   rkpm_.always_correct(!skip_unneeded_);
@@ -122,8 +132,27 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
   });
   report.corrected_points = rkpm_.corrected_points();
   // 3. the fluid
+  if (stiffness_) {
+    times.time(stiffness_stage, [&] { stiffness_->linearize(dt); });
+    fluid_.set_immersed_stiffness(stiffness_.get());
+  }
   report.fluid = times.time(fluid_stage, [&] { return fluid_.advance(dt, scheme); });
+  if (stiffness_) fluid_.set_immersed_stiffness(nullptr);
   if (!report.fluid.converged) return report;
+  // The semi-implicit step's forces f^n + K Δt I u^{n+1}, spread as the fluid felt them.
+  if (stiffness_)
+    times.time(stiffness_stage, [&] {
+      stiffness_->force_change(fluid_.state(), force_change_);
+      const NodeVectors forces = fsi_forces_, change = force_change_;
+      Kokkos::parallel_for(
+          "rouleau::ImmersedCoupling::add_force_change", Kokkos::RangePolicy<ExecSpace>(0, forces.extent(0)),
+          KOKKOS_LAMBDA(const int n) {
+            for (int d = 0; d < 3; ++d) forces(n, d) += change(n, d);
+          });
+      Kokkos::deep_copy(fluid_load_, 0.0);
+      rkpm_.spread(fsi_forces_, fluid_load_, fluid_unknowns_per_node);
+      fluid_.set_immersed_forces(fluid_load_);
+    });
   // 4. interpolate
   times.time(interpolate_stage,
              [&] { rkpm_.interpolate(fluid_.state(), fluid_unknowns_per_node, interpolated_); });

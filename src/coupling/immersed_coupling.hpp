@@ -8,6 +8,10 @@
 //   3. the fluid solve from t^n to t^{n+1} (eqs. 13, 14);
 //   4. interpolate: v_I^{n+1} = Σ_J Φ_J(x_I^n) u_J^{n+1} (eqs. 6, 15);
 //   5. move: x_I^{n+1} = x_I^n + Δt v_I^{n+1}.
+// With coupling.scheme = "semi_implicit" the fluid solve of step 3 also carries the
+// forces' change over the step, linearized about x^n (coupling/cell_stiffness.hpp):
+// f^n + K Δt I u^{n+1}; after the solve that change is added to the spread forces, so the
+// reported forces, powers and wall reactions are those the fluid felt.
 // With viscosity ratio 1 the cell's viscous stress is the fluid's and the pressures
 // cancel, so ∇·σ_s − ∇·σ_f of eq. (7) is the elastic force alone (DESIGN.md). Spreading
 // and interpolation use the same shape functions, so the power the cells put into the
@@ -18,6 +22,7 @@
 
 #include "cells/cells_from_case.hpp"
 #include "config/case_config.hpp"
+#include "coupling/cell_stiffness.hpp"
 #include "coupling/rkpm_coupler.hpp"
 #include "coupling/wall_repulsion.hpp"
 #include "fluid/fluid_solver.hpp"
@@ -38,6 +43,7 @@ class ImmersedCoupling {
   static constexpr const char* fluid_stage = "fluid solve";
   static constexpr const char* interpolate_stage = "RKPM interpolate";
   static constexpr const char* move_stage = "move cells";
+  static constexpr const char* stiffness_stage = "cell stiffness (semi-implicit)";
 
   // `fluid` and `cells` must outlive the coupling. The cells must lie inside the fluid mesh.
   ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, const CaseConfig& config);
@@ -58,6 +64,9 @@ class ImmersedCoupling {
   bool runs_interaction() const { return interaction_ != nullptr; }
   bool runs_inertia() const { return runs_inertia_; }
   bool runs_wall_repulsion() const { return wall_ != nullptr; }
+  bool semi_implicit() const { return stiffness_ != nullptr; }
+  // Evaluations of the cells' forces made for the semi-implicit stiffness so far.
+  long stiffness_evaluations() const { return stiffness_ ? stiffness_->evaluations() : 0; }
   // F_I of the last step [pN] (the sum of the stages' forces) and the Morse part alone.
   const NodeVectors& fsi_forces() const { return fsi_forces_; }
   const NodeVectors& interaction_forces() const { return interaction_forces_; }
@@ -78,6 +87,9 @@ class ImmersedCoupling {
   NodeVectors interaction_forces_, wall_forces_, fsi_forces_;
   NodeVectors interpolated_;               // v̂_I, the scaled fluid velocity at the nodes
   Kokkos::View<double*> fluid_load_;       // the spread forces on the fluid's unknowns [pN]
+  std::unique_ptr<CellStiffness> stiffness_;  // the semi-implicit coupling's K, or null
+  NodeVectors stiffness_scratch_;           // interaction or wall forces while K is differenced
+  NodeVectors force_change_;                // K Δt I u^{n+1} [pN] of the semi-implicit step
 };
 
 }  // namespace rouleau

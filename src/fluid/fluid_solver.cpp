@@ -12,18 +12,23 @@
 #include "run/profiling_region.hpp"
 
 #include <algorithm>
+#include <functional>
+#include <utility>
 
 namespace rouleau {
 
 namespace {
 using ExecSpace = Kokkos::DefaultExecutionSpace;
 
-// J(U)·x through the element kernels (Navier–Stokes), or A·x (Stokes: affine residual).
+// J(U)·x through the element kernels (Navier–Stokes), or A·x (Stokes: affine residual),
+// plus the immersed stiffness Ŝ x when the coupling is semi-implicit.
 // The state's projected gradient is computed once: U is fixed during the Krylov solve.
 class FluidJacobian final : public LinearOperator {
  public:
-  FluidJacobian(const FluidOperator& op, const ConstVector& state, const Vector& state_gradient, bool linear)
-      : op_(op), state_(state), state_gradient_(state_gradient), linear_(linear) {
+  using AddStiffness = std::function<void(const ConstVector&, const Vector&)>;
+  FluidJacobian(const FluidOperator& op, const ConstVector& state, const Vector& state_gradient, bool linear,
+                AddStiffness add_stiffness)
+      : op_(op), state_(state), state_gradient_(state_gradient), linear_(linear), add_stiffness_(std::move(add_stiffness)) {
     if (!linear_ && op_.coefficients().viscous_reconstruction) op_.project_gradient(state_, state_gradient_);
   }
   void apply(const ConstVector& x, const Vector& y) const override {
@@ -31,6 +36,7 @@ class FluidJacobian final : public LinearOperator {
       op_.linear_action(x, y);
     else
       op_.jacobian_action(state_, state_gradient_, x, y);
+    if (add_stiffness_) add_stiffness_(x, y);
   }
 
  private:
@@ -38,6 +44,7 @@ class FluidJacobian final : public LinearOperator {
   ConstVector state_;
   Vector state_gradient_;
   bool linear_;
+  AddStiffness add_stiffness_;
 };
 
 // ‖R‖ over the velocity rows and over the pressure rows (a free function: CUDA forbids
@@ -150,6 +157,7 @@ std::vector<std::array<double, 3>> FluidSolver::boundary_forces(const std::vecto
   const FluidMesh& mesh = operator_.mesh();
   // One residual without constraint rows and one host copy for all the sides asked.
   operator_.residual(state_, state_, residual_, false);
+  add_immersed_stiffness(state_, residual_, false);
   auto r = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), residual_);
   std::vector<std::array<double, 3>> forces;
   for (const std::string& side : sides) {
@@ -232,6 +240,25 @@ void FluidSolver::set_immersed_forces(const ConstVector& nodal_forces) {
       KOKKOS_LAMBDA(const int i) { load(i) = traction(i) + inverse_force_scale * nodal_forces(i); });
 }
 
+void FluidSolver::set_immersed_stiffness(const LinearOperator* stiffness) {
+  immersed_stiffness_ = stiffness;
+  if (stiffness && stiffness_action_.extent(0) == 0)
+    stiffness_action_ = Vector("rouleau::FluidSolver::stiffness_action", state_.extent(0));
+}
+
+void FluidSolver::add_immersed_stiffness(const ConstVector& x, const Vector& y, bool skip_constrained) const {
+  if (!immersed_stiffness_) return;
+  immersed_stiffness_->apply(x, stiffness_action_);
+  const auto action = stiffness_action_;
+  if (skip_constrained) {
+    const auto dofs = operator_.dirichlet_dofs();
+    Kokkos::parallel_for(
+        "rouleau::FluidSolver::stiffness_constrained_rows", Kokkos::RangePolicy<ExecSpace>(0, dofs.extent(0)),
+        KOKKOS_LAMBDA(const int i) { action(dofs(i)) = 0.0; });
+  }
+  KokkosBlas::axpy(1.0, stiffness_action_, y);
+}
+
 void FluidSolver::rebuild_preconditioner() {
   ProfilingRegion region("rouleau::FluidSolver::preconditioner");
   switch (settings_.preconditioner) {
@@ -273,6 +300,7 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history) {
     rhs_norm = KokkosBlas::nrm2(residual_);
   }
   operator_.residual(state_, state_, residual_);
+  add_immersed_stiffness(state_, residual_, true);
   double norm = KokkosBlas::nrm2(residual_);
   report.initial_residual = norm;
   const double target = linear ? std::fmax(settings_.newton_atol, settings_.gmres_rtol * rhs_norm)
@@ -302,12 +330,16 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history) {
     previous_norm = norm;
     KokkosBlas::axpby(-1.0, residual_, 0.0, residual_);
     Kokkos::deep_copy(correction_, 0.0);
-    FluidJacobian J(operator_, state_, state_gradient_, linear);
+    FluidJacobian::AddStiffness add_stiffness;
+    if (immersed_stiffness_)
+      add_stiffness = [this](const ConstVector& x, const Vector& y) { add_immersed_stiffness(x, y, true); };
+    FluidJacobian J(operator_, state_, state_gradient_, linear, add_stiffness);
     const GmresResult g = gmres_.solve(J, M, residual_, correction_, forcing);
     report.gmres_iterations += g.iterations;
     ++report.newton_iterations;
     KokkosBlas::axpby(1.0, correction_, 1.0, state_);
     operator_.residual(state_, state_, residual_);
+    add_immersed_stiffness(state_, residual_, true);
     norm = KokkosBlas::nrm2(residual_);
     if (spdlog::should_log(spdlog::level::debug)) {
       double momentum = 0.0, continuity = 0.0;

@@ -55,6 +55,13 @@ class FluidSolver {
   // momentum residual as nodal loads, not the stabilization's strong residual (DESIGN.md).
   void set_immersed_forces(const ConstVector& nodal_forces);
 
+  // The semi-implicit coupling's linearized cell forces: an operator Ŝ on the scaled state
+  // whose action Ŝ U enters the residual, R(U) = R_fluid(U) + Ŝ U, and so the Jacobian,
+  // J = J_fluid + Ŝ (zero on the constrained rows). ImmersedCoupling passes
+  // Ŝ U = −S K I (Δt U) / (P L²) (coupling/cell_stiffness.hpp); null turns it off. The
+  // operator must outlive its use; the preconditioner does not see it.
+  void set_immersed_stiffness(const LinearOperator* stiffness);
+
   // Sets the velocity everywhere to velocity(x) [μm/s] at the nodes x [μm] (an initial
   // condition; Dirichlet values are imposed again afterwards).
   void set_velocity(const std::function<std::array<double, 3>(const std::array<double, 3>&)>& velocity);
@@ -87,6 +94,9 @@ class FluidSolver {
   FluidSolveReport solve(const ConstVector& history);
   // The operator's coefficients for a BDF mass coefficient α0/Δt and 1/Δt (scaled; 0, 0: steady).
   void set_time_coefficients(double mass_coefficient, double inverse_dt);
+  // y += Ŝ x, the immersed stiffness's action, left out of the constrained rows when
+  // `skip_constrained` (Jacobian and residual rows that hold the boundary conditions).
+  void add_immersed_stiffness(const ConstVector& x, const Vector& y, bool skip_constrained) const;
   // Rebuilds the configured preconditioner from the Jacobian at the current state.
   void rebuild_preconditioner();
   const Preconditioner& preconditioner() const;
@@ -99,6 +109,8 @@ class FluidSolver {
   Vector state_, previous_state_, older_state_, history_, body_force_, correction_, blocks_;
   double density_;                 // ρ [pN·s²/μm⁴]
   Vector nodal_load_;              // traction loads and immersed forces (scaled), when there are cells
+  const LinearOperator* immersed_stiffness_ = nullptr;  // Ŝ of the semi-implicit coupling, or null
+  Vector stiffness_action_;        // Ŝ x (scratch)
   Vector residual_;  // also scratch for boundary_forces() (const)
   Vector state_gradient_;  // G(U) during a Krylov solve
   BlockJacobi block_jacobi_;

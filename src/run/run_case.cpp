@@ -100,7 +100,10 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
   std::cerr << "fluid mesh: " << simulation.mesh().num_nodes << " nodes, " << simulation.mesh().num_elements << " "
             << (simulation.mesh().element_type == FluidElementType::tetrahedron4 ? "tetrahedra" : "hexahedra") << ", "
             << solver.fluid_operator().num_unknowns() << " unknowns\n";
-  if (coupling)
+  if (coupling && coupling->semi_implicit())
+    std::cerr << "semi-implicit coupling: dt = " << config.time.dt << " s (the explicit stable step estimate, "
+              << derived.stable_dt << " s, does not bind it)\n";
+  else if (coupling)
     std::cerr << "explicit coupling: dt = " << config.time.dt << " s, stable step estimate " << derived.stable_dt
               << " s (" << derived.stable_dt_reason << ")"
               << (config.time.dt > derived.stable_dt ? "; ABOVE IT (coupling.allow_unstable_step = true)" : "")

@@ -55,7 +55,13 @@ std::vector<Stage> plan_stages(const CaseConfig& config, const DerivedQuantities
     cells << "), 4-node tetrahedra meshed with Gmsh once per kind and cached; written with the fields";
     const bool moving = config.time.mode == TimeMode::transient;
     const bool skip = config.scene.skip_unneeded_stages;
-    if (moving) {
+    if (moving && config.coupling.scheme == CouplingScheme::semi_implicit) {
+      cells << ". Semi-implicit coupling: the fluid solved with the cells' forces at x^n plus their change "
+               "over the step, linearized (K dt I u, K by central differences of the forces inside each "
+               "GMRES iteration), the cells moved with the interpolated velocity; dt = "
+            << config.time.dt << " s (the explicit stable step estimate, " << derived.stable_dt
+            << " s, does not bind it)";
+    } else if (moving) {
       cells << ". Explicit coupling: the fluid solved with the cells' forces at x^n, the cells moved with "
                "the interpolated velocity; dt = "
             << config.time.dt << " s, stable step estimate " << derived.stable_dt << " s ("

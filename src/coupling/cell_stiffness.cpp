@@ -1,0 +1,115 @@
+#include "coupling/cell_stiffness.hpp"
+
+#include <stdexcept>
+#include <utility>
+
+#include "run/profiling_region.hpp"
+
+namespace rouleau {
+
+namespace {
+using ExecSpace = Kokkos::DefaultExecutionSpace;
+using NodeVectors = CellStiffness::NodeVectors;
+
+// positions = base + s · displacement
+void displace(const NodeVectors& positions, const NodeVectors& base, const NodeVectors& displacement, double s) {
+  Kokkos::parallel_for(
+      "rouleau::CellStiffness::displace", Kokkos::RangePolicy<ExecSpace>(0, positions.extent(0)),
+      KOKKOS_LAMBDA(const int n) {
+        for (int d = 0; d < 3; ++d) positions(n, d) = base(n, d) + s * displacement(n, d);
+      });
+}
+}  // namespace
+
+void position_dependent_forces(CellPopulation& population, SurfaceInteraction* interaction,
+                               const WallRepulsion* wall, const NodeVectors& scratch, const NodeVectors& out) {
+  population.compute_internal_forces();
+  Kokkos::deep_copy(out, population.internal_forces());
+  auto add = [&](const NodeVectors& part) {
+    Kokkos::parallel_for(
+        "rouleau::position_dependent_forces::add", Kokkos::RangePolicy<ExecSpace>(0, out.extent(0)),
+        KOKKOS_LAMBDA(const int n) {
+          for (int d = 0; d < 3; ++d) out(n, d) += part(n, d);
+        });
+  };
+  if (interaction) {
+    interaction->compute_forces();
+    interaction->copy_forces_to_nodes(scratch);
+    add(scratch);
+  }
+  if (wall) {
+    wall->compute_forces(population.positions(), population.surface_area_weights(), scratch);
+    add(scratch);
+  }
+}
+
+CellStiffness::CellStiffness(const RkpmCoupler& rkpm, const NodeVectors& positions, ForceEvaluation forces,
+                             const FluidScales& scales)
+    : rkpm_(rkpm), positions_(positions), forces_(std::move(forces)), scales_(scales) {
+  const int nodes = positions.extent(0);
+  base_positions_ = NodeVectors("rouleau::CellStiffness::base_positions", nodes);
+  displacement_ = NodeVectors("rouleau::CellStiffness::displacement", nodes);
+  base_forces_ = NodeVectors("rouleau::CellStiffness::base_forces", nodes);
+  displaced_forces_ = NodeVectors("rouleau::CellStiffness::displaced_forces", nodes);
+  change_ = NodeVectors("rouleau::CellStiffness::change", nodes);
+}
+
+void CellStiffness::linearize(double dt) {
+  dt_ = dt;
+  Kokkos::deep_copy(base_positions_, positions_);
+  forces_(base_forces_);
+  ++evaluations_;
+}
+
+void CellStiffness::force_change(const Kokkos::View<const double*>& x, const NodeVectors& change) const {
+  ProfilingRegion region("rouleau::CellStiffness::force_change");
+  if (dt_ <= 0.0) throw std::logic_error("rouleau::CellStiffness: linearize() first");
+  Kokkos::deep_copy(change, 0.0);
+  // δx_I = Δt U (I û)_I [μm], and its largest node displacement.
+  rkpm_.interpolate(x, 4, displacement_);
+  const NodeVectors displacement = displacement_;
+  const double to_displacement = dt_ * scales_.velocity;
+  double largest = 0.0;
+  Kokkos::parallel_reduce(
+      "rouleau::CellStiffness::displacement", Kokkos::RangePolicy<ExecSpace>(0, displacement.extent(0)),
+      KOKKOS_LAMBDA(const int n, double& m) {
+        for (int d = 0; d < 3; ++d) {
+          displacement(n, d) *= to_displacement;
+          const double a = displacement(n, d) < 0 ? -displacement(n, d) : displacement(n, d);
+          if (a > m) m = a;
+        }
+      },
+      Kokkos::Max<double>(largest));
+  if (!(largest > 0.0)) return;  // û = 0 on the cells (or not finite: the solve reports it)
+
+  // K δx ≈ [f(x^n + σ δx) − f(x^n)] / σ,   σ = h / max |δx|
+  const double sigma = difference_step / largest;
+  displace(positions_, base_positions_, displacement_, sigma);
+  forces_(displaced_forces_);
+  Kokkos::deep_copy(positions_, base_positions_);
+  ++evaluations_;
+  const NodeVectors displaced = displaced_forces_, base = base_forces_;
+  const double inverse_step = 1.0 / sigma;
+  Kokkos::parallel_for(
+      "rouleau::CellStiffness::difference", Kokkos::RangePolicy<ExecSpace>(0, change.extent(0)),
+      KOKKOS_LAMBDA(const int n) {
+        for (int d = 0; d < 3; ++d) change(n, d) = inverse_step * (displaced(n, d) - base(n, d));
+      });
+}
+
+void CellStiffness::apply(const Kokkos::View<const double*>& x, const Kokkos::View<double*>& y) const {
+  ProfilingRegion region("rouleau::CellStiffness::apply");
+  // Ŝ û = −S (K δx) / (P L²)
+  force_change(x, change_);
+  const NodeVectors change = change_;
+  const double to_residual = -1.0 / scales_.force();
+  Kokkos::parallel_for(
+      "rouleau::CellStiffness::to_residual", Kokkos::RangePolicy<ExecSpace>(0, change.extent(0)),
+      KOKKOS_LAMBDA(const int n) {
+        for (int d = 0; d < 3; ++d) change(n, d) *= to_residual;
+      });
+  Kokkos::deep_copy(y, 0.0);
+  rkpm_.spread(change_, y, 4);
+}
+
+}  // namespace rouleau

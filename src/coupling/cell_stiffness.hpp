@@ -1,0 +1,79 @@
+#pragma once
+// The cells' stiffness as the fluid sees it, for the semi-implicit coupling.
+//
+// The explicit step spreads the cells' forces at x^n; it is stable only while the stiffest
+// force relaxes slower than a step (Δt ≲ μ h_f / G_eff). The semi-implicit step spreads
+// the forces at the end of the step instead, x^{n+1} = x^n + Δt I u^{n+1}, linearized
+// about x^n:
+//     f(x^{n+1}) ≈ f(x^n) + K (Δt I u^{n+1}),      K = ∂f/∂x at x^n,
+// so the fluid's momentum rows gain the term −S K Δt I u (S spreads, I interpolates,
+// paper eqs. 15, 16). Since f = −∂E/∂x of the elastic, interaction and wall energies, −K is
+// their Hessian: the added operator is symmetric positive semidefinite in the energy norm
+// and damps what made the explicit step unstable, as backward Euler does.
+//
+// K acts without being formed: a one-sided difference of the forces along δx = Δt U I û,
+//     K δx ≈ [f(x^n + σ δx) − f(x^n)] / σ,   σ = h / max_I |δx_I|,
+// with f(x^n) evaluated once per step and h = 1e-6 μm. Its truncation error is about h/ℓ
+// ≈ 1e-5 of K δx for the shortest length ℓ of the forces (the Morse range 1/β ≈ 0.16 μm,
+// the cells' elements ≈ 0.3 μm), its round-off about ε |f| / (h |K|) ≲ 1e-9. Each action
+// costs one evaluation of the forces, one interpolation and one spread.
+// In scaled residual units (forces / (P L²)) the action on the scaled state û is
+//     Ŝ û = −S K (Δt U I û) / (P L²).
+#include <Kokkos_Core.hpp>
+#include <functional>
+
+#include "cells/cell_population.hpp"
+#include "cells/surface_interaction.hpp"
+#include "coupling/rkpm_coupler.hpp"
+#include "coupling/wall_repulsion.hpp"
+#include "fluid/boundary_conditions.hpp"
+#include "solver/linear_operator.hpp"
+
+namespace rouleau {
+
+// out = the forces on the cell nodes that depend on their positions alone, at the current
+// positions [pN]: elastic (with the global constraints), interaction (when `interaction`)
+// and wall repulsion (when `wall`); `scratch` holds each part on its way. These are
+// −∂E/∂x of the cells' energy, the forces whose stiffness CellStiffness differences.
+void position_dependent_forces(CellPopulation& population, SurfaceInteraction* interaction,
+                               const WallRepulsion* wall, const CellPopulation::NodeVectors& scratch,
+                               const CellPopulation::NodeVectors& out);
+
+class CellStiffness final : public LinearOperator {
+ public:
+  using NodeVectors = Kokkos::View<double* [3]>;
+  // forces(out): the position-dependent forces on the cell nodes [pN] at `positions`
+  // (elastic, interaction, wall), written to out.
+  using ForceEvaluation = std::function<void(const NodeVectors& out)>;
+
+  // `positions` are the cell nodes' positions that `forces` reads; apply() moves them and
+  // puts them back. `rkpm` holds the supports at x^n. All must outlive the operator.
+  CellStiffness(const RkpmCoupler& rkpm, const NodeVectors& positions, ForceEvaluation forces,
+                const FluidScales& scales);
+
+  // Linearizes about the current positions x^n (evaluates f(x^n)) for a fluid solve over
+  // the step Δt [s].
+  void linearize(double dt);
+  // The difference step h [μm] (the largest node displacement of a difference).
+  static constexpr double difference_step = 1e-6;
+
+  // y = Ŝ x on the fluid's unknowns (4 per dof node; pressure rows zero).
+  void apply(const Kokkos::View<const double*>& x, const Kokkos::View<double*>& y) const override;
+  // force_change(n) = (K δx)_n [pN], δx = Δt U I x: the change of the cells' forces over the
+  // step when the fluid's scaled state is x (apply() spreads −force_change / (P L²)).
+  void force_change(const Kokkos::View<const double*>& x, const NodeVectors& force_change) const;
+
+  // Force evaluations made so far (one per action and one per linearization).
+  long evaluations() const { return evaluations_; }
+
+ private:
+  const RkpmCoupler& rkpm_;
+  NodeVectors positions_;
+  ForceEvaluation forces_;
+  FluidScales scales_;
+  double dt_ = 0.0;
+  NodeVectors base_positions_, base_forces_, displacement_, displaced_forces_, change_;
+  mutable long evaluations_ = 0;
+};
+
+}  // namespace rouleau

@@ -21,25 +21,25 @@ void displace(const NodeVectors& positions, const NodeVectors& base, const NodeV
 }
 }  // namespace
 
+void add_node_vectors(const NodeVectors& sum, const NodeVectors& part) {
+  Kokkos::parallel_for(
+      "rouleau::add_node_vectors", Kokkos::RangePolicy<ExecSpace>(0, sum.extent(0)), KOKKOS_LAMBDA(const int n) {
+        for (int d = 0; d < 3; ++d) sum(n, d) += part(n, d);
+      });
+}
+
 void position_dependent_forces(CellPopulation& population, SurfaceInteraction* interaction,
                                const WallRepulsion* wall, const NodeVectors& scratch, const NodeVectors& out) {
   population.compute_internal_forces();
   Kokkos::deep_copy(out, population.internal_forces());
-  auto add = [&](const NodeVectors& part) {
-    Kokkos::parallel_for(
-        "rouleau::position_dependent_forces::add", Kokkos::RangePolicy<ExecSpace>(0, out.extent(0)),
-        KOKKOS_LAMBDA(const int n) {
-          for (int d = 0; d < 3; ++d) out(n, d) += part(n, d);
-        });
-  };
   if (interaction) {
     interaction->compute_forces();
     interaction->copy_forces_to_nodes(scratch);
-    add(scratch);
+    add_node_vectors(out, scratch);
   }
   if (wall) {
     wall->compute_forces(population.positions(), population.surface_area_weights(), scratch);
-    add(scratch);
+    add_node_vectors(out, scratch);
   }
 }
 

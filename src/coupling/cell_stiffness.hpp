@@ -31,6 +31,9 @@
 
 namespace rouleau {
 
+// sum(n, d) += part(n, d) over the cell nodes.
+void add_node_vectors(const CellPopulation::NodeVectors& sum, const CellPopulation::NodeVectors& part);
+
 // out = the forces on the cell nodes that depend on their positions alone, at the current
 // positions [pN]: elastic (with the global constraints), interaction (when `interaction`)
 // and wall repulsion (when `wall`); `scratch` holds each part on its way. These are

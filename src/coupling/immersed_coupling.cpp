@@ -143,12 +143,7 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
   if (stiffness_)
     times.time(stiffness_stage, [&] {
       stiffness_->force_change(fluid_.state(), force_change_);
-      const NodeVectors forces = fsi_forces_, change = force_change_;
-      Kokkos::parallel_for(
-          "rouleau::ImmersedCoupling::add_force_change", Kokkos::RangePolicy<ExecSpace>(0, forces.extent(0)),
-          KOKKOS_LAMBDA(const int n) {
-            for (int d = 0; d < 3; ++d) forces(n, d) += change(n, d);
-          });
+      add_node_vectors(fsi_forces_, force_change_);
       Kokkos::deep_copy(fluid_load_, 0.0);
       rkpm_.spread(fsi_forces_, fluid_load_, fluid_unknowns_per_node);
       fluid_.set_immersed_forces(fluid_load_);

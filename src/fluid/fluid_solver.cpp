@@ -65,6 +65,14 @@ void block_norms(const ConstVector& r, double& momentum, double& continuity) {
   continuity = std::sqrt(c);
 }
 
+// v(rows(i)) = 0 (a free function: CUDA forbids extended lambdas in private member
+// functions).
+void zero_rows(const Kokkos::View<int*>& rows, const Vector& v) {
+  Kokkos::parallel_for(
+      "rouleau::FluidSolver::zero_rows", Kokkos::RangePolicy<ExecSpace>(0, rows.extent(0)),
+      KOKKOS_LAMBDA(const int i) { v(rows(i)) = 0.0; });
+}
+
 GmresSettings gmres_settings(const SolverConfig& s) {
   GmresSettings g;
   g.restart = s.gmres_restart;
@@ -249,13 +257,7 @@ void FluidSolver::set_immersed_stiffness(const LinearOperator* stiffness) {
 void FluidSolver::add_immersed_stiffness(const ConstVector& x, const Vector& y, bool skip_constrained) const {
   if (!immersed_stiffness_) return;
   immersed_stiffness_->apply(x, stiffness_action_);
-  const auto action = stiffness_action_;
-  if (skip_constrained) {
-    const auto dofs = operator_.dirichlet_dofs();
-    Kokkos::parallel_for(
-        "rouleau::FluidSolver::stiffness_constrained_rows", Kokkos::RangePolicy<ExecSpace>(0, dofs.extent(0)),
-        KOKKOS_LAMBDA(const int i) { action(dofs(i)) = 0.0; });
-  }
+  if (skip_constrained) zero_rows(operator_.dirichlet_dofs(), stiffness_action_);
   KokkosBlas::axpy(1.0, stiffness_action_, y);
 }
 

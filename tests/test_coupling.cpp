@@ -260,8 +260,13 @@ TEST(Coupling, SemiImplicitStiffnessIsTheSymmetricHessianOfTheCellsEnergy) {
   const Vector u = random_velocity(), w = random_velocity();
   const auto u_host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), u);
   const auto w_host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), w);
+  // 2u + 3w, formed on the host (a device lambda cannot live in a test body under CUDA).
   Vector combination("combination", unknowns);
-  Kokkos::parallel_for(unknowns, KOKKOS_LAMBDA(const int i) { combination(i) = 2.0 * u(i) + 3.0 * w(i); });
+  {
+    auto c = Kokkos::create_mirror_view(combination);
+    for (int i = 0; i < unknowns; ++i) c(i) = 2.0 * u_host(i) + 3.0 * w_host(i);
+    Kokkos::deep_copy(combination, c);
+  }
   const auto Su = apply(u), Sw = apply(w), Sc = apply(combination);
 
   const double uSu = dot(u_host, Su), wSw = dot(w_host, Sw);

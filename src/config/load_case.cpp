@@ -850,8 +850,8 @@ void read_scene(const TableReader& root, SceneConfig& scene) {
 // The explicit coupling refuses a step above its stable estimate unless asked to force it
 // (the semi-implicit coupling is not bound by it).
 void check_time_step(const CaseConfig& config) {
-  const DerivedQuantities derived = derive_quantities(config);
   if (config.coupling.scheme == CouplingScheme::semi_implicit) return;
+  const DerivedQuantities derived = derive_quantities(config);
   if (derived.stable_dt <= 0.0 || config.time.dt <= derived.stable_dt || config.coupling.allow_unstable_step) return;
   throw InputError(config.source_file, "time.dt_s",
                    format_number(config.time.dt) + " s exceeds the explicit coupling's stable step " +

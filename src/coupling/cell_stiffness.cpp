@@ -64,7 +64,6 @@ void CellStiffness::linearize(double dt) {
 void CellStiffness::force_change(const Kokkos::View<const double*>& x, const NodeVectors& change) const {
   ProfilingRegion region("rouleau::CellStiffness::force_change");
   if (dt_ <= 0.0) throw std::logic_error("rouleau::CellStiffness: linearize() first");
-  Kokkos::deep_copy(change, 0.0);
   // δx_I = Δt U (I û)_I [μm], and its largest node displacement.
   rkpm_.interpolate(x, 4, displacement_);
   const NodeVectors displacement = displacement_;
@@ -80,7 +79,10 @@ void CellStiffness::force_change(const Kokkos::View<const double*>& x, const Nod
         }
       },
       Kokkos::Max<double>(largest));
-  if (!(largest > 0.0)) return;  // û = 0 on the cells (or not finite: the solve reports it)
+  if (!(largest > 0.0)) {  // û = 0 on the cells (or not finite: the solve reports it)
+    Kokkos::deep_copy(change, 0.0);
+    return;
+  }
 
   // K δx ≈ [f(x^n + σ δx) − f(x^n)] / σ,   σ = h / max |δx|
   const double sigma = difference_step / largest;

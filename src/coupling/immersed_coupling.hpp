@@ -65,8 +65,6 @@ class ImmersedCoupling {
   bool runs_inertia() const { return runs_inertia_; }
   bool runs_wall_repulsion() const { return wall_ != nullptr; }
   bool semi_implicit() const { return stiffness_ != nullptr; }
-  // Evaluations of the cells' forces made for the semi-implicit stiffness so far.
-  long stiffness_evaluations() const { return stiffness_ ? stiffness_->evaluations() : 0; }
   // F_I of the last step [pN] (the sum of the stages' forces) and the Morse part alone.
   const NodeVectors& fsi_forces() const { return fsi_forces_; }
   const NodeVectors& interaction_forces() const { return interaction_forces_; }

@@ -57,7 +57,7 @@ std::vector<Stage> plan_stages(const CaseConfig& config, const DerivedQuantities
     const bool skip = config.scene.skip_unneeded_stages;
     if (moving && config.coupling.scheme == CouplingScheme::semi_implicit) {
       cells << ". Semi-implicit coupling: the fluid solved with the cells' forces at x^n plus their change "
-               "over the step, linearized (K dt I u, K by central differences of the forces inside each "
+               "over the step, linearized (K dt I u, K by one-sided differences of the forces inside each "
                "GMRES iteration), the cells moved with the interpolated velocity; dt = "
             << config.time.dt << " s (the explicit stable step estimate, " << derived.stable_dt
             << " s, does not bind it)";

@@ -56,6 +56,14 @@ TEST(CliParse, RunDefaults) {
   EXPECT_TRUE(command_line.progress);
 }
 
+TEST(CliParse, RestartTakesTheRunFolderAsOutputAndOverrides) {
+  const auto command_line = parse({"run", "--restart", "runs/stack", "--set", "time.end_s=4", "--threads", "2"});
+  EXPECT_EQ(command_line.command, rouleau::Command::run);
+  EXPECT_TRUE(command_line.case_path.empty());
+  EXPECT_EQ(command_line.restart_dir, "runs/stack");
+  EXPECT_EQ(command_line.overrides, std::vector<std::string>{"time.end_s=4"});
+}
+
 TEST(CliParse, CheckAndInfo) {
   const auto check = parse({"check", "case.toml", "--set", "a.b=1"});
   EXPECT_EQ(check.command, rouleau::Command::check);
@@ -74,6 +82,8 @@ TEST(CliParse, UsageErrorsFinishWithExitCode2) {
       {"run", "case.toml", "--threads", "0"},   // out of range
       {"run", "case.toml", "--threads", "two"}, // not a number
       {"check", "case.toml", "--explain"},      // an option of another subcommand
+      {"run", "case.toml", "--restart", "old"}, // a case file and a run to continue
+      {"run", "--restart", "old", "--out", "x"},  // a restart writes into its own folder
   };
   for (const auto& arguments : usage_errors) {
     std::string err;

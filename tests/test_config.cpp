@@ -95,6 +95,9 @@ void expect_identical_cases(const CaseConfig& a, const CaseConfig& b) {
   EXPECT_EQ(a.output.write_fields, b.output.write_fields);
   EXPECT_EQ(a.output.fields_every_steps, b.output.fields_every_steps);
   EXPECT_EQ(a.output.diagnostics_every_steps, b.output.diagnostics_every_steps);
+  EXPECT_EQ(a.checkpoint.every_steps, b.checkpoint.every_steps);
+  EXPECT_EQ(a.checkpoint.every_minutes, b.checkpoint.every_minutes);
+  EXPECT_EQ(a.checkpoint.kept, b.checkpoint.kept);
   ASSERT_EQ(a.cell_kinds.size(), b.cell_kinds.size());
   for (std::size_t i = 0; i < a.cell_kinds.size(); ++i) {
     const CellKindConfig &first = a.cell_kinds[i], &second = b.cell_kinds[i];

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "io/checkpoint_file.hpp"
 #include "io/diagnostics_table.hpp"
 #include "io/provenance.hpp"
 #include "io/xdmf_writer.hpp"
@@ -627,6 +628,79 @@ std::pair<std::vector<std::string>, std::vector<std::vector<double>>> read_csv(c
   }
   return {header, rows};
 }
+// ---- checkpoints
+
+CheckpointData sample_checkpoint(long long step) {
+  CheckpointData data;
+  data.step = step;
+  data.time = 0.25 * step;
+  data.wall_seconds = 12.5;
+  data.resolved_case = "[case]\nname = \"x\"\n";
+  data.labels["fluid_mesh_hash"] = "0123456789abcdef";
+  data.reals["fluid/state"] = {1.0, -2.5, 1e-300, std::numeric_limits<double>::denorm_min()};
+  data.reals["cells/positions"] = {};
+  data.integers["fluid/steps"] = {step};
+  return data;
+}
+
+TEST_F(IoTest, CheckpointRoundTripsEveryEntryBitForBit) {
+  fs::create_directories(path(""));
+  const CheckpointData written = sample_checkpoint(7);
+  write_checkpoint_file(path("c.h5"), written, build_provenance());
+  const CheckpointData read = read_checkpoint_file(path("c.h5"));
+  EXPECT_EQ(read.step, 7);
+  EXPECT_EQ(read.time, written.time);
+  EXPECT_EQ(read.wall_seconds, written.wall_seconds);
+  EXPECT_EQ(read.resolved_case, written.resolved_case);
+  EXPECT_EQ(read.labels, written.labels);
+  EXPECT_EQ(read.reals, written.reals);
+  EXPECT_EQ(read.integers, written.integers);
+  EXPECT_EQ(files(), std::set<std::string>{"c.h5"});  // no .tmp left
+  EXPECT_THROW(read.real("fluid/state", 5), std::runtime_error);
+  EXPECT_THROW(read.real("fluid/missing"), std::runtime_error);
+}
+
+TEST_F(IoTest, CheckpointWithAChangedValueIsRefusedByItsChecksum) {
+  fs::create_directories(path(""));
+  write_checkpoint_file(path("c.h5"), sample_checkpoint(3), build_provenance());
+  {  // one state value changed in place, as a damaged disk block would
+    const hid_t file = H5Fopen(path("c.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(file, 0);
+    const hid_t dataset = H5Dopen2(file, "/reals/fluid/state", H5P_DEFAULT);
+    ASSERT_GE(dataset, 0);
+    const double changed[4] = {1.0, -2.5000000000000004, 1e-300, std::numeric_limits<double>::denorm_min()};
+    ASSERT_GE(H5Dwrite(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, changed), 0);
+    H5Dclose(dataset);
+    H5Fclose(file);
+  }
+  try {
+    read_checkpoint_file(path("c.h5"));
+    FAIL() << "a changed checkpoint was accepted";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find("checksum"), std::string::npos) << error.what();
+  }
+}
+
+TEST_F(IoTest, CheckpointStoreKeepsTheNewestAndDropsAnAbandonedFuture) {
+  CheckpointStore store(path("run"), 2);
+  for (long long step : {0, 10, 20, 30}) store.write(sample_checkpoint(step), build_provenance());
+  auto listed = store.list();
+  ASSERT_EQ(listed.size(), 2u);
+  EXPECT_EQ(listed[0].first, 30);
+  EXPECT_EQ(listed[1].first, 20);
+  EXPECT_EQ(store.last_path(), store.path_of(30));
+  // A run restarted from step 20 writes step 25: step 30 belonged to the abandoned branch.
+  store.write(sample_checkpoint(25), build_provenance());
+  listed = store.list();
+  ASSERT_EQ(listed.size(), 2u);
+  EXPECT_EQ(listed[0].first, 25);
+  EXPECT_EQ(listed[1].first, 20);
+  EXPECT_EQ(newest_valid_checkpoint(path("run")).data.step, 25);
+  // A .tmp (a write cut off) is never taken for a checkpoint.
+  std::ofstream(store.path_of(99) + ".tmp") << "half";
+  EXPECT_EQ(newest_valid_checkpoint(path("run")).data.step, 25);
+}
+
 }  // namespace
 
 TEST_F(IoTest, DiagnosticsTableRoundTripsEveryDoubleExactly) {

@@ -36,10 +36,11 @@ class KokkosSession {
 
 int run_command(const rouleau::CommandLine& command_line) {
   // The whole case is validated before Kokkos starts: bad input costs no start-up.
-  const rouleau::CaseConfig config = rouleau::load_case(command_line.case_path, command_line.overrides);
+  rouleau::RunOptions options = rouleau::run_options(command_line);
+  const rouleau::CaseConfig config = rouleau::load_run_case(command_line, options.restart, std::cerr);
   rouleau::derive_quantities(config);
   KokkosSession kokkos("rouleau", command_line.threads);
-  return rouleau::run_case(config, rouleau::run_options(command_line));
+  return rouleau::run_case(config, options);
 }
 
 int info_command(const rouleau::CommandLine& command_line) {

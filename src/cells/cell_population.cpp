@@ -9,6 +9,7 @@
 #include "kernels/tet4.hpp"
 #include "run/instantiate.hpp"
 #include "run/profiling_region.hpp"
+#include "util/view_transfer.hpp"
 
 namespace rouleau {
 
@@ -257,6 +258,19 @@ void BasicCellPopulation<ExecSpace>::copy_fields_to_host(HostFields& fields) con
     }
     fields.cell_id[a] = cell(a);
   }
+}
+
+template <class ExecSpace>
+void BasicCellPopulation<ExecSpace>::save_state(CheckpointData& data) const {
+  data.reals["cells/positions"] = to_flat_vector(positions_);
+  data.reals["cells/velocities"] = to_flat_vector(velocities_);
+}
+
+template <class ExecSpace>
+void BasicCellPopulation<ExecSpace>::restore_state(const CheckpointData& data) {
+  const long long size = 3LL * num_nodes();
+  from_flat_vector(data.real("cells/positions", size), positions_, "cells/positions");
+  from_flat_vector(data.real("cells/velocities", size), velocities_, "cells/velocities");
 }
 
 ROULEAU_INSTANTIATE_FOR_EXECUTION_SPACES(BasicCellPopulation)

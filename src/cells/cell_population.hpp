@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "geometry/cell_mesh.hpp"
+#include "io/checkpoint_file.hpp"
 #include "io/xdmf_writer.hpp"
 #include "kernels/global_constraints.hpp"
 #include "kernels/neo_hookean.hpp"
@@ -65,6 +66,12 @@ class BasicCellPopulation {
   const NodeVectors& positions() const { return positions_; }
   const NodeVectors& velocities() const { return velocities_; }
   const NodeVectors& internal_forces() const { return internal_forces_; }
+
+  // Checkpoints: the nodes' positions and velocities ("cells/..." entries). The reference
+  // configuration is rebuilt from the case (the run checks the meshes' hashes). Restoring
+  // throws std::runtime_error naming the entry when one is missing or of the wrong size.
+  void save_state(CheckpointData& data) const;
+  void restore_state(const CheckpointData& data);
 
   // The mesh data.
   const Kokkos::View<int* [4]>& element_nodes() const { return element_nodes_; }

@@ -13,6 +13,7 @@
 #include "kernels/scatter_sum.hpp"
 #include "run/instantiate.hpp"
 #include "run/profiling_region.hpp"
+#include "util/view_transfer.hpp"
 
 namespace rouleau {
 
@@ -384,6 +385,29 @@ void BasicSurfaceInteraction<ExecSpace>::copy_forces_to_nodes(const PointVectors
             for (int c = 0; c < 3; ++c) access(nodes(p, k), c) += shape(p, k) * forces(p, c);
       });
   gather_into(node_forces, node_force_scatter_);
+}
+
+template <class ExecSpace>
+void BasicSurfaceInteraction<ExecSpace>::save_state(CheckpointData& data) const {
+  data.integers["interaction/list_built"] = {built_ ? 1 : 0};
+  data.integers["interaction/rebuilds"] = {rebuilds_};
+  if (built_) data.reals["interaction/positions_at_build"] = to_flat_vector(positions_at_build_);
+}
+
+template <class ExecSpace>
+void BasicSurfaceInteraction<ExecSpace>::restore_state(const CheckpointData& data) {
+  const bool built = data.integer("interaction/list_built", 1).front() != 0;
+  const int rebuilds = static_cast<int>(data.integer("interaction/rebuilds", 1).front());
+  if (built) {
+    // The list as it was built: from the points' positions of that moment.
+    from_flat_vector(data.real("interaction/positions_at_build", 3LL * num_points()), point_positions_,
+                     "interaction/positions_at_build");
+    rebuild();
+  } else {
+    built_ = false;
+  }
+  rebuilds_ = rebuilds;
+  gather_point_positions();
 }
 
 ROULEAU_INSTANTIATE_FOR_EXECUTION_SPACES(BasicSurfaceInteraction)

@@ -63,6 +63,13 @@ class BasicSurfaceInteraction {
   int active_cell_count() const { return active_cells_; }
   double search_radius() const { return search_radius_; }
 
+  // Checkpoints ("interaction/..." entries): the surface points' positions at the last
+  // build of the list and the build count. Restoring rebuilds the list from those
+  // positions, so it holds the same pairs in the same order as before the checkpoint (the
+  // pair sums then repeat bit for bit); the cells' positions must be restored first.
+  void save_state(CheckpointData& data) const;
+  void restore_state(const CheckpointData& data);
+
   // Whether some point moved more than skin/2 since the last build (or none was made).
   bool list_is_stale() const;
   // Rebuilds the broad phase, the bins and the list at the current positions

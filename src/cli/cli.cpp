@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <ostream>
 #include <sstream>
 
@@ -16,11 +17,18 @@ namespace {
 
 constexpr int usage_error_exit_code = static_cast<int>(ExitCode::bad_input);
 
-// The options `run` and a case driver share: --out, --explain, --no-progress.
+// The options `run` and a case driver share: --out, --explain, --no-progress, --restart.
 void add_run_options(CLI::App& command, CommandLine& result, bool& no_progress) {
-  command.add_option("--out", result.output_dir, "Output folder")->type_name("DIR")->capture_default_str();
+  CLI::Option* out =
+      command.add_option("--out", result.output_dir, "Output folder")->type_name("DIR")->capture_default_str();
   command.add_flag("--explain", result.explain, "Print the stages with the reason for each skip, then stop");
   command.add_flag("--no-progress", no_progress, "Do not show the progress line");
+  command
+      .add_option("--restart", result.restart_dir,
+                  "Continue the run in DIR from its newest valid checkpoint (its case, with any --set "
+                  "overrides, e.g. a later time.end_s); the outputs go on in DIR")
+      ->type_name("DIR")
+      ->excludes(out);
 }
 
 void add_overrides_option(CLI::App& command, CommandLine& result) {
@@ -44,8 +52,9 @@ bool parse_or_finish(CLI::App& app, int argc, const char* const* argv, std::ostr
   }
 }
 
-void add_case_arguments(CLI::App& command, CommandLine& result) {
-  command.add_option("case", result.case_path, "Case file (TOML)")->required()->type_name("CASE.toml");
+void add_case_arguments(CLI::App& command, CommandLine& result, bool required = true) {
+  CLI::Option* case_file = command.add_option("case", result.case_path, "Case file (TOML)")->type_name("CASE.toml");
+  if (required) case_file->required();
   add_overrides_option(command, result);
 }
 
@@ -69,9 +78,15 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   app.require_subcommand(1);
 
   CLI::App* run = app.add_subcommand("run", "Run a case: validate it, then simulate and write outputs");
-  add_case_arguments(*run, result);
+  add_case_arguments(*run, result, false);
   bool no_progress = false;
   add_run_options(*run, result, no_progress);
+  // A case file, or --restart DIR (whose checkpoint holds the case), not both.
+  run->get_option("--restart")->excludes(run->get_option("case"));
+  run->callback([&] {
+    if (result.case_path.empty() && result.restart_dir.empty())
+      throw CLI::RequiredError("run needs a case file (CASE.toml) or --restart DIR");
+  });
   add_threads_option(*run, result);
 
   CLI::App* check = app.add_subcommand("check", "Validate a case and print its summary (no simulation)");
@@ -93,10 +108,12 @@ CommandLine parse_driver_command_line(int argc, const char* const* argv, const s
   result.output_dir = default_output_dir;
   const std::string program = argc > 0 ? argv[0] : "case";
   CLI::App app("Runs a case and checks what is special to it (the options of `rouleau run`)", program);
-  app.add_option("case", result.case_path, "Case file (TOML)")->type_name("CASE.toml")->capture_default_str();
+  CLI::Option* case_file =
+      app.add_option("case", result.case_path, "Case file (TOML)")->type_name("CASE.toml")->capture_default_str();
   add_overrides_option(app, result);
   bool no_progress = false;
   add_run_options(app, result, no_progress);
+  app.get_option("--restart")->excludes(case_file);
   if (!parse_or_finish(app, argc, argv, out, err, result)) return result;
   result.progress = !no_progress;
   result.command = Command::run;
@@ -115,6 +132,26 @@ std::string case_summary(const CaseConfig& config, const DerivedQuantities& deri
                 derived.velocity_scale, derived.pressure_scale, derived.reynolds, derived.stokes ? "yes" : "no",
                 derived.stokes_reason.c_str());
   return text;
+}
+
+CaseConfig load_run_case(const CommandLine& command_line, std::shared_ptr<const FoundCheckpoint>& restart,
+                         std::ostream& log) {
+  restart.reset();
+  if (command_line.restart_dir.empty()) return load_case(command_line.case_path, command_line.overrides);
+  const std::string& directory = command_line.restart_dir;
+  std::error_code status;
+  if (!std::filesystem::is_directory(directory, status))
+    throw InputError(directory, "--restart", "no such run folder");
+  FoundCheckpoint found;
+  try {
+    found = newest_valid_checkpoint(directory);
+  } catch (const std::runtime_error& error) {
+    throw InputError(directory, "--restart", error.what());
+  }
+  for (const std::string& refusal : found.refused) log << "rouleau: passed over a damaged checkpoint: " << refusal << "\n";
+  CaseConfig config = load_case_text(found.data.resolved_case, found.path + " (its case)", command_line.overrides);
+  restart = std::make_shared<const FoundCheckpoint>(std::move(found));
+  return config;
 }
 
 int check_case(const CommandLine& command_line, std::ostream& out) {

@@ -4,11 +4,13 @@
 // Host-only: includes no Kokkos header (src/app/main.cpp starts Kokkos).
 #include <functional>
 #include <iosfwd>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "config/case_config.hpp"
+#include "io/checkpoint_file.hpp"
 
 namespace rouleau {
 
@@ -24,6 +26,7 @@ struct CommandLine {
   Command command = Command::finished;
   int exit_code = 0;                   // for Command::finished
   std::string case_path;               // run, check
+  std::string restart_dir;             // run --restart DIR (then no case_path; output goes to DIR)
   std::vector<std::string> overrides;  // --set key=value, in order
   std::string output_dir = "out";      // run --out
   int threads = 0;                     // run/info --threads; 0 = leave it to OMP_NUM_THREADS
@@ -38,11 +41,19 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
 
 // A case driver's command line (cases/NAME/main.cpp), the options of `rouleau run`:
 //   case_NAME [CASE.toml] [--out DIR] [--set KEY=VALUE]... [--explain] [--no-progress]
+//             [--restart DIR]
 // with the driver's own case file and output folder as defaults. Kokkos's own flags
 // (--kokkos-...) are taken by Kokkos before this sees argv. Gives Command::run, or
 // Command::finished for --help and usage errors as parse_command_line.
 CommandLine parse_driver_command_line(int argc, const char* const* argv, const std::string& default_case,
                                       const std::string& default_output_dir, std::ostream& out, std::ostream& err);
+
+// The case a `run` command line asks for: the case file with its overrides, or, with
+// --restart DIR, the case stored in DIR's newest valid checkpoint with the overrides
+// (`restart` receives that checkpoint; each damaged one passed over is reported on `log`).
+// Throws InputError: a bad case, or "DIR: --restart: no checkpoint in DIR/checkpoints".
+CaseConfig load_run_case(const CommandLine& command_line, std::shared_ptr<const FoundCheckpoint>& restart,
+                         std::ostream& log);
 
 // `rouleau check`: loads and validates the case with its overrides, derives its scales
 // and prints a short summary (name, mesh, Re, Stokes) to `out`. Throws InputError.

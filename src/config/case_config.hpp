@@ -241,6 +241,14 @@ struct OutputConfig {
   int diagnostics_every_steps = 1;
 };
 
+// [checkpoint]: when a run writes its state (io/checkpoint_file.hpp). It always writes one
+// at the start, at the end and when a signal stops it; these add periodic ones.
+struct CheckpointConfig {
+  int every_steps = 0;          // key every_steps: also every N steps (0 = not by steps)
+  double every_minutes = 30.0;  // key every_minutes: also after M minutes of wall time (0 = not by time)
+  int kept = 2;                 // key keep: the newest K stay on disk
+};
+
 struct CaseConfig {
   std::string source_file;  // the TOML file it was loaded from
   std::string name;
@@ -252,6 +260,7 @@ struct CaseConfig {
   SolverConfig solver;
   ScalesConfig scales;
   OutputConfig output;
+  CheckpointConfig checkpoint;             // [checkpoint]
   std::vector<CellKindConfig> cell_kinds;  // [cell_kinds.NAME]: the built-in kinds, changed or added to
   std::vector<CellPlacement> cells;        // [[cells]]: empty = fluid only
   InteractionConfig interaction;           // [interaction]

@@ -353,6 +353,16 @@ std::optional<double> read_density(const TableReader& section) {
 }
 
 // Reads the file and parses it; I/O and syntax errors become InputError.
+toml::table parse_case_text(const std::string& text, const std::string& source) {
+  try {
+    return toml::parse(text, source);
+  } catch (const toml::parse_error& error) {
+    const auto& begin = error.source().begin;
+    throw InputError(source, "line " + std::to_string(begin.line) + ", column " + std::to_string(begin.column),
+                     "TOML syntax error: " + std::string(error.description()));
+  }
+}
+
 toml::table parse_case_file(const std::string& path) {
   std::error_code status;
   if (!std::filesystem::exists(path, status)) throw InputError(path, "(file)", "no such file");
@@ -362,13 +372,7 @@ toml::table parse_case_file(const std::string& path) {
   std::ostringstream contents;
   contents << stream.rdbuf();
   if (stream.bad()) throw InputError(path, "(file)", "cannot read");
-  try {
-    return toml::parse(contents.str(), path);
-  } catch (const toml::parse_error& error) {
-    const auto& begin = error.source().begin;
-    throw InputError(path, "line " + std::to_string(begin.line) + ", column " + std::to_string(begin.column),
-                     "TOML syntax error: " + std::string(error.description()));
-  }
+  return parse_case_text(contents.str(), path);
 }
 
 // Parses the value of an override: a TOML value, or the text itself as a string.
@@ -616,6 +620,13 @@ void read_output(const TableReader& root, OutputConfig& output) {
   assign(output.write_fields, section.boolean("fields"));
   assign(output.fields_every_steps, section.integer("fields_every_steps", step_count));
   assign(output.diagnostics_every_steps, section.integer("diagnostics_every_steps", step_count));
+}
+
+void read_checkpoint(const TableReader& root, CheckpointConfig& checkpoint) {
+  const TableReader section = root.table("checkpoint", {"every_steps", "every_minutes", "keep"});
+  assign(checkpoint.every_steps, section.integer("every_steps", Range::at_least(0)));
+  assign(checkpoint.every_minutes, section.number("every_minutes", Range::at_least(0)));
+  assign(checkpoint.kept, section.integer("keep", Range::closed(1, 1000)));
 }
 
 // ---- cells
@@ -931,12 +942,14 @@ const char* toml_name(MeshResolution resolution) {
   return "?";
 }
 
-CaseConfig load_case(const std::string& path, const std::vector<std::string>& overrides) {
-  toml::table document = parse_case_file(path);
+namespace {
+
+// The case in `document` (parsed from `path`), with the overrides applied, validated.
+CaseConfig load_case_document(toml::table document, const std::string& path, const std::vector<std::string>& overrides) {
   const ErrorSource errors(path, apply_overrides(document, overrides));
   // [derived] is written by resolved_case_toml() for the reader; it is output-only.
   const TableReader root(&document, "", errors,
-                         {"case", "fluid", "domain", "vessel", "boundary", "time", "solver", "scales", "output",
+                         {"case", "fluid", "domain", "vessel", "boundary", "time", "solver", "scales", "output", "checkpoint",
                           "cell_kinds", "cells", "interaction", "coupling", "scene", "derived"});
   CaseConfig config;
   config.source_file = path;
@@ -955,6 +968,7 @@ CaseConfig load_case(const std::string& path, const std::vector<std::string>& ov
   read_solver(root, config.solver);
   read_scales(root, config.scales);
   read_output(root, config.output);
+  read_checkpoint(root, config.checkpoint);
   read_cell_kinds(root, config.cell_kinds);
   read_cells(root, config);
   read_interaction(root, config);
@@ -964,6 +978,17 @@ CaseConfig load_case(const std::string& path, const std::vector<std::string>& ov
   check_cell_placement(config);
   check_time_step(config);
   return config;
+}
+
+}  // namespace
+
+CaseConfig load_case(const std::string& path, const std::vector<std::string>& overrides) {
+  return load_case_document(parse_case_file(path), path, overrides);
+}
+
+CaseConfig load_case_text(const std::string& text, const std::string& source_name,
+                          const std::vector<std::string>& overrides) {
+  return load_case_document(parse_case_text(text, source_name), source_name, overrides);
 }
 
 }  // namespace rouleau

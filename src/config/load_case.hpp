@@ -31,6 +31,11 @@ inline constexpr const char* override_source_name = "--set";
 // overlap) is checked by check_cell_placement() in src/geometry, not here.
 CaseConfig load_case(const std::string& path, const std::vector<std::string>& overrides = {});
 
+// The same for a case held in memory (a checkpoint's resolved case, a fuzzer's input):
+// `source_name` stands for the file in errors and in config.source_file.
+CaseConfig load_case_text(const std::string& text, const std::string& source_name,
+                          const std::vector<std::string>& overrides = {});
+
 // The case-file spelling of each choice ("periodic", "bdf2", "auto", ...), as load_case()
 // accepts it and resolved_case_toml() writes it.
 const char* toml_name(BoundaryType type);

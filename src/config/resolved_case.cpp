@@ -219,6 +219,11 @@ std::string resolved_case_toml(const CaseConfig& config, const DerivedQuantities
   toml_file.key("fields_every_steps", config.output.fields_every_steps);
   toml_file.key("diagnostics_every_steps", config.output.diagnostics_every_steps);
 
+  toml_file.table("checkpoint", "besides those at the start, at the end and on a signal; 0 = off");
+  toml_file.key("every_steps", config.checkpoint.every_steps);
+  toml_file.key("every_minutes", config.checkpoint.every_minutes);
+  toml_file.key("keep", config.checkpoint.kept);
+
   for (const CellKindConfig& kind : config.cell_kinds) write_cell_kind(toml_file, kind);
   for (const CellPlacement& cell : config.cells) {
     toml_file.array_table_entry("cells");

@@ -8,6 +8,7 @@
 #include "kernels/cell_motion.hpp"
 #include "kernels/fsi_force.hpp"
 #include "run/profiling_region.hpp"
+#include "util/view_transfer.hpp"
 
 namespace rouleau {
 
@@ -168,6 +169,17 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
   report.power_spread = dot(fluid_load_, fluid_.state()) * fluid_.scales().velocity;
   report.power_interpolated = dot(fsi_forces_, population_.velocities());
   return report;
+}
+
+void ImmersedCoupling::save_state(CheckpointData& data) const {
+  data.reals["coupling/previous_velocities"] = to_flat_vector(previous_velocities_);
+  data.reals["coupling/previous_dt"] = {previous_dt_};
+}
+
+void ImmersedCoupling::restore_state(const CheckpointData& data) {
+  from_flat_vector(data.real("coupling/previous_velocities", 3LL * population_.num_nodes()), previous_velocities_,
+                   "coupling/previous_velocities");
+  previous_dt_ = data.real("coupling/previous_dt", 1).front();
 }
 
 }  // namespace rouleau

@@ -61,6 +61,11 @@ class ImmersedCoupling {
   // fluid solve fails (the report says so).
   StepReport advance(double dt, TimeScheme scheme, StageTimes& times);
 
+  // Checkpoints ("coupling/..." entries): v^{n−1} and the last Δt, for dv/dt of the
+  // inertia term. The fluid and the cells keep their own state (save_state of each).
+  void save_state(CheckpointData& data) const;
+  void restore_state(const CheckpointData& data);
+
   bool runs_interaction() const { return interaction_ != nullptr; }
   bool runs_inertia() const { return runs_inertia_; }
   bool runs_wall_repulsion() const { return wall_ != nullptr; }

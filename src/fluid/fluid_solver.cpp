@@ -10,6 +10,7 @@
 
 #include "fluid/fluid_element_types.hpp"
 #include "run/profiling_region.hpp"
+#include "util/view_transfer.hpp"
 
 #include <algorithm>
 #include <functional>
@@ -413,6 +414,21 @@ FluidSolveReport FluidSolver::advance(double dt, TimeScheme scheme) {
     ++steps_;
   }
   return report;
+}
+
+void FluidSolver::save_state(CheckpointData& data) const {
+  data.reals["fluid/state"] = to_flat_vector(state_);
+  data.reals["fluid/previous_state"] = to_flat_vector(previous_state_);
+  data.reals["fluid/time"] = {time_};
+  data.integers["fluid/steps"] = {steps_};
+}
+
+void FluidSolver::restore_state(const CheckpointData& data) {
+  const long long n = static_cast<long long>(state_.extent(0));
+  from_flat_vector(data.real("fluid/state", n), state_, "fluid/state");
+  from_flat_vector(data.real("fluid/previous_state", n), previous_state_, "fluid/previous_state");
+  time_ = data.real("fluid/time", 1).front();
+  steps_ = static_cast<int>(data.integer("fluid/steps", 1).front());
 }
 
 void FluidSolver::velocity_and_pressure(std::vector<double>& velocity, std::vector<double>& pressure) const {

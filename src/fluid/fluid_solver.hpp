@@ -14,6 +14,7 @@
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/fluid_operator.hpp"
 #include "fluid/fluid_matrix.hpp"
+#include "io/checkpoint_file.hpp"
 #include "solver/block_jacobi.hpp"
 #include "solver/ilu0_preconditioner.hpp"
 #include "solver/gmres.hpp"
@@ -82,6 +83,16 @@ class FluidSolver {
   std::array<double, 5> velocity_integrals() const;
 
   double time() const { return time_; }
+  int steps() const { return steps_; }
+
+  // Checkpoints: the state the next step needs ("fluid/..." entries): U^n, U^{n−1} (BDF2),
+  // the time and the step count. The preconditioner is rebuilt from them (in the Stokes
+  // limit the Jacobian does not depend on the state; otherwise it is rebuilt every Newton
+  // step), so a restarted run repeats the straight one bit for bit.
+  void save_state(CheckpointData& data) const;
+  // Throws std::runtime_error naming the entry when one is missing or of the wrong size.
+  void restore_state(const CheckpointData& data);
+
   const FluidOperator& fluid_operator() const { return operator_; }
   const FluidScales& scales() const { return scales_; }
   bool stokes() const { return stokes_; }

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <set>
 #include <stdexcept>
 
@@ -48,6 +49,17 @@ DiagnosticsTable::~DiagnosticsTable() {
     flush();
   } catch (const std::exception& error) {
     std::cerr << "rouleau::DiagnosticsTable: " << unflushed_rows_ << " rows not written: " << error.what() << '\n';
+  }
+}
+
+void DiagnosticsTable::add_rows(const std::vector<std::map<std::string, double>>& rows) {
+  std::vector<double> values(columns_.size());
+  for (const auto& row : rows) {
+    for (std::size_t c = 0; c < columns_.size(); ++c) {
+      const auto found = row.find(columns_[c]);
+      values[c] = found == row.end() ? std::numeric_limits<double>::quiet_NaN() : found->second;
+    }
+    add_row(values);
   }
 }
 

@@ -4,6 +4,7 @@
 // and a rename, so the file on disk is always a complete table. Host-only: no Kokkos header.
 #include <chrono>
 #include <cstddef>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,11 @@ class DiagnosticsTable {
   // "nan", "inf", "-inf"). Throws std::invalid_argument when the count differs from the
   // number of columns.
   void add_row(const std::vector<double>& values);
+
+  // Appends rows given by column name (a restarted run takes over the rows of the run it
+  // continues, io/diagnostics_reader.hpp); a column a row does not have gets NaN, names
+  // not among the columns are dropped.
+  void add_rows(const std::vector<std::map<std::string, double>>& rows);
 
   // Writes the header and every row so far to PATH.tmp, syncs it and renames it to PATH.
   // Each value is printed with "%.17g", which reads back to the identical double.

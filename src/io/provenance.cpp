@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "rouleau_version.hpp"
+#include "util/fnv1a.hpp"
 
 namespace rouleau {
 
@@ -54,22 +55,6 @@ std::string host_name() {
   return name;
 }
 
-// 64-bit FNV-1a (Fowler–Noll–Vo), fed one 64-bit word at a time, least significant byte first,
-// so the digest does not depend on the machine's byte order.
-class Fnv1a64 {
- public:
-  void add_word(std::uint64_t word) {
-    for (int byte = 0; byte < 8; ++byte) {
-      state_ ^= (word >> (8 * byte)) & 0xffu;
-      state_ *= 0x100000001b3ull;  // FNV 64-bit prime
-    }
-  }
-  std::uint64_t digest() const { return state_; }
-
- private:
-  std::uint64_t state_ = 0xcbf29ce484222325ull;  // FNV 64-bit offset basis
-};
-
 }  // namespace
 
 Provenance build_provenance(const std::vector<std::pair<std::string, std::string>>& extra) {
@@ -91,15 +76,9 @@ std::string hash_mesh(const double* coordinates, std::size_t n_coordinates, cons
   Fnv1a64 hash;
   hash.add_word(n_coordinates);
   hash.add_word(n_connectivity);
-  for (std::size_t i = 0; i < n_coordinates; ++i) {
-    std::uint64_t bits;
-    std::memcpy(&bits, &coordinates[i], sizeof bits);
-    hash.add_word(bits);
-  }
+  for (std::size_t i = 0; i < n_coordinates; ++i) hash.add_double(coordinates[i]);
   for (std::size_t i = 0; i < n_connectivity; ++i) hash.add_word(static_cast<std::uint64_t>(connectivity[i]));
-  char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash.digest()));
-  return hex;
+  return hash.hex_digest();
 }
 
 }  // namespace rouleau

@@ -5,11 +5,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <map>
+#include <regex>
 #include <set>
 #include <stdexcept>
 #include <utility>
 
 #include "io/atomic_file.hpp"
+#include "io/hdf5_file.hpp"
 
 namespace rouleau {
 
@@ -23,121 +26,8 @@ int nodes_per_cell(CellType cell_type) {
 
 namespace {
 
+constexpr const char* who = "rouleau::XdmfTimeSeries";
 constexpr const char* where = "rouleau::XdmfTimeSeries: ";
-
-// ---- HDF5: owned handles, errors, one dataset writer, one string-attribute writer
-
-// An HDF5 identifier closed by `close` when it goes out of scope.
-class Hdf5Handle {
- public:
-  Hdf5Handle(hid_t id, herr_t (*close_function)(hid_t)) : id_(id), close_(close_function) {}
-  ~Hdf5Handle() {
-    if (id_ >= 0) close_(id_);
-  }
-  Hdf5Handle(const Hdf5Handle&) = delete;
-  Hdf5Handle& operator=(const Hdf5Handle&) = delete;
-  hid_t get() const { return id_; }
-  bool valid() const { return id_ >= 0; }
-  // Closes now and reports HDF5's result (negative on failure), e.g. for a file whose
-  // last buffers are written out by H5Fclose.
-  herr_t close() {
-    const herr_t result = id_ >= 0 ? close_(id_) : 0;
-    id_ = -1;
-    return result;
-  }
-
- private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
-
-// The innermost message of HDF5's error stack (where the failure was detected), then clears it.
-std::string hdf5_error_detail() {
-  std::string detail;
-  H5Ewalk2(
-      H5E_DEFAULT, H5E_WALK_DOWNWARD,
-      [](unsigned, const H5E_error2_t* error, void* client) -> herr_t {
-        *static_cast<std::string*>(client) =
-            std::string(error->func_name ? error->func_name : "?") + ": " + (error->desc ? error->desc : "");
-        return 0;
-      },
-      &detail);
-  H5Eclear2(H5E_DEFAULT);
-  return detail.empty() ? "no detail from HDF5" : detail;
-}
-
-[[noreturn]] void throw_hdf5_error(const std::string& file, const std::string& object, const std::string& action) {
-  throw std::runtime_error(std::string(where) + file + ": " + object + ": " + action + " failed: " +
-                           hdf5_error_detail());
-}
-
-// An HDF5 file being written, with the name that errors mention.
-struct Hdf5Output {
-  hid_t id;
-  std::string path;
-};
-
-// Writes `data` (row-major, `dimensions`, in `memory_type`) as the dataset `dataset_path`,
-// stored as `file_type`; missing groups on the way are created.
-void write_dataset(const Hdf5Output& file, const std::string& dataset_path, hid_t memory_type, hid_t file_type,
-                   const void* data, const std::vector<hsize_t>& dimensions) {
-  Hdf5Handle space(H5Screate_simple(static_cast<int>(dimensions.size()), dimensions.data(), nullptr), H5Sclose);
-  if (!space.valid()) throw_hdf5_error(file.path, dataset_path, "H5Screate_simple");
-  Hdf5Handle link_properties(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
-  if (!link_properties.valid() || H5Pset_create_intermediate_group(link_properties.get(), 1) < 0)
-    throw_hdf5_error(file.path, dataset_path, "H5Pset_create_intermediate_group");
-  Hdf5Handle dataset(H5Dcreate2(file.id, dataset_path.c_str(), file_type, space.get(), link_properties.get(),
-                                H5P_DEFAULT, H5P_DEFAULT),
-                     H5Dclose);
-  if (!dataset.valid()) throw_hdf5_error(file.path, dataset_path, "H5Dcreate2");
-  if (H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
-    throw_hdf5_error(file.path, dataset_path, "H5Dwrite");
-}
-
-// Writes `value` as a null-terminated UTF-8 string attribute `name` of the file's root group.
-void write_root_string_attribute(const Hdf5Output& file, const std::string& name, const std::string& value) {
-  const std::string object = "/ attribute " + name;
-  Hdf5Handle string_type(H5Tcopy(H5T_C_S1), H5Tclose);
-  if (!string_type.valid() || H5Tset_size(string_type.get(), value.size() + 1) < 0 ||
-      H5Tset_strpad(string_type.get(), H5T_STR_NULLTERM) < 0 || H5Tset_cset(string_type.get(), H5T_CSET_UTF8) < 0)
-    throw_hdf5_error(file.path, object, "string type");
-  Hdf5Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  if (!space.valid()) throw_hdf5_error(file.path, object, "H5Screate");
-  Hdf5Handle attribute(H5Acreate2(file.id, name.c_str(), string_type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
-                       H5Aclose);
-  if (!attribute.valid()) throw_hdf5_error(file.path, object, "H5Acreate2");
-  if (H5Awrite(attribute.get(), string_type.get(), value.c_str()) < 0) throw_hdf5_error(file.path, object, "H5Awrite");
-}
-
-// Creates PATH.tmp, stamps the provenance on its root group, lets `fill` write the
-// datasets, closes it and renames it to `path`. On failure the .tmp is removed and the
-// error rethrown, so `path` is either the complete new file or untouched.
-void write_hdf5_file_atomically(const std::string& path, const Provenance& provenance,
-                                const std::function<void(const Hdf5Output&)>& fill) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become exceptions, not stderr noise
-  const std::string temporary = temporary_path_for(path);
-  try {
-    Hdf5Handle file(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
-    if (!file.valid()) throw_hdf5_error(temporary, "/", "H5Fcreate");
-    const Hdf5Output output{file.get(), temporary};
-    for (const auto& [key, value] : provenance.attributes) write_root_string_attribute(output, key, value);
-    fill(output);
-    if (file.close() < 0) throw_hdf5_error(temporary, "/", "H5Fclose");
-    commit_temporary_file(temporary, path);
-  } catch (...) {
-    std::error_code ignored;
-    if (!std::filesystem::is_directory(temporary, ignored)) std::filesystem::remove(temporary, ignored);
-    throw;
-  }
-}
-
-// Writes an n x columns float64 array (a plain n-vector when columns == 1).
-void write_double_array(const Hdf5Output& file, const std::string& dataset_path, const double* data, std::size_t n,
-                        int columns) {
-  std::vector<hsize_t> dimensions{static_cast<hsize_t>(n)};
-  if (columns != 1) dimensions.push_back(static_cast<hsize_t>(columns));
-  write_dataset(file, dataset_path, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, data, dimensions);
-}
 
 // ---- names and XML
 
@@ -223,7 +113,7 @@ XdmfTimeSeries::XdmfTimeSeries(std::string directory, std::string basename, std:
   }
 
   std::filesystem::create_directories(directory_);
-  write_hdf5_file_atomically(mesh_path(), provenance_, [&](const Hdf5Output& file) {
+  write_hdf5_file_atomically(mesh_path(), who, provenance_, [&](const Hdf5File& file) {
     for (std::size_t m = 0; m < meshes.size(); ++m) {
       const std::string group = "/" + meshes[m].name;
       write_double_array(file, group + "/coordinates", meshes[m].coordinates.data(), meshes_[m].node_count, 3);
@@ -298,7 +188,7 @@ void XdmfTimeSeries::write_step(int step, double time, const std::vector<std::ve
     record.meshes.push_back(std::move(mesh_record));
   }
 
-  write_hdf5_file_atomically(step_path(step), provenance_, [&](const Hdf5Output& file) {
+  write_hdf5_file_atomically(step_path(step), who, provenance_, [&](const Hdf5File& file) {
     const long long step_number = step;
     write_dataset(file, "/step", H5T_NATIVE_LLONG, H5T_STD_I64LE, &step_number, {1});
     write_double_array(file, "/time", &time, 1, 1);
@@ -311,6 +201,45 @@ void XdmfTimeSeries::write_step(int step, double time, const std::vector<std::ve
                          item.entity_count, item.field->components);
   });
   steps_.push_back(std::move(record));
+  write_file_atomically(xdmf_path(), xdmf_text());
+}
+
+void XdmfTimeSeries::adopt_written_steps(int last_step) {
+  const std::regex pattern(std::regex_replace(basename_, std::regex("[.]"), "\\.") + "_([0-9]{6,})\\.h5");
+  std::map<int, std::string> written;
+  for (const auto& entry : std::filesystem::directory_iterator(directory_)) {
+    std::smatch match;
+    const std::string name = entry.path().filename().string();
+    if (!entry.is_regular_file() || !std::regex_match(name, match, pattern)) continue;
+    const int step = std::stoi(match[1].str());
+    if (step > last_step)
+      std::filesystem::remove(entry.path());
+    else
+      written[step] = entry.path().string();
+  }
+  steps_.clear();
+  for (const auto& [step, path] : written) {
+    Hdf5Handle handle = open_hdf5_file(path, who);
+    const Hdf5File file{handle.get(), path, who};
+    StepRecord record{step, read_double_dataset(file, "/time").at(0), {}};
+    for (const MeshLayout& mesh : meshes_) {
+      MeshStepRecord mesh_record{false, {}};
+      const std::string group = "/" + mesh.name;
+      if (has_dataset(file, group))
+        for (const std::string& name : group_members(file, group)) {
+          if (name == "coordinates") {
+            mesh_record.moved = true;
+            continue;
+          }
+          const std::vector<hsize_t> dimensions = dataset_dimensions(file, group + "/" + name);
+          const int components = dimensions.size() == 2 ? static_cast<int>(dimensions[1]) : 1;
+          const Center center = dimensions.at(0) == mesh.node_count ? Center::node : Center::cell;
+          mesh_record.fields.push_back({name, center, components});
+        }
+      record.meshes.push_back(std::move(mesh_record));
+    }
+    steps_.push_back(std::move(record));
+  }
   write_file_atomically(xdmf_path(), xdmf_text());
 }
 

@@ -72,6 +72,13 @@ class XdmfTimeSeries {
                   const std::vector<std::vector<FieldView>>& cell_fields_per_mesh,
                   const std::vector<const double*>& moved_coordinates_per_mesh = {});
 
+  // Continuing a series after a restart: lists again the step files already in the
+  // directory up to `last_step` (each read back for its time and its fields), deletes those
+  // of later steps (written after the checkpoint the run continues from), and rewrites the
+  // .xdmf. Call it once, before write_step. Throws std::runtime_error naming a step file
+  // that cannot be read.
+  void adopt_written_steps(int last_step);
+
   // DIRECTORY/BASENAME.xdmf: the file to open in ParaView.
   std::string xdmf_path() const;
   // DIRECTORY/BASENAME_mesh.h5: the static geometry and topology.

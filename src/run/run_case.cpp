@@ -7,16 +7,19 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <sstream>
 
 #include "cells/cells_from_case.hpp"
 #include "cli/progress.hpp"
+#include "cli/stop_signals.hpp"
 #include "config/derived.hpp"
 #include "config/load_case.hpp"
 #include "config/resolved_case.hpp"
 #include "fluid/fluid_solver.hpp"
 #include "geometry/cell_mesh.hpp"
 #include "io/atomic_file.hpp"
+#include "io/diagnostics_reader.hpp"
 #include "io/diagnostics_table.hpp"
 #include "io/provenance.hpp"
 #include "io/xdmf_writer.hpp"
@@ -60,6 +63,40 @@ std::vector<std::pair<std::string, std::string>> kokkos_runtime_info() {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// A checkpoint restarts only on the meshes it was made on: its mesh hashes must be those
+// of the meshes this case builds (a changed mesher or cell kind would move every node).
+void check_checkpoint_meshes(const FoundCheckpoint& checkpoint,
+                             const std::vector<std::pair<std::string, std::string>>& provenance_entries) {
+  std::map<std::string, std::string> built;
+  for (const auto& [key, value] : provenance_entries)
+    if (key.find("mesh_hash") != std::string::npos) built[key] = value;
+  std::map<std::string, std::string> stored;
+  for (const auto& [key, value] : checkpoint.data.labels)
+    if (key.find("mesh_hash") != std::string::npos) stored[key] = value;
+  for (const auto& [key, value] : built) {
+    const auto found = stored.find(key);
+    if (found == stored.end() || found->second != value)
+      throw InputError(checkpoint.path, key,
+                       "the checkpoint was made on " +
+                           (found == stored.end() ? std::string("no such mesh") : "a mesh of hash " + found->second) +
+                           "; this case builds one of hash " + value + " (another case, or another mesher version)");
+  }
+  for (const auto& [key, value] : stored)
+    if (!built.count(key))
+      throw InputError(checkpoint.path, key, "the checkpoint has this mesh; the case builds none like it");
+}
+
+// The rows of an earlier segment's diagnostics.csv; none when it cannot be read (it holds
+// only its header, or was damaged by hand: said on stderr).
+std::vector<std::map<std::string, double>> read_diagnostics_rows(const std::string& path) {
+  try {
+    return read_diagnostics(path);
+  } catch (const std::runtime_error& error) {
+    std::cerr << "rouleau: the earlier diagnostics are not carried over: " << error.what() << "\n";
+    return {};
+  }
+}
 
 // The fluid mesh as the XDMF writer wants it (host arrays).
 MeshDescription describe_fluid_mesh(const FluidMesh& mesh) {
@@ -120,10 +157,27 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
   for (const auto& [kind, cell_mesh] : cells.meshes) provenance_entries.emplace_back("cell_mesh_hash_" + kind, cell_mesh.hash);
   if (cells.population) output_meshes.push_back(cells.population->mesh_description());
   const Provenance provenance = build_provenance(provenance_entries);
-  std::unique_ptr<XdmfTimeSeries> fields;
-  if (config.output.write_fields) fields = std::make_unique<XdmfTimeSeries>(out, "fields", output_meshes, provenance);
-
+  // The volume drift is measured from the cells as placed: before a restart moves them.
   const CellDiagnostics cell_diagnostics(cells, config);
+  const FoundCheckpoint* restart = options.restart.get();
+  if (restart) {
+    check_checkpoint_meshes(*restart, provenance_entries);
+    simulation.restore_state(restart->data);
+    std::cerr << "restarted from " << restart->path << ": step " << restart->data.step << ", t = " << restart->data.time
+              << " s\n";
+  }
+  // What a run that ran this far wrote after the checkpoint is dropped: the diagnostics
+  // rows and the field steps of later steps.
+  std::vector<std::map<std::string, double>> earlier_rows;
+  if (restart && fs::exists(out + "/diagnostics.csv"))
+    for (auto& row : read_diagnostics_rows(out + "/diagnostics.csv"))
+      if (row.count("step") && row["step"] <= restart->data.step) earlier_rows.push_back(std::move(row));
+  std::unique_ptr<XdmfTimeSeries> fields;
+  if (config.output.write_fields) {
+    fields = std::make_unique<XdmfTimeSeries>(out, "fields", output_meshes, provenance);
+    if (restart) fields->adopt_written_steps(static_cast<int>(restart->data.step));
+  }
+
   CouplingDiagnostics coupling_diagnostics;
   const FluidDiagnostics fluid_diagnostics(config, simulation.mesh());
   std::vector<std::string> columns = fluid_diagnostics.columns();
@@ -136,10 +190,13 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
     columns.insert(columns.end(), coupling_columns.begin(), coupling_columns.end());
   }
   DiagnosticsTable table(out + "/diagnostics.csv", columns);
+  table.add_rows(earlier_rows);
+  // Wall time of the whole run, over the segments a restart joins.
+  const double earlier_wall_seconds = restart ? restart->data.wall_seconds : 0.0;
+  auto wall_seconds = [&] { return earlier_wall_seconds + std::chrono::duration<double>(Clock::now() - run_start).count(); };
   auto add_diagnostics_row = [&] {
     std::vector<double> row =
-        fluid_diagnostics.row(solver, simulation.steps(), simulation.last_report().fluid,
-                              std::chrono::duration<double>(Clock::now() - run_start).count());
+        fluid_diagnostics.row(solver, simulation.steps(), simulation.last_report().fluid, wall_seconds());
     if (cells.population) {
       const std::vector<double> cell_row = times.time("cell diagnostics", [&] { return cell_diagnostics.row(cells); });
       row.insert(row.end(), cell_row.begin(), cell_row.end());
@@ -187,9 +244,34 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
     });
   };
 
-  write_fields();
+  // Checkpoints (transient runs): at the start, every N steps or M minutes, on request
+  // (SIGUSR1), on a stop signal and at the end.
+  const bool transient = config.time.mode == TimeMode::transient;
+  CheckpointStore checkpoints(out, config.checkpoint.kept);
+  if (restart) checkpoints.set_last_path(restart->path);
+  auto last_checkpoint = Clock::now();
+  int last_checkpoint_step = restart ? static_cast<int>(restart->data.step) : -1;
+  auto write_checkpoint = [&] {
+    times.time("checkpoint", [&] {
+      CheckpointData data;
+      data.resolved_case = resolved_case_toml(config, derived);
+      simulation.save_state(data);
+      data.wall_seconds = wall_seconds();
+      for (const auto& [key, value] : provenance_entries)
+        if (key.find("mesh_hash") != std::string::npos) data.labels[key] = value;
+      checkpoints.write(data, provenance);
+    });
+    last_checkpoint = Clock::now();
+    last_checkpoint_step = simulation.steps();
+  };
+  auto last_good = [&] {
+    return checkpoints.last_path().empty() ? std::string("none written") : checkpoints.last_path();
+  };
+
+  StopSignals signals;
   try {
-    if (config.time.mode == TimeMode::steady) {
+    if (!transient) {
+      write_fields();
       const FluidSolveReport& report = simulation.solve_steady().fluid;
       add_diagnostics_row();
       write_fields();
@@ -197,25 +279,46 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
                 << " GMRES iterations; residual momentum " << report.momentum_residual << ", continuity "
                 << report.continuity_residual << "\n";
     } else {
+      if (!restart) {
+        write_fields();
+        write_checkpoint();
+      }
       const int steps = static_cast<int>(std::llround(config.time.end / config.time.dt));
+      const int first_step = simulation.steps() + 1;
       ProgressReporter progress(steps, config.time.end, stderr_is_terminal(), std::cerr);
-      for (int step = 1; step <= steps; ++step) {
+      for (int step = first_step; step <= steps; ++step) {
         const FluidSolveReport& report = simulation.advance().fluid;
         if (step % config.output.diagnostics_every_steps == 0 || step == steps) add_diagnostics_row();
         if (step % config.output.fields_every_steps == 0 || step == steps) write_fields();
         if (options.progress)
           progress.update(step, simulation.time(), report.newton_iterations, report.gmres_iterations);
+        const CheckpointConfig& every = config.checkpoint;
+        const double minutes = std::chrono::duration<double>(Clock::now() - last_checkpoint).count() / 60.0;
+        if (StopSignals::take_checkpoint_request() || (every.every_steps > 0 && step % every.every_steps == 0) ||
+            (every.every_minutes > 0.0 && minutes >= every.every_minutes) || StopSignals::stop_requested() ||
+            step == steps)
+          write_checkpoint();
+        if (const int signal_number = StopSignals::stop_requested(); signal_number != 0 && step < steps) {
+          if (options.progress) progress.finish();
+          table.flush();
+          std::cerr << "stopped by signal " << signal_number << " after step " << step << " (t = " << simulation.time()
+                    << " s); checkpoint " << checkpoints.last_path() << "\ncontinue with: rouleau run --restart "
+                    << out << "\n";
+          return static_cast<int>(ExitCode::interrupted);
+        }
       }
       if (options.progress) progress.finish();
+      if (last_checkpoint_step != simulation.steps()) write_checkpoint();
     }
   } catch (const DivergenceError& error) {
     table.flush();
-    throw DivergenceError(std::string(error.what()) + "; fields up to the last good step are in " + out +
-                          " (checkpoints: not yet implemented)");
+    throw DivergenceError(std::string(error.what()) + "; last good checkpoint: " + last_good() +
+                          "; fields and diagnostics up to the last good step are in " + out);
   }
   table.flush();
   times.print(std::cerr);
-  std::cerr << "wrote " << out << "/" << (fields ? "fields.xdmf, " : "") << "diagnostics.csv, case.resolved.toml\n"
+  std::cerr << "wrote " << out << "/" << (fields ? "fields.xdmf, " : "") << "diagnostics.csv, case.resolved.toml"
+            << (transient ? ", checkpoints/" : "") << "\n"
             << (fields ? "ParaView: open " + out + "/fields.xdmf; " : std::string()) << "figures: scripts/plot_diagnostics.py "
             << out << "\n";
   return static_cast<int>(ExitCode::done);
@@ -233,7 +336,7 @@ CaseDriverRun run_case_driver(int argc, char** argv, const std::string& default_
   run.options = run_options(command_line);
   run.status = run_reporting_errors(
       [&] {
-        run.config = load_case(command_line.case_path, command_line.overrides);
+        run.config = load_run_case(command_line, run.options.restart, std::cerr);
         return run_case(run.config, run.options);
       },
       std::cerr);

@@ -73,6 +73,35 @@ const ImmersedCoupling::StepReport& Simulation::advance() {
   return last_report_;
 }
 
+void Simulation::save_state(CheckpointData& data) const {
+  data.step = steps_;
+  data.time = fluid_->time();
+  fluid_->save_state(data);
+  if (cells_.population) cells_.population->save_state(data);
+  if (cells_.interaction) cells_.interaction->save_state(data);
+  if (coupling_) coupling_->save_state(data);
+  std::vector<double> seconds;
+  std::string stages;
+  for (const auto& [stage, s] : times_.seconds_by_stage()) {
+    stages += stage + "\n";
+    seconds.push_back(s);
+  }
+  data.labels["stage_names"] = stages;
+  data.reals["run/stage_seconds"] = seconds;
+}
+
+void Simulation::restore_state(const CheckpointData& data) {
+  fluid_->restore_state(data);
+  if (cells_.population) cells_.population->restore_state(data);
+  if (cells_.interaction) cells_.interaction->restore_state(data);
+  if (coupling_) coupling_->restore_state(data);
+  steps_ = static_cast<int>(data.step);
+  const std::vector<double>& seconds = data.real("run/stage_seconds");
+  std::istringstream stages(data.label("stage_names"));
+  std::string stage;
+  for (std::size_t i = 0; std::getline(stages, stage) && i < seconds.size(); ++i) times_.add(stage, seconds[i]);
+}
+
 const ImmersedCoupling::StepReport& Simulation::solve_steady() {
   last_report_ = ImmersedCoupling::StepReport{};
   last_report_.fluid = times_.time(ImmersedCoupling::fluid_stage, [&] { return fluid_->solve_steady(); });

@@ -27,6 +27,13 @@ class Simulation {
   // The steady solve (cells, if any, stay in place). Throws DivergenceError on failure.
   const ImmersedCoupling::StepReport& solve_steady();
 
+  // Checkpoints: the step, the time and the state of the fluid, the cells, their
+  // interaction list and the coupling, plus the stage times. Restoring needs a Simulation
+  // built from the same case (the caller checks the meshes' hashes) and throws
+  // std::runtime_error naming a missing or mis-sized entry.
+  void save_state(CheckpointData& data) const;
+  void restore_state(const CheckpointData& data);
+
   int steps() const { return steps_; }
   double time() const { return fluid_->time(); }
   const CaseConfig& config() const { return config_; }

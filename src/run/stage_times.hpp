@@ -33,6 +33,10 @@ class StageTimes {
     const auto found = seconds_.find(stage);
     return found == seconds_.end() ? 0.0 : found->second;
   }
+  // Every stage's seconds so far, and adding to them (a restarted run carries on the times
+  // of the run it continues).
+  const std::map<std::string, double>& seconds_by_stage() const { return seconds_; }
+  void add(const std::string& stage, double seconds) { seconds_[stage] += seconds; }
   void print(std::ostream& out) const {
     out << "time per stage:\n";
     for (const auto& [stage, s] : seconds_) {

@@ -216,11 +216,16 @@ struct FluidJacobianActionFunctor {
 // Where element Jacobian blocks go: the node-diagonal blocks (block Jacobi), whole
 // element matrices (tests), or the global CRS matrix (assembled preconditioners).
 enum class JacobianSink { diagonal_blocks, element_matrices, crs };
+// The launch over the elements of one colour (RangePolicy<JacobianColorTag>).
+struct JacobianColorTag {};
 
 // Element Jacobian columns ∂R_a/∂U_b (4×4 blocks), node b at a time in Dual<4>, sent to
 //   diagonal_blocks:  blocks(16·dof_node + 4i + j) for a = b (scattered)
 //   element_matrices: matrices(e, 4a+i, 4b+j)
-//   crs:              values at row 4A+i, column 4B+j of the graph (atomic adds)
+//   crs:              values at row 4A+i, column 4B+j of the graph, plain adds: the
+//                     caller launches one colour of elements at a time (no two share a
+//                     dof node, colored_elements()), so the sums have a fixed order and
+//                     the matrix is the same on every run and thread count
 // The projected gradient G couples beyond the element: here it is held at its value
 // (for preconditioners), so these are exact only without viscous reconstruction.
 template <class Element, JacobianSink Sink, class Scatter>
@@ -242,6 +247,11 @@ struct FluidElementJacobianFunctor {
     }
     return lo - node_offsets(A);
   }
+
+  Kokkos::View<const int*> elements;               // crs: the elements of one colour
+
+  // crs: the i-th element of the colour being assembled.
+  KOKKOS_INLINE_FUNCTION void operator()(JacobianColorTag, const int i) const { (*this)(elements(i)); }
 
   KOKKOS_INLINE_FUNCTION void operator()(const int e) const {
     constexpr int n = Element::nodes;
@@ -278,7 +288,7 @@ struct FluidElementJacobianFunctor {
           const int k = neighbor_index(A, B);
           for (int i = 0; i < 4; ++i)
             for (int j = 0; j < 4; ++j)
-              Kokkos::atomic_add(&values(row_map(4 * A + i) + 4 * k + j), r[a][i].derivative[j]);
+              values(row_map(4 * A + i) + 4 * k + j) += r[a][i].derivative[j];
         }
       }
     }

@@ -342,12 +342,14 @@ double BasicSurfaceInteraction<ExecSpace>::run_pair_kernel(const char* label) {
   if (half_list_) {
     force_scatter_.reset();
     // A half list keeps the pairs j > i of points numbered cell by cell, so the first
-    // cells' rows hold most of the pairs: dynamic scheduling balances the threads
-    // (1.5× at 2 cells, 1.17× at 100 on 2 threads, nothing lost on 1).
+    // cells' rows hold most of the pairs. Dynamic scheduling balanced the threads (1.5×
+    // at 2 cells, 1.17× at 100 on 2 threads) but made the force sums' grouping, and so
+    // their last bits, change from run to run; the static partition keeps every run and
+    // every restart identical on a given thread count (issue 9).
     launch(SurfacePairForceFunctor<HalfList, MorsePotential, Scatter>{point_positions_, point_weight_, point_kind_,
                                                                       potentials_, neighbor_offsets_, neighbors_,
                                                                       forces_, force_scatter_},
-           Kokkos::RangePolicy<ExecSpace, Tag, Kokkos::Schedule<Kokkos::Dynamic>>(0, num_points()));
+           Kokkos::RangePolicy<ExecSpace, Tag>(0, num_points()));
     gather_into(forces_, force_scatter_);
   } else {
     launch(SurfacePairForceFunctor<FullList, MorsePotential, Scatter>{point_positions_, point_weight_, point_kind_,

@@ -96,6 +96,11 @@ class BasicFluidOperator {
   Kokkos::View<double*> dirichlet_values_;
   Vector nodal_load_;
   ConstVector history_, body_force_;
+  // The elements grouped by colour (no two of a colour share a dof node), for a CRS
+  // assembly without atomics: colored_elements_[color_offsets_[c], color_offsets_[c+1]).
+  void color_elements() const;
+  mutable Kokkos::View<int*> colored_elements_;
+  mutable std::vector<int> color_offsets_;
   Kokkos::View<double*> lumped_mass_;                        // Σ_e ∫ N_a dV per dof node
   Kokkos::View<double*> state_gradient_, direction_gradient_;  // scratch for G(U), G(δ)
   // Persistent scatter buffers of the element loops (per-thread copies on CPUs, the

@@ -224,6 +224,9 @@ struct CouplingConfig {
   bool allow_unstable_step = false;
   // Gravity for the buoyancy term (ρ_s − ρ_f) g of eq. (7) [μm/s²].   key gravity_m_s2
   std::array<double, 3> gravity{0.0, 0.0, 0.0};
+  // A cell whose enclosed volume has changed by more than this fraction of its initial
+  // volume stops the run as diverged (the cells are incompressible).   key volume_tolerance
+  double volume_tolerance = 0.1;
 };
 
 // What the scene builds and runs (DESIGN.md, "skip what a scene doesn't need").

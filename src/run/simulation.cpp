@@ -1,5 +1,6 @@
 #include "run/simulation.hpp"
 
+#include <cmath>
 #include <sstream>
 
 #include "config/derived.hpp"
@@ -38,6 +39,8 @@ Simulation::Simulation(const CaseConfig& config, const std::string& mesh_cache_d
   // The cells move with the fluid in a time loop; a steady solve keeps them in place.
   if (cells_.population && config_.time.mode == TimeMode::transient)
     coupling_ = times_.time("coupling setup", [&] { return std::make_unique<ImmersedCoupling>(*fluid_, cells_, config_); });
+  if (coupling_)
+    for (const CellMeasures& m : cells_.population->measures()) initial_volumes_.push_back(m.volume);
 }
 
 void Simulation::diverged(const std::string& stage, const std::string& what) const {
@@ -69,6 +72,20 @@ const ImmersedCoupling::StepReport& Simulation::advance() {
   }
   if (!last_report_.fluid.converged) diverged("fluid", fluid_failure(last_report_.fluid));
   if (!last_report_.finite) diverged(ImmersedCoupling::move_stage, "a cell node's interpolated velocity is NaN or Inf");
+  if (coupling_) {
+    // |V_c / V_c0 − 1| ≤ tolerance for every cell (NaN fails too).
+    const std::vector<CellMeasures> now = cells_.population->measures();
+    for (std::size_t c = 0; c < now.size(); ++c) {
+      const double change = now[c].volume / initial_volumes_[c] - 1.0;
+      if (!(std::fabs(change) <= config_.coupling.volume_tolerance)) {
+        std::ostringstream what;
+        what << "cell " << c << "'s enclosed volume is " << now[c].volume << " um^3, " << 100.0 * change
+             << " % from its initial " << initial_volumes_[c] << " um^3 (coupling.volume_tolerance = "
+             << config_.coupling.volume_tolerance << ")";
+        diverged(ImmersedCoupling::move_stage, what.str());
+      }
+    }
+  }
   ++steps_;
   return last_report_;
 }

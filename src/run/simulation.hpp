@@ -4,6 +4,7 @@
 // output around it; tests and case drivers drive one directly and read its state.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "cells/cells_from_case.hpp"
 #include "config/case_config.hpp"
@@ -22,7 +23,9 @@ class Simulation {
 
   // One time step of config.time.dt: the coupled step when there are cells, the fluid
   // alone otherwise. Throws DivergenceError naming the step, the stage and the values
-  // when the fluid solve fails, a cell node leaves the fluid or its velocity is not finite.
+  // when the fluid solve fails, a cell node leaves the fluid or its velocity is not
+  // finite, or a cell's enclosed volume has changed by more than
+  // coupling.volume_tolerance of its initial volume.
   const ImmersedCoupling::StepReport& advance();
   // The steady solve (cells, if any, stay in place). Throws DivergenceError on failure.
   const ImmersedCoupling::StepReport& solve_steady();
@@ -59,6 +62,7 @@ class Simulation {
   CaseCells cells_;
   std::unique_ptr<ImmersedCoupling> coupling_;
   ImmersedCoupling::StepReport last_report_;
+  std::vector<double> initial_volumes_;  // each cell's enclosed volume as placed [μm³]
   int steps_ = 0;
 };
 

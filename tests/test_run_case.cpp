@@ -234,6 +234,12 @@ TEST(RunCase, ExplainListsTheStokesLimitAndSkippedStages) {
   EXPECT_NE(o.out.find("[skip] Morse"), std::string::npos) << o.out;
 }
 
+// A run that diverged before any periodic checkpoint names step 0's as the last good one.
+void expect_step_0_named_as_last_good(const std::string& err, const std::string& out) {
+  EXPECT_NE(err.find("last good checkpoint: " + out + "/checkpoints/checkpoint_000000000.h5"), std::string::npos)
+      << err;
+}
+
 TEST(RunCase, SolverFailureStopsWithStepStageAndExitCode3) {
   // Two GMRES iterations cannot solve the Stokes system: the run must stop at step 1,
   // name the stage and the values, and exit 3 (diverged), not crash or write NaNs.
@@ -245,8 +251,7 @@ TEST(RunCase, SolverFailureStopsWithStepStageAndExitCode3) {
   EXPECT_NE(o.err.find("stage fluid"), std::string::npos) << o.err;
   EXPECT_NE(o.err.find("GMRES did not converge"), std::string::npos) << o.err;
   // The checkpoint of step 0 is the last good state, and the message names it.
-  EXPECT_NE(o.err.find("last good checkpoint: " + out + "/checkpoints/checkpoint_000000000.h5"), std::string::npos)
-      << o.err;
+  expect_step_0_named_as_last_good(o.err, out);
   EXPECT_NO_THROW(rouleau::read_checkpoint_file(out + "/checkpoints/checkpoint_000000000.h5"));
 }
 
@@ -264,8 +269,7 @@ TEST(RunCase, VolumeDriftStopsTheRunNamingTheCellAndTheLastCheckpoint) {
   EXPECT_NE(o.err.find("stage move cells: cell "), std::string::npos) << o.err;
   EXPECT_NE(o.err.find("enclosed volume is"), std::string::npos) << o.err;
   EXPECT_NE(o.err.find("coupling.volume_tolerance = 0.02"), std::string::npos) << o.err;
-  EXPECT_NE(o.err.find("last good checkpoint: " + out + "/checkpoints/checkpoint_000000000.h5"), std::string::npos)
-      << o.err;
+  expect_step_0_named_as_last_good(o.err, out);
 }
 
 TEST(RunCase, RestartedRunRepeatsTheStraightRunBitForBit) {

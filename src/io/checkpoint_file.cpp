@@ -66,22 +66,28 @@ std::string step_file_name(long long step) {
 
 }  // namespace
 
-const std::vector<double>& CheckpointData::real(const std::string& name, long long size) const {
-  const auto found = reals.find(name);
-  if (found == reals.end()) missing("entry", name, "is missing");
+namespace {
+
+// The entry `name` of `entries`, of exactly `size` values when `size` >= 0.
+template <class Value>
+const std::vector<Value>& sized_entry(const std::map<std::string, std::vector<Value>>& entries,
+                                      const std::string& name, long long size) {
+  const auto found = entries.find(name);
+  if (found == entries.end()) missing("entry", name, "is missing");
   if (size >= 0 && static_cast<long long>(found->second.size()) != size)
     missing("entry", name,
             "holds " + std::to_string(found->second.size()) + " values where " + std::to_string(size) + " are needed");
   return found->second;
 }
 
+}  // namespace
+
+const std::vector<double>& CheckpointData::real(const std::string& name, long long size) const {
+  return sized_entry(reals, name, size);
+}
+
 const std::vector<long long>& CheckpointData::integer(const std::string& name, long long size) const {
-  const auto found = integers.find(name);
-  if (found == integers.end()) missing("entry", name, "is missing");
-  if (size >= 0 && static_cast<long long>(found->second.size()) != size)
-    missing("entry", name,
-            "holds " + std::to_string(found->second.size()) + " values where " + std::to_string(size) + " are needed");
-  return found->second;
+  return sized_entry(integers, name, size);
 }
 
 const std::string& CheckpointData::label(const std::string& name) const {

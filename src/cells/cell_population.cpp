@@ -6,6 +6,7 @@
 
 #include "kernels/cell_surface.hpp"
 #include "kernels/scatter_sum.hpp"
+#include "kernels/state_checks.hpp"
 #include "kernels/tet4.hpp"
 #include "run/instantiate.hpp"
 #include "run/profiling_region.hpp"
@@ -218,6 +219,31 @@ std::vector<CellMeasures> BasicCellPopulation<ExecSpace>::measures() const {
     for (int i = 0; i < 3; ++i) m.centroid[i] = o(c, i) + host_sums(c, first_moment_x + i) / m.volume;
   }
   return result;
+}
+
+template <class ExecSpace>
+typename BasicCellPopulation<ExecSpace>::CompressedElement BasicCellPopulation<ExecSpace>::most_compressed_element()
+    const {
+  SmallestVolumeRatioFunctor::value_type smallest;
+  Kokkos::parallel_reduce("rouleau::CellPopulation::most_compressed_element",
+                          Kokkos::RangePolicy<ExecSpace>(0, num_elements()),
+                          SmallestVolumeRatioFunctor{positions_, element_nodes_, inverse_edge_matrix_},
+                          SmallestVolumeRatioFunctor::Reducer(smallest));
+  CompressedElement result;
+  if (smallest.loc < 0 || smallest.loc >= num_elements()) return result;  // no elements
+  result.volume_ratio = smallest.val;
+  result.element = smallest.loc;
+  int cell = -1;
+  Kokkos::deep_copy(cell, Kokkos::subview(element_cell_, result.element));
+  result.cell = cell;
+  return result;
+}
+
+template <class ExecSpace>
+int BasicCellPopulation<ExecSpace>::cell_of_node(const int node) const {
+  for (int c = 0; c < num_cells_; ++c)
+    if (node >= cell_first_node_host_[c] && node < cell_first_node_host_[c] + cell_node_count_host_[c]) return c;
+  return -1;
 }
 
 template <class ExecSpace>

@@ -110,6 +110,18 @@ class BasicCellPopulation {
   // Per-cell volume, area and centroid at the current positions (a small host copy).
   std::vector<CellMeasures> measures() const;
 
+  // The element with the smallest volume ratio J = det F at the current positions
+  // (kernels/state_checks.hpp): J ≤ 0 means it is inverted; a NaN position gives the
+  // lowest double.
+  struct CompressedElement {
+    double volume_ratio = 1.0;  // J = V/V0
+    int element = -1;
+    int cell = -1;
+  };
+  CompressedElement most_compressed_element() const;
+  // The cell that owns node `node` (host).
+  int cell_of_node(int node) const;
+
   // The cells' meshes for the XDMF writer ("cells", reference coordinates, tetrahedra).
   MeshDescription mesh_description() const;
   // Host copies (node-major) of the current positions and of the nodal fields written

@@ -1,12 +1,14 @@
 #include "coupling/immersed_coupling.hpp"
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
 #include "config/cell_kinds.hpp"
 #include "kernels/cell_motion.hpp"
 #include "kernels/fsi_force.hpp"
+#include "kernels/state_checks.hpp"
 #include "run/profiling_region.hpp"
 #include "util/view_transfer.hpp"
 
@@ -44,6 +46,15 @@ double dot(const View& a, const View& b) {
         sum);
   }
   return sum;
+}
+
+// "(x, y, z)" of node `node` of a (node, 3) View (for an error message: copies the View
+// to the host).
+std::string node_vector_text(const CellPopulation::NodeVectors& vectors, const int node) {
+  auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), vectors);
+  std::ostringstream text;
+  text << "(" << host(node, 0) << ", " << host(node, 1) << ", " << host(node, 2) << ")";
+  return text.str();
 }
 }  // namespace
 
@@ -120,12 +131,27 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
     Kokkos::parallel_for("rouleau::ImmersedCoupling::fsi_force",
                          Kokkos::RangePolicy<ExecSpace>(0, population_.num_nodes()), sum);
   });
+  // Every force must be finite before it reaches the fluid: name the first node that is not.
+  const int non_finite = first_non_finite_row(ExecSpace(), fsi_forces_, "rouleau::ImmersedCoupling::check_forces");
+  if (non_finite >= 0) {
+    std::ostringstream what;
+    what << "cell forces: the force on node " << non_finite << " of cell " << population_.cell_of_node(non_finite)
+         << " is NaN or Inf: " << node_vector_text(fsi_forces_, non_finite) << " pN in all, of which elastic "
+         << node_vector_text(population_.internal_forces(), non_finite) << " pN; the node is at "
+         << node_vector_text(population_.positions(), non_finite) << " um";
+    throw std::runtime_error(what.str());
+  }
   // 2. spread, with the supports at x^n (also those of the interpolation below)
   times.time(spread_stage, [&] {
     try {
       rkpm_.update(population_.positions());
-    } catch (const std::runtime_error& error) {
-      throw std::runtime_error(std::string(spread_stage) + ": " + error.what());
+    } catch (const PointsOutsideFluidError& error) {
+      std::ostringstream what;
+      what << spread_stage << ": cell " << population_.cell_of_node(error.first_point())
+           << " has left the fluid domain: its node " << error.first_point() << " is at "
+           << node_vector_text(population_.positions(), error.first_point()) << " um, with no fluid node in its support ("
+           << error.count() << " cell nodes outside in all)";
+      throw std::runtime_error(what.str());
     }
     Kokkos::deep_copy(fluid_load_, 0.0);
     rkpm_.spread(fsi_forces_, fluid_load_, fluid_unknowns_per_node);

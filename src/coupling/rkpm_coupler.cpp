@@ -198,9 +198,16 @@ void BasicRkpmCoupler<ExecSpace>::update(const PointVectors& points) {
   Kokkos::parallel_reduce(
       "rouleau::RkpmCoupler::empty_supports", Kokkos::RangePolicy<ExecSpace>(0, num_points_),
       KOKKOS_LAMBDA(const int p, int& n) { n += offsets(p + 1) == offsets(p) ? 1 : 0; }, empty);
-  if (empty > 0)
-    throw std::runtime_error("rouleau::RkpmCoupler: " + std::to_string(empty) +
-                             " solid points have no fluid node in their support (outside the fluid domain)");
+  if (empty > 0) {
+    int first = num_points_;
+    Kokkos::parallel_reduce(
+        "rouleau::RkpmCoupler::first_empty_support", Kokkos::RangePolicy<ExecSpace>(0, num_points_),
+        KOKKOS_LAMBDA(const int p, int& lowest) {
+          if (offsets(p + 1) == offsets(p) && p < lowest) lowest = p;
+        },
+        Kokkos::Min<int>(first));
+    throw PointsOutsideFluidError(empty, first);
+  }
   fill_rows(points, false);
 }
 

@@ -7,11 +7,30 @@
 // ⟨I u, F⟩ = ⟨u, S F⟩: the power the cells put into the fluid is the power it takes back.
 #include <Kokkos_Core.hpp>
 #include <Kokkos_ScatterView.hpp>
+#include <stdexcept>
+#include <string>
 
 #include "kernels/rkpm.hpp"
 #include "mesh/fluid_mesh.hpp"
 
 namespace rouleau {
+
+// A point with no fluid node in its support: it has left the fluid domain. Names how
+// many there are and the first (lowest index), so a caller can say whose point it is.
+class PointsOutsideFluidError : public std::runtime_error {
+ public:
+  PointsOutsideFluidError(int count, int first_point)
+      : std::runtime_error("rouleau::RkpmCoupler: " + std::to_string(count) +
+                           " solid points have no fluid node in their support (outside the fluid domain), the "
+                           "first is point " + std::to_string(first_point)),
+        count_(count),
+        first_point_(first_point) {}
+  int count() const { return count_; }
+  int first_point() const { return first_point_; }
+
+ private:
+  int count_, first_point_;
+};
 
 template <class ExecSpace>
 class BasicRkpmCoupler {
@@ -23,8 +42,8 @@ class BasicRkpmCoupler {
   explicit BasicRkpmCoupler(const FluidMesh& mesh, double support_factor = 2.0);
 
   // Finds the supports of `points` (point, 3) [μm] and computes their shape functions.
-  // Throws std::runtime_error when a point has no fluid node in its support or a
-  // singular moment matrix (a point outside the fluid domain).
+  // Throws PointsOutsideFluidError when a point has no fluid node in its support (it is
+  // outside the fluid domain).
   void update(const PointVectors& points);
 
   // values(p, c) = Σ_J Φ_J(x_p) nodal(stride · J + c), c = 0, 1, 2.

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "config/derived.hpp"
+#include "kernels/state_checks.hpp"
 #include "util/errors.hpp"
 
 namespace rouleau {
@@ -58,6 +59,28 @@ std::string fluid_failure(const FluidSolveReport& report) {
 }
 }  // namespace
 
+void Simulation::check_fluid_state() const {
+  const int per_node = fluid_unknowns_per_node;
+  const int row = first_non_finite_row(Kokkos::DefaultExecutionSpace(), fluid_->state(), "rouleau::Simulation::check_fluid");
+  if (row < 0) return;
+  auto value = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), Kokkos::subview(fluid_->state(), row));
+  static const char* const unknown_names[] = {"u", "v", "w", "p"};
+  std::ostringstream what;
+  what << "the fluid state is NaN or Inf: unknown " << unknown_names[row % per_node] << " of node " << row / per_node
+       << " is " << value() << " (scaled), the first such";
+  if (!last_report_.fluid.converged) what << "; the solver: " << fluid_failure(last_report_.fluid);
+  diverged("fluid", what.str());
+}
+
+void Simulation::check_cell_elements() const {
+  const auto worst = cells_.population->most_compressed_element();
+  if (worst.volume_ratio > 0.0) return;
+  std::ostringstream what;
+  what << "element " << worst.element << " of cell " << worst.cell
+       << " is inverted: its volume ratio J = det F is " << worst.volume_ratio << " (<= 0)";
+  diverged(ImmersedCoupling::move_stage, what.str());
+}
+
 const ImmersedCoupling::StepReport& Simulation::advance() {
   const TimeConfig& time = config_.time;
   if (coupling_) {
@@ -70,9 +93,13 @@ const ImmersedCoupling::StepReport& Simulation::advance() {
     last_report_ = ImmersedCoupling::StepReport{};
     last_report_.fluid = times_.time(ImmersedCoupling::fluid_stage, [&] { return fluid_->advance(time.dt, time.scheme); });
   }
+  // A failed solve names the first NaN or Inf of the state when there is one.
+  if (!last_report_.fluid.converged) check_fluid_state();
   if (!last_report_.fluid.converged) diverged("fluid", fluid_failure(last_report_.fluid));
+  check_fluid_state();
   if (!last_report_.finite) diverged(ImmersedCoupling::move_stage, "a cell node's interpolated velocity is NaN or Inf");
   if (coupling_) {
+    check_cell_elements();
     // |V_c / V_c0 − 1| ≤ tolerance for every cell (NaN fails too).
     const std::vector<CellMeasures> now = cells_.population->measures();
     for (std::size_t c = 0; c < now.size(); ++c) {
@@ -122,7 +149,10 @@ void Simulation::restore_state(const CheckpointData& data) {
 const ImmersedCoupling::StepReport& Simulation::solve_steady() {
   last_report_ = ImmersedCoupling::StepReport{};
   last_report_.fluid = times_.time(ImmersedCoupling::fluid_stage, [&] { return fluid_->solve_steady(); });
+  // A failed solve names the first NaN or Inf of the state when there is one.
+  if (!last_report_.fluid.converged) check_fluid_state();
   if (!last_report_.fluid.converged) diverged("fluid", fluid_failure(last_report_.fluid));
+  check_fluid_state();
   ++steps_;
   return last_report_;
 }

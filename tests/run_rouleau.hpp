@@ -1,5 +1,7 @@
 #pragma once
 // Running the real `rouleau` executable from a test, with stdout and stderr captured.
+#include <fcntl.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -8,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -43,6 +46,24 @@ std::string fresh_output_dir(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / ("rouleau_run_" + name + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   return dir.string();
+}
+
+// Starts `rouleau ARGUMENTS...` in the background with stderr into `err_path` (stdout
+// discarded); returns its process id, or -1.
+pid_t start_rouleau(const std::vector<std::string>& arguments, const std::string& err_path) {
+  std::vector<std::string> argv_strings{ROULEAU_EXECUTABLE};
+  argv_strings.insert(argv_strings.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (std::string& a : argv_strings) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 2, err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  pid_t pid = -1;
+  const int status = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  return status == 0 ? pid : -1;
 }
 
 }  // namespace

@@ -712,7 +712,7 @@ TEST_F(IoTest, DiagnosticsTableRoundTripsEveryDoubleExactly) {
       {2, std::numeric_limits<double>::max(), -2.5e17, std::numeric_limits<double>::infinity()},
       {3, 0.30000000000000004, std::nextafter(1.0, 2.0), std::numeric_limits<double>::quiet_NaN()}};
   {
-    DiagnosticsTable table(file, columns, 0);
+    DiagnosticsTable table(file, columns, {}, 0);
     EXPECT_EQ(read_csv(file).first, columns);  // the header is there from the start
     EXPECT_TRUE(read_csv(file).second.empty());
     for (const auto& row : rows) table.add_row(row);
@@ -740,7 +740,7 @@ TEST_F(IoTest, DiagnosticsTableRoundTripsEveryDoubleExactly) {
 
 TEST_F(IoTest, DiagnosticsTableFlushesEveryNRowsAndChecksColumns) {
   const std::string file = path("diagnostics.csv");
-  DiagnosticsTable table(file, {"step", "time"}, 2);
+  DiagnosticsTable table(file, {"step", "time"}, {}, 2);
   table.add_row({1, 0.1});
   EXPECT_EQ(read_csv(file).second.size(), 0u);
   table.add_row({2, 0.2});
@@ -751,4 +751,20 @@ TEST_F(IoTest, DiagnosticsTableFlushesEveryNRowsAndChecksColumns) {
   EXPECT_THROW(DiagnosticsTable(path("bad.csv"), {"a,b"}), std::invalid_argument);
   EXPECT_THROW(DiagnosticsTable(path("bad.csv"), {}), std::invalid_argument);
   EXPECT_FALSE(fs::exists(path("bad.csv")));
+}
+
+TEST_F(IoTest, DiagnosticsTableStartsOnDiskWithTheRowsItContinues) {
+  // A restarted run's table: the rows of the run it continues are in the file from the
+  // moment the table exists (a kill before the first new row must not lose them), by
+  // column name, NaN where a row lacks a column.
+  const std::string file = path("continued.csv");
+  const std::vector<std::map<std::string, double>> earlier{{{"step", 1}, {"time", 0.5}, {"dropped", 9}}, {{"step", 2}}};
+  DiagnosticsTable table(file, {"step", "time"}, earlier, 0);
+  const auto [header, rows] = read_csv(file);
+  EXPECT_EQ(header, (std::vector<std::string>{"step", "time"}));
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0], (std::vector<double>{1, 0.5}));
+  EXPECT_EQ(rows[1][0], 2.0);
+  EXPECT_TRUE(std::isnan(rows[1][1]));
+  EXPECT_EQ(table.row_count(), 2u);
 }

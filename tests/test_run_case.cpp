@@ -1,21 +1,15 @@
 // Regression tests of whole runs through the real executable: the shear_flow and channel
-// cases at reduced size, checked against exact values, and the divergence path.
+// cases at reduced size, checked against exact values, and the divergence path (exit code
+// 3 and the last good checkpoint). Checkpoints, restart and signals: test_restart.cpp.
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
-#include <thread>
 #include <vector>
-
-#include <fcntl.h>
-#include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
 
 #include "io/checkpoint_file.hpp"
 #include "io/diagnostics_reader.hpp"
@@ -270,153 +264,6 @@ TEST(RunCase, VolumeDriftStopsTheRunNamingTheCellAndTheLastCheckpoint) {
   EXPECT_NE(o.err.find("enclosed volume is"), std::string::npos) << o.err;
   EXPECT_NE(o.err.find("coupling.volume_tolerance = 0.02"), std::string::npos) << o.err;
   expect_step_0_named_as_last_good(o.err, out);
-}
-
-TEST(RunCase, RestartedRunRepeatsTheStraightRunBitForBit) {
-  // The reduced two-cell aggregation (semi-implicit, Morse on): 8 steps straight through,
-  // against 4 steps, then --restart to the same end, on 2 threads. Every sum runs in the
-  // same order on a given thread count (static partitions, a coloured CRS assembly, no
-  // atomics on doubles), so the final state (fluid U^n and U^{n-1}, cell positions and velocities,
-  // the inertia term's v^{n-1}, the list's build positions) must be identical to the bit,
-  // and so must every physical column of the last diagnostics row.
-  const std::string reduced = " --threads 2 --no-progress --set domain.elements=[12,12,10]"
-                              " --set cell_kinds.normal.resolution=coarse --set coupling.scheme=semi_implicit"
-                              " --set time.dt_s=8.5e-5 --set output.diagnostics_every_steps=1";
-  const std::string aggregation = cases_dir + "/aggregation/case.toml";
-  const std::string straight = fresh_output_dir("straight");
-  const std::string split = fresh_output_dir("split");
-  const Outcome whole = run_rouleau("run " + aggregation + " --out " + straight + reduced + " --set time.end_s=0.00068");
-  ASSERT_EQ(whole.exit_code, 0) << whole.err;
-  const Outcome first = run_rouleau("run " + aggregation + " --out " + split + reduced + " --set time.end_s=0.00034");
-  ASSERT_EQ(first.exit_code, 0) << first.err;
-  const Outcome second =
-      run_rouleau("run --restart " + split + " --threads 2 --no-progress --set time.end_s=0.00068");
-  ASSERT_EQ(second.exit_code, 0) << second.err;
-  EXPECT_NE(second.err.find("restarted from"), std::string::npos) << second.err;
-
-  const auto a = rouleau::read_checkpoint_file(straight + "/checkpoints/checkpoint_000000008.h5");
-  const auto b = rouleau::read_checkpoint_file(split + "/checkpoints/checkpoint_000000008.h5");
-  EXPECT_EQ(a.time, b.time);
-  int compared = 0;
-  for (const auto& [name, values] : a.reals) {
-    if (name == "run/stage_seconds") continue;  // wall times
-    ASSERT_TRUE(b.reals.count(name)) << name;
-    ASSERT_EQ(values.size(), b.reals.at(name).size()) << name;
-    std::size_t differing = 0;
-    for (std::size_t i = 0; i < values.size(); ++i) differing += values[i] != b.reals.at(name)[i];
-    EXPECT_EQ(differing, 0u) << name << ": entries that differ";
-    ++compared;
-  }
-  EXPECT_GE(compared, 7);
-  EXPECT_EQ(a.integers, b.integers);
-
-  // The diagnostics: one row per step in both (the restart kept rows 1-4 and added 5-8).
-  const auto rows_a = rouleau::read_diagnostics(straight + "/diagnostics.csv");
-  const auto rows_b = rouleau::read_diagnostics(split + "/diagnostics.csv");
-  ASSERT_EQ(rows_a.size(), 8u);
-  ASSERT_EQ(rows_b.size(), 8u);
-  for (std::size_t r = 0; r < rows_a.size(); ++r)
-    for (const auto& [column, value] : rows_a[r]) {
-      if (column.find("time_") == 0 && column != "time_s") continue;  // seconds per stage
-      if (column == "wall_time_s") continue;
-      const double other = rows_b[r].at(column);
-      if (std::isnan(value) && std::isnan(other)) continue;  // a column without meaning here
-      EXPECT_EQ(value, other) << "row " << r << " column " << column;
-    }
-  // The field series goes on: steps 0 and 4 from the first segment, 8 from the second.
-  const std::string xdmf = file_contents(split + "/fields.xdmf");
-  for (const char* step : {"fields_000000.h5", "fields_000004.h5", "fields_000008.h5"})
-    EXPECT_NE(xdmf.find(step), std::string::npos) << step;
-}
-
-TEST(RunCase, RestartRefusesAFolderWithoutCheckpointsAndADamagedCheckpoint) {
-  const std::string empty = fresh_output_dir("no_checkpoint");
-  std::filesystem::create_directories(empty);
-  const Outcome none = run_rouleau("run --restart " + empty + " --no-progress");
-  EXPECT_EQ(none.exit_code, 2) << none.err;
-  EXPECT_NE(none.err.find("--restart: no checkpoint in"), std::string::npos) << none.err;
-
-  // A run of the plasma shear flow, its newest checkpoint then cut to half its length (a
-  // copy that did not finish): the restart passes over it, says so, and continues from
-  // the one before.
-  const std::string out = fresh_output_dir("damaged");
-  const Outcome run = run_rouleau("run " + cases_dir + "/shear_flow/case.toml --no-progress --out " + out +
-                                  " --set time.end_s=0.2 --set checkpoint.every_steps=1 --set checkpoint.keep=3");
-  ASSERT_EQ(run.exit_code, 0) << run.err;
-  const rouleau::CheckpointStore store(out, 3);
-  const auto listed = store.list();
-  ASSERT_EQ(listed.size(), 3u);
-  EXPECT_EQ(listed.front().first, 4);
-  std::filesystem::resize_file(listed.front().second, std::filesystem::file_size(listed.front().second) / 2);
-  const Outcome resumed = run_rouleau("run --restart " + out + " --no-progress --set time.end_s=0.3");
-  EXPECT_EQ(resumed.exit_code, 0) << resumed.err;
-  EXPECT_NE(resumed.err.find("passed over a damaged checkpoint"), std::string::npos) << resumed.err;
-  EXPECT_NE(resumed.err.find("restarted from " + listed[1].second), std::string::npos) << resumed.err;
-}
-
-// Starts `rouleau ARGUMENTS...` in the background with stderr into `err_path`.
-pid_t start_rouleau(const std::vector<std::string>& arguments, const std::string& err_path) {
-  std::vector<std::string> argv_strings{ROULEAU_EXECUTABLE};
-  argv_strings.insert(argv_strings.end(), arguments.begin(), arguments.end());
-  std::vector<char*> argv;
-  for (std::string& a : argv_strings) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 2, err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-  pid_t pid = -1;
-  const int status = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  return status == 0 ? pid : -1;
-}
-
-TEST(RunCase, SigtermStopsAfterTheStepWithACheckpointAndExitCode4) {
-  // The plasma shear flow with 20 000 steps of 1 ms: SIGTERM once the run has started must
-  // end it after the step under way, with a checkpoint of that step, exit code 4 and the
-  // restart command; the restart then continues from that step to a nearby end.
-  const std::string out = fresh_output_dir("signal");
-  const std::string err_path = out + "_stderr";
-  const pid_t pid = start_rouleau({"run", cases_dir + "/shear_flow/case.toml", "--no-progress", "--threads", "1",
-                                   "--out", out, "--set", "time.dt_s=0.001", "--set", "time.end_s=20",
-                                   "--set", "output.fields=false"},
-                                  err_path);
-  ASSERT_GT(pid, 0);
-  // Wait for the checkpoint of step 0 (written once the first field and setup are done),
-  // then a little longer so that steps are under way.
-  const std::string first = out + "/checkpoints/checkpoint_000000000.h5";
-  for (int i = 0; i < 600 && !std::filesystem::exists(first); ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  ASSERT_TRUE(std::filesystem::exists(first)) << file_contents(err_path);
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
-  ASSERT_EQ(::kill(pid, SIGTERM), 0);
-  int status = 0;
-  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
-  const std::string err = file_contents(err_path);
-  ASSERT_TRUE(WIFEXITED(status)) << err;
-  EXPECT_EQ(WEXITSTATUS(status), 4) << err;
-  EXPECT_NE(err.find("stopped by signal 15 after step"), std::string::npos) << err;
-  EXPECT_NE(err.find("rouleau run --restart " + out), std::string::npos) << err;
-
-  const rouleau::FoundCheckpoint last = rouleau::newest_valid_checkpoint(out);
-  EXPECT_GT(last.data.step, 0);
-  EXPECT_LT(last.data.step, 20000);
-  // The diagnostics end at the same step (one row per step).
-  const auto rows = rouleau::read_diagnostics(out + "/diagnostics.csv");
-  ASSERT_FALSE(rows.empty());
-  EXPECT_EQ(rows.back().at("step"), static_cast<double>(last.data.step));
-  // No temporary file is left behind.
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(out))
-    EXPECT_NE(entry.path().extension(), ".tmp") << entry.path();
-
-  const double end = (last.data.step + 5) * 0.001;
-  const Outcome resumed = run_rouleau("run --restart " + out + " --threads 1 --no-progress --set time.end_s=" +
-                                      std::to_string(end));
-  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
-  const auto resumed_rows = rouleau::read_diagnostics(out + "/diagnostics.csv");
-  EXPECT_EQ(resumed_rows.back().at("step"), static_cast<double>(last.data.step + 5));
-  EXPECT_EQ(resumed_rows.size(), rows.size() + 5);
-  std::filesystem::remove(err_path);
 }
 
 }  // namespace

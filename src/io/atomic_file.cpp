@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
 
 namespace rouleau {
@@ -36,6 +37,16 @@ void write_file_atomically(const std::string& path, const std::string& contents)
   const bool ok = std::fwrite(contents.data(), 1, contents.size(), f) == contents.size();
   if (std::fclose(f) != 0 || !ok) fail("write_file_atomically", temporary);
   commit_temporary_file(temporary, path);
+}
+
+int remove_leftover_temporary_files(const std::string& directory) {
+  int removed = 0;
+  std::error_code status;
+  for (const auto& entry : std::filesystem::directory_iterator(directory, status)) {
+    if (entry.path().extension() != ".tmp" || !entry.is_regular_file(status)) continue;
+    removed += std::filesystem::remove(entry.path(), status) ? 1 : 0;
+  }
+  return removed;
 }
 
 }  // namespace rouleau

@@ -15,4 +15,9 @@ void write_file_atomically(const std::string& path, const std::string& contents)
 // Renames a finished temporary file onto its final name (after fsync of the data).
 void commit_temporary_file(const std::string& temporary, const std::string& path);
 
+// Removes the temporary files ("*.tmp") directly in `directory`: what a process that was
+// killed while writing left behind (a run folder has one writer at a time, so at a
+// restart every such file is dead). Returns how many were removed.
+int remove_leftover_temporary_files(const std::string& directory);
+
 }  // namespace rouleau

@@ -32,14 +32,20 @@ void create_parent_directory(const std::string& path) {
 
 }  // namespace
 
-DiagnosticsTable::DiagnosticsTable(std::string path, std::vector<std::string> columns, std::size_t rows_per_flush,
-                                   double seconds_per_flush)
+DiagnosticsTable::DiagnosticsTable(std::string path, std::vector<std::string> columns,
+                                   const std::vector<std::map<std::string, double>>& earlier_rows,
+                                   std::size_t rows_per_flush, double seconds_per_flush)
     : path_(std::move(path)),
       columns_(std::move(columns)),
       rows_per_flush_(rows_per_flush),
       seconds_per_flush_(seconds_per_flush) {
   check_column_names(path_, columns_);
   create_parent_directory(path_);
+  for (const auto& row : earlier_rows)
+    for (const std::string& column : columns_) {
+      const auto found = row.find(column);
+      values_.push_back(found == row.end() ? std::numeric_limits<double>::quiet_NaN() : found->second);
+    }
   flush();
 }
 
@@ -49,17 +55,6 @@ DiagnosticsTable::~DiagnosticsTable() {
     flush();
   } catch (const std::exception& error) {
     std::cerr << "rouleau::DiagnosticsTable: " << unflushed_rows_ << " rows not written: " << error.what() << '\n';
-  }
-}
-
-void DiagnosticsTable::add_rows(const std::vector<std::map<std::string, double>>& rows) {
-  std::vector<double> values(columns_.size());
-  for (const auto& row : rows) {
-    for (std::size_t c = 0; c < columns_.size(); ++c) {
-      const auto found = row.find(columns_[c]);
-      values[c] = found == row.end() ? std::numeric_limits<double>::quiet_NaN() : found->second;
-    }
-    add_row(values);
   }
 }
 

@@ -13,14 +13,19 @@ namespace rouleau {
 class DiagnosticsTable {
  public:
   // A table written to `path` (its directory is created if missing) with these column
-  // names, which must be non-empty, unique, and free of ',', '"' and line breaks. The file
-  // is written at once with the header line only. add_row flushes by itself after every
+  // names, which must be non-empty, unique, and free of ',', '"' and line breaks, starting
+  // with `earlier_rows` given by column name (a restarted run takes over the rows of the
+  // run it continues, io/diagnostics_reader.hpp; a column a row does not have gets NaN,
+  // names not among the columns are dropped). The file is written at once with the header
+  // and the earlier rows, so a run killed at any moment leaves them on disk. add_row
+  // flushes by itself after every
   // `rows_per_flush` rows (0: only explicit flushes and the destructor), and when
   // `seconds_per_flush` of wall time have passed since the last flush (0: never), so that
   // a long run's file follows it.
   // Throws std::invalid_argument for bad columns, std::runtime_error if the file cannot be written.
-  DiagnosticsTable(std::string path, std::vector<std::string> columns, std::size_t rows_per_flush = 100,
-                   double seconds_per_flush = 10.0);
+  DiagnosticsTable(std::string path, std::vector<std::string> columns,
+                   const std::vector<std::map<std::string, double>>& earlier_rows = {},
+                   std::size_t rows_per_flush = 100, double seconds_per_flush = 10.0);
 
   // Flushes unwritten rows; an error is reported on stderr, never thrown.
   ~DiagnosticsTable();
@@ -32,11 +37,6 @@ class DiagnosticsTable {
   // "nan", "inf", "-inf"). Throws std::invalid_argument when the count differs from the
   // number of columns.
   void add_row(const std::vector<double>& values);
-
-  // Appends rows given by column name (a restarted run takes over the rows of the run it
-  // continues, io/diagnostics_reader.hpp); a column a row does not have gets NaN, names
-  // not among the columns are dropped.
-  void add_rows(const std::vector<std::map<std::string, double>>& rows);
 
   // Writes the header and every row so far to PATH.tmp, syncs it and renames it to PATH.
   // Each value is printed with "%.17g", which reads back to the identical double.

@@ -165,6 +165,9 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
     simulation.restore_state(restart->data);
     std::cerr << "restarted from " << restart->path << ": step " << restart->data.step << ", t = " << restart->data.time
               << " s\n";
+    const int leftovers = remove_leftover_temporary_files(out) + remove_leftover_temporary_files(out + "/checkpoints");
+    if (leftovers > 0)
+      std::cerr << "removed " << leftovers << " unfinished temporary file(s) of the stopped run\n";
   }
   // What a run that ran this far wrote after the checkpoint is dropped: the diagnostics
   // rows and the field steps of later steps.
@@ -189,8 +192,7 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
     const auto coupling_columns = coupling_diagnostics.columns();
     columns.insert(columns.end(), coupling_columns.begin(), coupling_columns.end());
   }
-  DiagnosticsTable table(out + "/diagnostics.csv", columns);
-  table.add_rows(earlier_rows);
+  DiagnosticsTable table(out + "/diagnostics.csv", columns, earlier_rows);
   // Wall time of the whole run, over the segments a restart joins.
   const double earlier_wall_seconds = restart ? restart->data.wall_seconds : 0.0;
   auto wall_seconds = [&] { return earlier_wall_seconds + std::chrono::duration<double>(Clock::now() - run_start).count(); };
@@ -251,7 +253,10 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
   if (restart) checkpoints.set_last_path(restart->path);
   auto last_checkpoint = Clock::now();
   int last_checkpoint_step = restart ? static_cast<int>(restart->data.step) : -1;
+  // The diagnostics on disk go first: a run killed after the checkpoint then has every
+  // row up to it (the restart keeps those and drops later ones).
   auto write_checkpoint = [&] {
+    table.flush();
     times.time("checkpoint", [&] {
       CheckpointData data;
       data.resolved_case = resolved_case_toml(config, derived);

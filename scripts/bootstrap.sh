@@ -3,6 +3,7 @@
 #
 #   scripts/bootstrap.sh            # Debian packages + Kokkos/KokkosKernels 3.4.01 if none is found
 #   scripts/bootstrap.sh --cuda     # the same with CUDA: Debian's CUDA 11.8 toolkit, Kokkos for sm_80
+#   scripts/bootstrap.sh --fuzz     # Debian packages and clang with libFuzzer only (scripts/fuzz.sh)
 #   Kokkos_ROOT=/path scripts/bootstrap.sh   # use an existing Kokkos (Spack, modules, a site CUDA build)
 #
 # Debian packages come through apt (with sudo when not root). When no Kokkos is
@@ -25,10 +26,12 @@ root_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 deps="${ROULEAU_DEPS_DIR:-$root_dir/.deps}"
 jobs="${ROULEAU_JOBS:-$(nproc)}"
 cuda=0
+fuzz=0
 for argument in "$@"; do
   case "$argument" in
     --cuda) cuda=1 ;;
-    *) printf 'bootstrap: unknown argument %s (usage: bootstrap.sh [--cuda])\n' "$argument" >&2; exit 2 ;;
+    --fuzz) fuzz=1 ;;
+    *) printf 'bootstrap: unknown argument %s (usage: bootstrap.sh [--cuda | --fuzz])\n' "$argument" >&2; exit 2 ;;
   esac
 done
 prefix="$deps/install"
@@ -86,6 +89,8 @@ packages=(
   libeigen3-dev libhdf5-dev libtomlplusplus-dev libcli11-dev libspdlog-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev libgmsh-dev python3 python3-matplotlib python3-h5py
 )
+# The fuzzing build: clang and its runtime libraries (libFuzzer, AddressSanitizer, UBSan).
+[ "$fuzz" = 1 ] && packages+=(clang libclang-rt-dev)
 if [ "$cuda" = 1 ]; then
   packages+=(nvidia-cuda-toolkit g++-11 gcc-11)
   # The toolkit lives in contrib/non-free: add those components of this machine's own
@@ -105,6 +110,9 @@ if [ ${#missing[@]} -gt 0 ]; then
   "${sudo_cmd[@]}" apt-get update -qq
   DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
+
+# The fuzzing build compiles only the host-only library: no Kokkos needed.
+[ "$fuzz" = 1 ] && exit 0
 
 # ---------------------------------------------------------------- Kokkos
 has_kokkos() { # $1: a prefix

@@ -11,12 +11,14 @@
 #include <iostream>
 #include <map>
 #include <random>
+#include <vector>
 
 #include "cells/cell_population.hpp"
 #include "cells/cells_from_case.hpp"
 #include "cells/surface_interaction.hpp"
 #include "config/cell_kinds.hpp"
 #include "kernels/morse.hpp"
+#include "kernels/morse_pairs.hpp"
 #include "test_helpers.hpp"
 #include "tet_box_mesh.hpp"
 
@@ -162,6 +164,35 @@ double force_difference(const SurfaceInteraction& interaction, const Reference& 
     norm += reference.forces[i].squaredNorm();
   }
   return std::sqrt(error / norm);
+}
+
+TEST(SurfacePairForceFunctor, InterleavedRowOrderVisitsEveryRowOnce) {
+  // row_of over loop_extent indices is a permutation of the rows (the padding indices map
+  // past the end), and a contiguous quarter of the indices meets rows all over the range.
+  using Functor = rouleau::SurfacePairForceFunctor<rouleau::HalfList, rouleau::MorsePotential, int>;
+  for (const int rows : {1, 5, 63, 64, 65, 1000, 4097})
+    for (const int stride : {1, 2, 7, 64}) {
+      Functor order;
+      order.num_points = rows;
+      order.row_stride = stride;
+      const int extent = Functor::loop_extent(rows, stride);
+      std::vector<int> seen(rows, 0);
+      for (int i = 0; i < extent; ++i) {
+        const int row = order.row_of(i);
+        ASSERT_GE(row, 0);
+        if (row < rows) ++seen[row];
+      }
+      for (int row = 0; row < rows; ++row) ASSERT_EQ(seen[row], 1) << rows << " rows, stride " << stride;
+      if (stride == 64 && rows >= 1000) {
+        int lowest = rows, highest = -1;
+        for (int i = 0; i < extent / 4; ++i) {
+          const int row = order.row_of(i);
+          if (row < rows) lowest = std::min(lowest, row), highest = std::max(highest, row);
+        }
+        EXPECT_LT(lowest, rows / 20);
+        EXPECT_GT(highest, rows - rows / 20);
+      }
+    }
 }
 
 TEST(SurfaceInteraction, MatchesABruteForceDoubleLoop) {

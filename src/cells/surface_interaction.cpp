@@ -342,19 +342,23 @@ double BasicSurfaceInteraction<ExecSpace>::run_pair_kernel(const char* label) {
   if (half_list_) {
     force_scatter_.reset();
     // A half list keeps the pairs j > i of points numbered cell by cell, so the first
-    // cells' rows hold most of the pairs. Dynamic scheduling balanced the threads (1.5×
-    // at 2 cells, 1.17× at 100 on 2 threads) but made the force sums' grouping, and so
-    // their last bits, change from run to run; the static partition keeps every run and
-    // every restart identical on a given thread count (issue 9).
-    launch(SurfacePairForceFunctor<HalfList, MorsePotential, Scatter>{point_positions_, point_weight_, point_kind_,
-                                                                      potentials_, neighbor_offsets_, neighbors_,
-                                                                      forces_, force_scatter_},
-           Kokkos::RangePolicy<ExecSpace, Tag>(0, num_points()));
+    // cells' rows hold most of the pairs. On the host the rows run interleaved (stride 64,
+    // SurfacePairForceFunctor::row_of) over a static partition: balanced threads, and the
+    // same sums in the same order on every run and restart with a given thread count
+    // (issue 9; dynamic scheduling balanced them too but regrouped the sums run to run).
+    // On a GPU each row is a thread anyway: the plain order keeps neighbouring rows together.
+    constexpr bool on_host = Kokkos::SpaceAccessibility<Kokkos::HostSpace, typename ExecSpace::memory_space>::accessible;
+    const int stride = on_host ? 64 : 1;
+    SurfacePairForceFunctor<HalfList, MorsePotential, Scatter> pairs{point_positions_, point_weight_, point_kind_,
+                                                                     potentials_,     neighbor_offsets_, neighbors_,
+                                                                     forces_,         force_scatter_,  num_points(),
+                                                                     stride};
+    launch(pairs, Kokkos::RangePolicy<ExecSpace, Tag>(0, pairs.loop_extent(num_points(), stride)));
     gather_into(forces_, force_scatter_);
   } else {
     launch(SurfacePairForceFunctor<FullList, MorsePotential, Scatter>{point_positions_, point_weight_, point_kind_,
                                                                       potentials_, neighbor_offsets_, neighbors_,
-                                                                      forces_, force_scatter_},
+                                                                      forces_, force_scatter_, num_points(), 1},
            Kokkos::RangePolicy<ExecSpace, Tag>(0, num_points()));
   }
   return energy;

@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -43,11 +44,9 @@ std::string serialize_cached_mesh(const std::string& header, const std::string& 
   return text;
 }
 
-CachedMesh read_cached_mesh(const std::string& path, const std::string& header, const std::string& hash,
-                            const std::string& parameters,
-                            const std::vector<std::pair<std::string, std::size_t>>& surface_names) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open it");
+CachedMesh parse_cached_mesh(std::istream& in, const std::string& header, const std::string& hash,
+                             const std::string& parameters,
+                             const std::vector<std::pair<std::string, std::size_t>>& surface_names) {
   std::string line;
   const auto expect_line = [&](const std::string& wanted, const char* what) {
     if (!std::getline(in, line) || line != wanted) throw std::runtime_error(std::string("wrong ") + what + " line");
@@ -62,33 +61,56 @@ CachedMesh read_cached_mesh(const std::string& path, const std::string& header, 
       throw std::runtime_error("bad \"" + keyword + "\" count");
     return static_cast<std::size_t>(count);
   };
+  // Entries are appended as they are read, never allocated from a count alone: a file
+  // that claims 10^8 nodes must hold them, so memory stays bounded by the file's size.
+  constexpr std::size_t reserve_at_most = 1 << 16;
   CachedMesh cached;
   TetrahedralMesh& mesh = cached.mesh;
-  mesh.nodes.resize(read_count("nodes", 4));
-  for (auto& x : mesh.nodes)
+  const std::size_t node_count = read_count("nodes", 4);
+  mesh.nodes.reserve(std::min(node_count, reserve_at_most));
+  for (std::size_t n = 0; n < node_count; ++n) {
+    MeshPoint x;
     if (!(in >> x[0] >> x[1] >> x[2]) || !std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
       throw std::runtime_error("a node's coordinates are missing or not finite");
-  const int node_count = static_cast<int>(mesh.nodes.size());
-  const auto valid_index = [&](int i) { return i >= 0 && i < node_count; };
-  mesh.tetrahedra.resize(read_count("tetrahedra", 1));
-  for (auto& t : mesh.tetrahedra) {
+    mesh.nodes.push_back(x);
+  }
+  const auto valid_index = [&](int i) { return i >= 0 && i < static_cast<int>(node_count); };
+  const std::size_t tetrahedron_count = read_count("tetrahedra", 1);
+  mesh.tetrahedra.reserve(std::min(tetrahedron_count, reserve_at_most));
+  for (std::size_t e = 0; e < tetrahedron_count; ++e) {
+    Tetrahedron t;
     if (!(in >> t[0] >> t[1] >> t[2] >> t[3]) || !valid_index(t[0]) || !valid_index(t[1]) || !valid_index(t[2]) ||
         !valid_index(t[3]))
       throw std::runtime_error("a tetrahedron's node indices are missing or out of range");
     if (!(signed_volume6(mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]], mesh.nodes[t[3]]) > 0.0))
       throw std::runtime_error("a tetrahedron has no positive volume");
+    mesh.tetrahedra.push_back(t);
   }
   for (const auto& [name, minimum] : surface_names) {
-    NamedSurface surface{name, std::vector<Triangle>(read_count(name, minimum))};
-    for (auto& f : surface.triangles)
-      if (!(in >> f[0] >> f[1] >> f[2]) || !valid_index(f[0]) || !valid_index(f[1]) || !valid_index(f[2]))
+    NamedSurface surface{name, {}};
+    const std::size_t triangle_count = read_count(name, minimum);
+    surface.triangles.reserve(std::min(triangle_count, reserve_at_most));
+    for (std::size_t f = 0; f < triangle_count; ++f) {
+      Triangle triangle;
+      if (!(in >> triangle[0] >> triangle[1] >> triangle[2]) || !valid_index(triangle[0]) ||
+          !valid_index(triangle[1]) || !valid_index(triangle[2]))
         throw std::runtime_error("a triangle of \"" + name + "\" has node indices missing or out of range");
+      surface.triangles.push_back(triangle);
+    }
     cached.surfaces.push_back(std::move(surface));
   }
   std::string word;
   if (!(in >> word) || word != "end") throw std::runtime_error("no \"end\" line (truncated?)");
   if (in >> word) throw std::runtime_error("text after \"end\"");
   return cached;
+}
+
+CachedMesh read_cached_mesh(const std::string& path, const std::string& header, const std::string& hash,
+                            const std::string& parameters,
+                            const std::vector<std::pair<std::string, std::size_t>>& surface_names) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open it");
+  return parse_cached_mesh(in, header, hash, parameters, surface_names);
 }
 
 void write_mesh_cache_file(const std::string& directory, const std::string& file_name, const std::string& text) {

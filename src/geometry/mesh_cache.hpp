@@ -11,6 +11,7 @@
 //   end
 // Host-only: includes no Kokkos header.
 #include <functional>
+#include <istream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -33,10 +34,16 @@ struct CachedMesh {
 std::string serialize_cached_mesh(const std::string& header, const std::string& hash, const std::string& parameters,
                                   const CachedMesh& mesh);
 
-// Reads a cache file whose header, hash and parameters lines must be these, with the
-// surfaces `surface_names` in this order, each with at least the matching minimum count
-// of triangles. Every tetrahedron must have positive volume. Throws std::runtime_error
-// with the reason when anything is off.
+// Reads a cache file's text whose header, hash and parameters lines must be these, with
+// the surfaces `surface_names` in this order, each with at least the matching minimum
+// count of triangles. Every index must be in range and every tetrahedron must have
+// positive volume. Memory stays within a small multiple of the text's size whatever the
+// counts claim. Throws std::runtime_error with the reason when anything is off.
+CachedMesh parse_cached_mesh(std::istream& in, const std::string& header, const std::string& hash,
+                             const std::string& parameters,
+                             const std::vector<std::pair<std::string, std::size_t>>& surface_names);
+
+// The same from the file at `path`.
 CachedMesh read_cached_mesh(const std::string& path, const std::string& header, const std::string& hash,
                             const std::string& parameters, const std::vector<std::pair<std::string, std::size_t>>& surface_names);
 

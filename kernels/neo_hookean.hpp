@@ -93,11 +93,8 @@ struct NeoHookeanForceFunctor {
   template <bool with_energy>
   KOKKOS_INLINE_FUNCTION double element_forces(const int e) const {
     double x[4][3];
-    for (int a = 0; a < 4; ++a)
-      for (int i = 0; i < 3; ++i) x[a][i] = positions(element_nodes(e, a), i);
     Mat3 inverse;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) inverse.m[i][j] = inverse_edge_matrix(e, i, j);
+    Tet4::gather(e, positions, element_nodes, inverse_edge_matrix, x, inverse);
     double gradient[4][3];
     Tet4::shape_gradients(inverse, gradient);
     const Mat3 f = Tet4::deformation_gradient(x, inverse);

@@ -57,11 +57,8 @@ struct SmallestVolumeRatioFunctor {
 
   KOKKOS_INLINE_FUNCTION void operator()(const int e, value_type& smallest) const {
     double x[4][3];
-    for (int a = 0; a < 4; ++a)
-      for (int i = 0; i < 3; ++i) x[a][i] = positions(element_nodes(e, a), i);
     Mat3 inverse;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) inverse.m[i][j] = inverse_edge_matrix(e, i, j);
+    Tet4::gather(e, positions, element_nodes, inverse_edge_matrix, x, inverse);
     const double j = determinant(Tet4::deformation_gradient(x, inverse));
     // NaN positions give a NaN J, which is not smaller than anything: report it as the
     // lowest double.

@@ -67,6 +67,18 @@ struct Tet4 {
   KOKKOS_INLINE_FUNCTION static Mat3 deformation_gradient(const double x[4][3], const Mat3& inverse_edge_matrix) {
     return multiply(edge_matrix(x), inverse_edge_matrix);
   }
+
+  // Element e's current node positions x[a][i] and its D_m⁻¹, gathered from the (node, 3)
+  // positions, (element, 4) nodes and (element, 3, 3) D_m⁻¹ Views.
+  template <class Positions, class ElementNodes, class InverseEdgeMatrices>
+  KOKKOS_INLINE_FUNCTION static void gather(const int e, const Positions& positions, const ElementNodes& element_nodes,
+                                            const InverseEdgeMatrices& inverse_edge_matrices, double x[4][3],
+                                            Mat3& inverse_edge_matrix) {
+    for (int a = 0; a < 4; ++a)
+      for (int i = 0; i < 3; ++i) x[a][i] = positions(element_nodes(e, a), i);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) inverse_edge_matrix.m[i][j] = inverse_edge_matrices(e, i, j);
+  }
 };
 
 // Reference data of every tetrahedron, computed once from the reference positions:

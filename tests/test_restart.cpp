@@ -158,24 +158,33 @@ TEST(Restart, RestartRefusesAFolderWithoutCheckpointsAndADamagedCheckpoint) {
   EXPECT_NE(resumed.err.find("restarted from " + listed[1].second), std::string::npos) << resumed.err;
 }
 
+// Starts the plasma shear flow with 20 000 steps of 1 ms (and `settings`, "key=value")
+// in the background, stderr into `err_path`, and returns once its step-0 checkpoint is
+// written (setup done) and `settle` more has passed, so that steps are under way.
+pid_t start_long_shear_flow(const std::string& out, const std::string& err_path,
+                            const std::vector<std::string>& settings, std::chrono::milliseconds settle) {
+  std::vector<std::string> arguments{"run", cases_dir + "/shear_flow/case.toml", "--no-progress", "--threads", "1",
+                                     "--out", out, "--set", "time.dt_s=0.001", "--set", "time.end_s=20",
+                                     "--set", "output.fields=false"};
+  for (const std::string& setting : settings) arguments.insert(arguments.end(), {"--set", setting});
+  const pid_t pid = start_rouleau(arguments, err_path);
+  if (pid <= 0) return pid;
+  const std::string first = out + "/checkpoints/checkpoint_000000000.h5";
+  for (int i = 0; i < 600 && !std::filesystem::exists(first); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  EXPECT_TRUE(std::filesystem::exists(first)) << file_contents(err_path);
+  std::this_thread::sleep_for(settle);
+  return pid;
+}
+
 TEST(Restart, SigtermStopsAfterTheStepWithACheckpointAndExitCode4) {
   // The plasma shear flow with 20 000 steps of 1 ms: SIGTERM once the run has started must
   // end it after the step under way, with a checkpoint of that step, exit code 4 and the
   // restart command; the restart then continues from that step to a nearby end.
   const std::string out = fresh_output_dir("signal");
   const std::string err_path = out + "_stderr";
-  const pid_t pid = start_rouleau({"run", cases_dir + "/shear_flow/case.toml", "--no-progress", "--threads", "1",
-                                   "--out", out, "--set", "time.dt_s=0.001", "--set", "time.end_s=20",
-                                   "--set", "output.fields=false"},
-                                  err_path);
+  const pid_t pid = start_long_shear_flow(out, err_path, {}, std::chrono::milliseconds(500));
   ASSERT_GT(pid, 0);
-  // Wait for the checkpoint of step 0 (written once the first field and setup are done),
-  // then a little longer so that steps are under way.
-  const std::string first = out + "/checkpoints/checkpoint_000000000.h5";
-  for (int i = 0; i < 600 && !std::filesystem::exists(first); ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  ASSERT_TRUE(std::filesystem::exists(first)) << file_contents(err_path);
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
   ASSERT_EQ(::kill(pid, SIGTERM), 0);
   int status = 0;
   ASSERT_EQ(::waitpid(pid, &status, 0), pid);
@@ -213,17 +222,9 @@ TEST(Restart, SecondStopSignalExitsAtOnceLeavingNoDamagedFile) {
   // checkpoint left reads and passes its checksum, and the run restarts from the newest.
   const std::string out = fresh_output_dir("second_signal");
   const std::string err_path = out + "_stderr";
-  const pid_t pid = start_rouleau({"run", cases_dir + "/shear_flow/case.toml", "--no-progress", "--threads", "1",
-                                   "--out", out, "--set", "time.dt_s=0.001", "--set", "time.end_s=20",
-                                   "--set", "domain.elements=[24,24,12]", "--set", "checkpoint.every_steps=1",
-                                   "--set", "output.fields=false"},
-                                  err_path);
+  const pid_t pid = start_long_shear_flow(out, err_path, {"domain.elements=[24,24,12]", "checkpoint.every_steps=1"},
+                                          std::chrono::milliseconds(300));
   ASSERT_GT(pid, 0);
-  const std::string first = out + "/checkpoints/checkpoint_000000000.h5";
-  for (int i = 0; i < 600 && !std::filesystem::exists(first); ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  ASSERT_TRUE(std::filesystem::exists(first)) << file_contents(err_path);
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
   ASSERT_EQ(::kill(pid, SIGTERM), 0);
   std::this_thread::sleep_for(std::chrono::milliseconds(20));
   ASSERT_EQ(::kill(pid, SIGTERM), 0);

@@ -36,17 +36,28 @@ auto host_copy(const View& v) {
 }
 
 TEST(MorsePotential, Identities) {
-  // φ(r0) = −De, f(r0) = 0, the strongest attraction −f = βDe/2 at r0 + ln 2/β, f = −φ'.
+  // Eqs. (3)-(4) as printed: φ(r0) = −De, f(r0) = 0, the strongest attraction −f = βDe/2
+  // at r0 + ln 2/β. The shifted law: f_s = f − f(r_c) and φ_s both vanish at r_c, and
+  // f_s = −φ_s' everywhere below r_c.
   const MorsePotential m{2.5, 4.0, 0.25, 3.0};
-  EXPECT_NEAR(m.energy(0.25), -2.5, 1e-15);
-  EXPECT_NEAR(m.force(0.25), 0.0, 1e-15);
+  EXPECT_NEAR(m.unshifted_energy(0.25), -2.5, 1e-15);
+  EXPECT_NEAR(m.unshifted_force(0.25), 0.0, 1e-15);
   const double r_star = 0.25 + std::log(2.0) / 4.0;
-  EXPECT_NEAR(m.force(r_star), -4.0 * 2.5 / 2.0, 1e-14);
-  EXPECT_NEAR((m.force(r_star + 1e-5) - m.force(r_star - 1e-5)) / 2e-5, 0.0, 1e-6);  // an extremum
+  EXPECT_NEAR(m.unshifted_force(r_star), -4.0 * 2.5 / 2.0, 1e-14);
+  EXPECT_NEAR((m.unshifted_force(r_star + 1e-5) - m.unshifted_force(r_star - 1e-5)) / 2e-5, 0.0, 1e-6);
+  EXPECT_EQ(m.force(3.0), 0.0);
+  EXPECT_NEAR(m.energy(3.0), 0.0, 1e-18);
+  // The shift: f(r_c) = 2βDe (e^{−2β(r_c−r0)} − e^{−β(r_c−r0)}), about −1.3e-4 De here.
+  const double tail = std::exp(-4.0 * 2.75);
+  EXPECT_NEAR(m.cutoff_force, 2.0 * 4.0 * 2.5 * (tail * tail - tail), 1e-18);
+  EXPECT_NEAR(m.force(0.7) - m.unshifted_force(0.7), -m.cutoff_force, 1e-15);
   double worst = 0.0;
   for (double r = 0.05; r < 3.0; r += 0.137) {
     const double derivative = (m.energy(r + 1e-6) - m.energy(r - 1e-6)) / 2e-6;
     worst = std::max(worst, std::fabs(m.force(r) + derivative) / (std::fabs(m.force(r)) + 1e-3));
+    double energy = 0.0;
+    EXPECT_EQ(m.force_and_energy(r, energy), m.force(r));
+    EXPECT_EQ(energy, m.energy(r));
   }
   EXPECT_LT(worst, 1e-7);
 }

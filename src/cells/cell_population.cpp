@@ -233,9 +233,8 @@ typename BasicCellPopulation<ExecSpace>::CompressedElement BasicCellPopulation<E
   if (smallest.loc < 0 || smallest.loc >= num_elements()) return result;  // no elements
   result.volume_ratio = smallest.val;
   result.element = smallest.loc;
-  int cell = -1;
-  Kokkos::deep_copy(cell, Kokkos::subview(element_cell_, result.element));
-  result.cell = cell;
+  // Every step asks; only an inverted element is worth the copy of its cell from the device.
+  if (result.volume_ratio <= 0.0) Kokkos::deep_copy(result.cell, Kokkos::subview(element_cell_, result.element));
   return result;
 }
 

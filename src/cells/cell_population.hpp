@@ -116,7 +116,7 @@ class BasicCellPopulation {
   struct CompressedElement {
     double volume_ratio = 1.0;  // J = V/V0
     int element = -1;
-    int cell = -1;
+    int cell = -1;  // found only when the element is inverted (volume_ratio ≤ 0), else −1
   };
   CompressedElement most_compressed_element() const;
   // The cell that owns node `node` (host).

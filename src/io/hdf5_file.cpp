@@ -35,11 +35,17 @@ Hdf5Handle open_dataset(const Hdf5File& file, const std::string& dataset_path) {
   return dataset;
 }
 
+// The dataspace of an open dataset.
+Hdf5Handle dataset_space(const Hdf5File& file, const std::string& dataset_path, const Hdf5Handle& dataset) {
+  Hdf5Handle space(H5Dget_space(dataset.get()), H5Sclose);
+  if (!space.valid()) throw_hdf5_error(file, dataset_path, "H5Dget_space");
+  return space;
+}
+
 template <class T>
 std::vector<T> read_whole_dataset(const Hdf5File& file, const std::string& dataset_path, hid_t memory_type) {
   Hdf5Handle dataset = open_dataset(file, dataset_path);
-  Hdf5Handle space(H5Dget_space(dataset.get()), H5Sclose);
-  if (!space.valid()) throw_hdf5_error(file, dataset_path, "H5Dget_space");
+  const Hdf5Handle space = dataset_space(file, dataset_path, dataset);
   const hssize_t count = H5Sget_simple_extent_npoints(space.get());
   if (count < 0) throw_hdf5_error(file, dataset_path, "H5Sget_simple_extent_npoints");
   std::vector<T> values(static_cast<std::size_t>(count));
@@ -133,8 +139,7 @@ bool has_dataset(const Hdf5File& file, const std::string& dataset_path) {
 
 std::vector<hsize_t> dataset_dimensions(const Hdf5File& file, const std::string& dataset_path) {
   Hdf5Handle dataset = open_dataset(file, dataset_path);
-  Hdf5Handle space(H5Dget_space(dataset.get()), H5Sclose);
-  if (!space.valid()) throw_hdf5_error(file, dataset_path, "H5Dget_space");
+  const Hdf5Handle space = dataset_space(file, dataset_path, dataset);
   const int rank = H5Sget_simple_extent_ndims(space.get());
   if (rank < 0) throw_hdf5_error(file, dataset_path, "H5Sget_simple_extent_ndims");
   std::vector<hsize_t> dimensions(static_cast<std::size_t>(rank));

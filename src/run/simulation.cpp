@@ -59,6 +59,12 @@ std::string fluid_failure(const FluidSolveReport& report) {
 }
 }  // namespace
 
+void Simulation::check_fluid_solve() const {
+  // A failed solve names the first NaN or Inf of the state when there is one.
+  check_fluid_state();
+  if (!last_report_.fluid.converged) diverged("fluid", fluid_failure(last_report_.fluid));
+}
+
 void Simulation::check_fluid_state() const {
   const int per_node = fluid_unknowns_per_node;
   const int row = first_non_finite_row(Kokkos::DefaultExecutionSpace(), fluid_->state(), "rouleau::Simulation::check_fluid");
@@ -93,10 +99,7 @@ const ImmersedCoupling::StepReport& Simulation::advance() {
     last_report_ = ImmersedCoupling::StepReport{};
     last_report_.fluid = times_.time(ImmersedCoupling::fluid_stage, [&] { return fluid_->advance(time.dt, time.scheme); });
   }
-  // A failed solve names the first NaN or Inf of the state when there is one.
-  if (!last_report_.fluid.converged) check_fluid_state();
-  if (!last_report_.fluid.converged) diverged("fluid", fluid_failure(last_report_.fluid));
-  check_fluid_state();
+  check_fluid_solve();
   if (!last_report_.finite) diverged(ImmersedCoupling::move_stage, "a cell node's interpolated velocity is NaN or Inf");
   if (coupling_) {
     check_cell_elements();
@@ -149,10 +152,7 @@ void Simulation::restore_state(const CheckpointData& data) {
 const ImmersedCoupling::StepReport& Simulation::solve_steady() {
   last_report_ = ImmersedCoupling::StepReport{};
   last_report_.fluid = times_.time(ImmersedCoupling::fluid_stage, [&] { return fluid_->solve_steady(); });
-  // A failed solve names the first NaN or Inf of the state when there is one.
-  if (!last_report_.fluid.converged) check_fluid_state();
-  if (!last_report_.fluid.converged) diverged("fluid", fluid_failure(last_report_.fluid));
-  check_fluid_state();
+  check_fluid_solve();
   ++steps_;
   return last_report_;
 }

@@ -53,7 +53,9 @@ class Simulation {
 
  private:
   [[noreturn]] void diverged(const std::string& stage, const std::string& what) const;
-  // Stop (diverged) when the fluid state holds a NaN or Inf, naming the first such unknown.
+  // Stop (diverged) when the fluid solve failed or its state holds a NaN or Inf (naming
+  // the first such unknown, and the solver's failure when there is one).
+  void check_fluid_solve() const;
   void check_fluid_state() const;
   // Stop (diverged) when a cell element is inverted (J = det F ≤ 0), naming it and its cell.
   void check_cell_elements() const;

@@ -3,7 +3,6 @@
 // and the scene's check: with the interaction the gap closes to the order of r0 and stays
 // there; without it (--set interaction.enabled=false) it stays open.
 //   case_aggregation [CASE.toml] [--out DIR] [--set KEY=VALUE]... (the options of `rouleau run`)
-#include <Kokkos_Core.hpp>
 #include <cstdio>
 
 #include "analysis/scene_checks.hpp"
@@ -11,7 +10,6 @@
 #include "run/run_case.hpp"
 
 int main(int argc, char** argv) {
-  Kokkos::ScopeGuard kokkos(argc, argv);
   // Inputs and run
   const auto run = rouleau::run_case_driver(argc, argv, ROULEAU_CASE_DIR "/case.toml", "runs/aggregation");
   if (!run.ran) return run.status;

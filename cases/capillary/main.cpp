@@ -2,7 +2,6 @@
 // (or the file given) and prints the history of the driving pressure with the capsule's
 // position, the data of the paper's Fig. 17, against the plasma's drop at the same flow.
 //   case_capillary [CASE.toml] [--out DIR] [--set KEY=VALUE]... (the options of `rouleau run`)
-#include <Kokkos_Core.hpp>
 #include <cstdio>
 
 #include "geometry/vessel_profile.hpp"
@@ -10,7 +9,6 @@
 #include "run/run_case.hpp"
 
 int main(int argc, char** argv) {
-  Kokkos::ScopeGuard kokkos(argc, argv);
   // Inputs and run
   const auto run = rouleau::run_case_driver(argc, argv, ROULEAU_CASE_DIR "/case.toml", "runs/capillary");
   if (!run.ran) return run.status;

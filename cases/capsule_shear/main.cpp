@@ -2,7 +2,6 @@
 // given) and compares the steady Taylor deformation with the small-deformation theory and
 // the published thin-membrane values at the case's capillary number.
 //   case_capsule_shear [CASE.toml] [--out DIR] [--set KEY=VALUE]... (the options of `rouleau run`)
-#include <Kokkos_Core.hpp>
 #include <cmath>
 #include <cstdio>
 
@@ -11,7 +10,6 @@
 #include "run/run_case.hpp"
 
 int main(int argc, char** argv) {
-  Kokkos::ScopeGuard kokkos(argc, argv);
   // Inputs and run
   const auto run = rouleau::run_case_driver(argc, argv, ROULEAU_CASE_DIR "/case.toml", "runs/capsule_shear");
   if (!run.ran) return run.status;

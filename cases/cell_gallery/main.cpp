@@ -1,7 +1,6 @@
 // The cell bodies side by side: runs cases/cell_gallery/case.toml (or the file given) and
 // prints, for each kind used, its mesh and how close the meshed body is to the exact one.
 //   case_cell_gallery [CASE.toml] [--out DIR] [--set KEY=VALUE]... (the options of `rouleau run`)
-#include <Kokkos_Core.hpp>
 #include <cstdio>
 
 #include "cells/cells_from_case.hpp"
@@ -10,7 +9,6 @@
 #include "run/run_case.hpp"
 
 int main(int argc, char** argv) {
-  Kokkos::ScopeGuard kokkos(argc, argv);
   // Inputs and run
   const auto run = rouleau::run_case_driver(argc, argv, ROULEAU_CASE_DIR "/case.toml", "runs/cell_gallery");
   if (!run.ran) return run.status;

@@ -1,7 +1,6 @@
 // Pressure-driven plane channel: runs cases/channel/case.toml (or the file given) and
 // compares the mean velocity with Hagen–Poiseuille, U = Δp H² / (12 μ L).
 //   case_channel [CASE.toml] [--out DIR] [--set KEY=VALUE]... (the options of `rouleau run`)
-#include <Kokkos_Core.hpp>
 #include <cmath>
 #include <cstdio>
 
@@ -9,7 +8,6 @@
 #include "run/run_case.hpp"
 
 int main(int argc, char** argv) {
-  Kokkos::ScopeGuard kokkos(argc, argv);
   // Inputs and run
   const auto run = rouleau::run_case_driver(argc, argv, ROULEAU_CASE_DIR "/case.toml", "runs/channel");
   if (!run.ran) return run.status;

@@ -4,7 +4,6 @@
 // (8 μ Q / π) ∫ dx / R(x)⁴, and the outflow against the inflow; with cells, it prints how
 // many have passed the throat over time with the driving pressure.
 //   case_contraction [CASE.toml] [--out DIR] [--set KEY=VALUE]... (the options of `rouleau run`)
-#include <Kokkos_Core.hpp>
 #include <cmath>
 #include <cstdio>
 
@@ -14,7 +13,6 @@
 #include "run/run_case.hpp"
 
 int main(int argc, char** argv) {
-  Kokkos::ScopeGuard kokkos(argc, argv);
   // Inputs and run
   const auto run = rouleau::run_case_driver(argc, argv, ROULEAU_CASE_DIR "/case.toml", "runs/contraction");
   if (!run.ran) return run.status;

@@ -1,14 +1,12 @@
 // One red blood cell in simple shear: runs cases/rbc_shear/case.toml (or the file given)
 // and reports how the cell turned and deformed, and how well its volume was kept.
 //   case_rbc_shear [CASE.toml] [--out DIR] [--set KEY=VALUE]... (the options of `rouleau run`)
-#include <Kokkos_Core.hpp>
 #include <cstdio>
 
 #include "io/diagnostics_reader.hpp"
 #include "run/run_case.hpp"
 
 int main(int argc, char** argv) {
-  Kokkos::ScopeGuard kokkos(argc, argv);
   // Inputs and run
   const auto run = rouleau::run_case_driver(argc, argv, ROULEAU_CASE_DIR "/case.toml", "runs/rbc_shear");
   if (!run.ran) return run.status;

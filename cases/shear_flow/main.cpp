@@ -2,14 +2,12 @@
 // given) and checks that plasma alone has a relative apparent viscosity of 1 (wall shear
 // stress τ_w = μ γ̇). The four-cell cases fill this box with cells.
 //   case_shear_flow [CASE.toml] [--out DIR] [--set KEY=VALUE]... (the options of `rouleau run`)
-#include <Kokkos_Core.hpp>
 #include <cstdio>
 
 #include "io/diagnostics_reader.hpp"
 #include "run/run_case.hpp"
 
 int main(int argc, char** argv) {
-  Kokkos::ScopeGuard kokkos(argc, argv);
   // Inputs and run
   const auto run = rouleau::run_case_driver(argc, argv, ROULEAU_CASE_DIR "/case.toml", "runs/shear_flow");
   if (!run.ran) return run.status;

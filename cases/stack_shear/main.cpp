@@ -3,7 +3,6 @@
 // inclination and the neighbour gaps over time, then the measures of the paper's statement
 // for the run's shear rate and whether they meet its thresholds.
 //   case_stack_shear [CASE.toml] [--out DIR] [--set KEY=VALUE]... (the options of `rouleau run`)
-#include <Kokkos_Core.hpp>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -13,7 +12,6 @@
 #include "run/run_case.hpp"
 
 int main(int argc, char** argv) {
-  Kokkos::ScopeGuard kokkos(argc, argv);
   // Inputs and run
   const auto run = rouleau::run_case_driver(argc, argv, ROULEAU_CASE_DIR "/case.toml", "runs/stack_shear");
   if (!run.ran) return run.status;

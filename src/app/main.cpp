@@ -1,50 +1,29 @@
-// The `rouleau` command. The one host file that includes Kokkos: it validates the case
-// first, then starts Kokkos (only for `run` and `info`) and calls the library.
-#include <Kokkos_Core.hpp>
+// The `rouleau` command: it validates the case first, then starts Kokkos (only for `run`
+// and `info`, run/kokkos_session.hpp) and calls the library.
 #include <iostream>
-#include <memory>
 #include <string>
-#include <vector>
 
 #include "cli/cli.hpp"
 #include "cli/host_info.hpp"
 #include "config/derived.hpp"
 #include "config/load_case.hpp"
+#include "run/kokkos_session.hpp"
 #include "run/run_case.hpp"
 #include "util/errors.hpp"
 
 namespace {
-
-// Kokkos started for the lifetime of this object, with the thread count of the command
-// line when it gives one (else Kokkos reads OMP_NUM_THREADS).
-class KokkosSession {
- public:
-  KokkosSession(const char* program, int threads) : arguments_{program} {
-    if (threads > 0) arguments_.push_back(rouleau::kokkos_threads_flag(threads, KOKKOS_VERSION));
-    for (std::string& argument : arguments_) argument_pointers_.push_back(argument.data());
-    argument_pointers_.push_back(nullptr);
-    argument_count_ = static_cast<int>(arguments_.size());
-    guard_ = std::make_unique<Kokkos::ScopeGuard>(argument_count_, argument_pointers_.data());
-  }
-
- private:
-  std::vector<std::string> arguments_;
-  std::vector<char*> argument_pointers_;
-  int argument_count_ = 0;
-  std::unique_ptr<Kokkos::ScopeGuard> guard_;
-};
 
 int run_command(const rouleau::CommandLine& command_line) {
   // The whole case is validated before Kokkos starts: bad input costs no start-up.
   rouleau::RunOptions options = rouleau::run_options(command_line);
   const rouleau::CaseConfig config = rouleau::load_run_case(command_line, options.restart, std::cerr);
   rouleau::derive_quantities(config);
-  KokkosSession kokkos("rouleau", command_line.threads);
+  rouleau::KokkosSession kokkos("rouleau", command_line.threads);
   return rouleau::run_case(config, options);
 }
 
 int info_command(const rouleau::CommandLine& command_line) {
-  KokkosSession kokkos("rouleau", command_line.threads);
+  rouleau::KokkosSession kokkos("rouleau", command_line.threads);
   auto lines = rouleau::host_dependency_versions();
   for (auto& line : rouleau::kokkos_runtime_info()) lines.push_back(std::move(line));
   std::cout << rouleau::format_info_lines(lines);

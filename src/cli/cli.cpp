@@ -113,6 +113,7 @@ CommandLine parse_driver_command_line(int argc, const char* const* argv, const s
   add_overrides_option(app, result);
   bool no_progress = false;
   add_run_options(app, result, no_progress);
+  add_threads_option(app, result);
   app.get_option("--restart")->excludes(case_file);
   if (!parse_or_finish(app, argc, argv, out, err, result)) return result;
   result.progress = !no_progress;

@@ -1,5 +1,7 @@
 #include "run/run_case.hpp"
 
+#include "run/kokkos_session.hpp"
+
 #include <Kokkos_Core.hpp>
 #include <chrono>
 #include <algorithm>
@@ -136,7 +138,9 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
   ImmersedCoupling* coupling = simulation.coupling();
   std::cerr << "fluid mesh: " << simulation.mesh().num_nodes << " nodes, " << simulation.mesh().num_elements << " "
             << (simulation.mesh().element_type == FluidElementType::tetrahedron4 ? "tetrahedra" : "hexahedra") << ", "
-            << solver.fluid_operator().num_unknowns() << " unknowns\n";
+            << solver.fluid_operator().num_unknowns() << " unknowns; "
+            << Kokkos::DefaultExecutionSpace::name() << " on " << Kokkos::DefaultHostExecutionSpace().concurrency()
+            << " host threads\n";
   if (coupling && coupling->semi_implicit())
     std::cerr << "semi-implicit coupling: dt = " << config.time.dt << " s (the explicit stable step estimate, "
               << derived.stable_dt << " s, does not bind it)\n";
@@ -341,7 +345,10 @@ CaseDriverRun run_case_driver(int argc, char** argv, const std::string& default_
   run.options = run_options(command_line);
   run.status = run_reporting_errors(
       [&] {
+        // The whole case is validated before Kokkos starts, as `rouleau run` does.
         run.config = load_run_case(command_line, run.options.restart, std::cerr);
+        derive_quantities(run.config);
+        const KokkosSession kokkos(argc > 0 ? argv[0] : "case", command_line.threads);
         return run_case(run.config, run.options);
       },
       std::cerr);

@@ -43,9 +43,10 @@ int run_case(const CaseConfig& config, const RunOptions& options);
 
 // What a case driver (cases/NAME/main.cpp) runs:
 //   case_NAME [CASE.toml] [--out DIR] [--set KEY=VALUE]... [--explain] [--no-progress]
-//             [--restart DIR]
+//             [--restart DIR] [--threads N]
 // with the driver's own case file and output folder as defaults. Loads the case and runs
-// it, reporting errors as `rouleau run` does (one line, exit code); the driver then checks
+// it (Kokkos runs only inside this call, run/kokkos_session.hpp), reporting errors as
+// `rouleau run` does (one line, exit code); the driver then checks
 // what is special to its case when status is 0.
 struct CaseDriverRun {
   CaseConfig config;

@@ -17,12 +17,12 @@
 #include <vector>
 
 #include "sphere_in_shear.hpp"
+#include "temporary_folder.hpp"
 
 namespace {
 
 TEST(SphereShearLong, RotationErrorFallsWithRefinement) {
-  const auto folder = std::filesystem::temp_directory_path() / ("rouleau_long_sphere_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(folder);
+  const auto folder = rouleau::testing::temporary_folder("long_sphere");
   std::vector<rouleau::testing::SphereInShear> runs;
   for (const int n : {16, 32, 48})
     runs.push_back(rouleau::testing::run_sphere_in_shear(16.0, n, folder.string(), "fine"));

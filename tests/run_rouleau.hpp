@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "temporary_folder.hpp"
+
 namespace {
 
 struct Outcome {
@@ -28,8 +30,7 @@ std::string file_contents(const std::string& path) {
 
 // Runs `rouleau ARGUMENTS` with stdout and stderr captured separately.
 Outcome run_rouleau(const std::string& arguments) {
-  const auto folder = std::filesystem::temp_directory_path() / ("rouleau_test_run_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(folder);
+  const auto folder = rouleau::testing::temporary_folder("run");
   const std::string out_path = (folder / "stdout").string(), err_path = (folder / "stderr").string();
   const std::string command =
       std::string(ROULEAU_EXECUTABLE) + " " + arguments + " >'" + out_path + "' 2>'" + err_path + "'";
@@ -41,9 +42,10 @@ Outcome run_rouleau(const std::string& arguments) {
   return outcome;
 }
 
-// An empty output folder for a run, unique to this process: TMPDIR/rouleau_run_NAME_PID.
+// An output folder for a run, unique to this process, not yet there (the run makes it):
+// TMPDIR/rouleau_test_run_NAME_PID, removed when the test process exits.
 std::string fresh_output_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("rouleau_run_" + name + "_" + std::to_string(::getpid()));
+  const auto dir = rouleau::testing::temporary_folder_path("run_" + name);
   std::filesystem::remove_all(dir);
   return dir.string();
 }

@@ -16,6 +16,7 @@
 #include "config/load_case.hpp"
 #include "kernels/surface_gap.hpp"
 #include "test_helpers.hpp"
+#include "temporary_folder.hpp"
 
 namespace {
 
@@ -76,8 +77,7 @@ TEST(CellGaps, PointTriangleDistanceMatchesAPlainReference) {
 }
 
 rouleau::CaseConfig two_capsules(double gap) {
-  const auto folder = std::filesystem::temp_directory_path() / ("rouleau_test_cell_gaps_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(folder);
+  const auto folder = rouleau::testing::temporary_folder("cell_gaps");
   const std::string path = (folder / "case.toml").string();
   // Capsules of diameter 5.64 μm ("paper" resolution), centres 5.64 + gap apart along x.
   const double half = 0.5 * (5.64 + gap);
@@ -96,7 +96,7 @@ TEST(CellGaps, TwoCapsulesAtAKnownSeparation) {
   for (double gap : {0.1, 0.5}) {
     const rouleau::CaseConfig config = two_capsules(gap);
     const rouleau::CaseCells cells =
-        rouleau::make_case_cells(config, (std::filesystem::temp_directory_path() / "rouleau_test_cell_gaps_meshes").string());
+        rouleau::make_case_cells(config, rouleau::testing::temporary_folder("cell_gaps_meshes").string());
     const rouleau::CellGaps gaps(*cells.population, 0.25);
     const auto pairs = gaps.measure();
     ASSERT_EQ(pairs.size(), 1u);

@@ -17,6 +17,7 @@
 #include "config/resolved_case.hpp"
 #include "geometry/grading.hpp"
 #include "util/errors.hpp"
+#include "temporary_folder.hpp"
 
 namespace {
 
@@ -31,9 +32,7 @@ const std::string good_case = data_dir + "/good_case.toml";
 // Writes `text` to a fresh file in a per-test temporary folder; returns its path.
 std::string write_case_file(const std::string& file_name, const std::string& text) {
   const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-  const auto folder = std::filesystem::temp_directory_path() /
-                      ("rouleau_test_config_" + std::string(test->name()) + "_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(folder);
+  const auto folder = rouleau::testing::temporary_folder("config_" + std::string(test->name()));
   const std::string path = (folder / file_name).string();
   std::ofstream(path) << text;
   return path;

@@ -22,6 +22,7 @@
 #include "config/load_case.hpp"
 #include "coupling/cell_stiffness.hpp"
 #include "run/simulation.hpp"
+#include "temporary_folder.hpp"
 
 namespace {
 
@@ -31,9 +32,7 @@ using rouleau::Simulation;
 // A scratch folder per test (case files, mesh cache).
 std::string scratch(const std::string& name) {
   const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-  const auto folder = std::filesystem::temp_directory_path() /
-                      ("rouleau_test_coupling_" + std::string(test->name()) + "_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(folder);
+  const auto folder = rouleau::testing::temporary_folder("coupling_" + std::string(test->name()));
   return (folder / name).string();
 }
 

@@ -19,6 +19,7 @@
 #include "run/simulation.hpp"
 #include "sphere_in_shear.hpp"
 #include "util/errors.hpp"
+#include "temporary_folder.hpp"
 
 namespace {
 
@@ -30,10 +31,8 @@ using rouleau::testing::HostVectors;
 class Divergence : public ::testing::Test {
  protected:
   void SetUp() override {
-    folder_ = std::filesystem::temp_directory_path() /
-              ("rouleau_test_divergence_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-               "_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(folder_);
+    folder_ = rouleau::testing::fresh_temporary_folder(
+        "divergence_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     const std::string path = (folder_ / "case.toml").string();
     std::ofstream(path) << rouleau::testing::shear_box(20.0, 8, 5.0)
                         << "[time]\ndt_s = 1e-4\nend_s = 1\n"

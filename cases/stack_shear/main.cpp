@@ -47,26 +47,8 @@ int main(int argc, char** argv) {
               shear_rate, rows.back().at("time_s"), shear_rate * rows.back().at("time_s"), m.largest_gap_growth,
               m.largest_separation_change, m.mean_inclination_deg, m.inclination_spread_deg, m.stack_axis_deg,
               m.intact ? "intact" : "broken up");
-  // The paper's statement for this run, each as measures against thresholds.
-  auto verdict = [](bool met) { return met ? "met" : "NOT MET"; };
-  if (!run.config.interaction.enabled) {
-    const bool met = m.largest_separation_change < 0.5;
-    std::printf("check (no interaction: the cells keep their vertical separations): change %.4f < 0.5 um: %s\n",
-                m.largest_separation_change, verdict(met));
-  } else if (shear_rate <= 0.3) {
-    const bool met = m.intact && std::fabs(m.stack_axis_deg + m.mean_inclination_deg) < 10.0;
-    std::printf("check (0.25 1/s: the stack rotates as one body): intact, |axis + inclination| = %.2f < 10 deg: %s\n",
-                std::fabs(m.stack_axis_deg + m.mean_inclination_deg), verdict(met));
-  } else if (shear_rate <= 1.0) {
-    const bool met = m.largest_gap_growth > 0.0 && std::fabs(m.mean_inclination_deg) < 20.0;
-    std::printf("check (0.5 1/s: aligns with the flow and starts to separate): gap growth %.4f > 0, |inclination| "
-                "%.2f < 20 deg: %s\n",
-                m.largest_gap_growth, std::fabs(m.mean_inclination_deg), verdict(met));
-  } else {
-    const bool met = !m.intact && m.inclination_spread_deg < 10.0;
-    std::printf("check (3.0 1/s: breaks up into parallel layers): gap growth %.4f > r0 = %.2f um, inclination "
-                "spread %.2f < 10 deg: %s\n",
-                m.largest_gap_growth, r0, m.inclination_spread_deg, verdict(met));
-  }
+  // The paper's statement for this run, as measures against thresholds.
+  const auto check = rouleau::check_stack_statement(m, shear_rate, run.config.interaction.enabled, r0);
+  std::printf("check (%s): %s: %s\n", check.statement.c_str(), check.measured.c_str(), check.met ? "met" : "NOT MET");
   return 0;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace rouleau {
@@ -84,6 +85,35 @@ StackMeasures measure_stack(const DiagnosticsRows& rows, int cells, int cells_pe
   m.stack_axis_deg = std::atan2(dx, dy) * 180.0 / M_PI;
   m.intact = m.largest_gap_growth < zero_force_length;
   return m;
+}
+
+StackStatement check_stack_statement(const StackMeasures& m, double shear_rate, bool interaction,
+                                     double zero_force_length) {
+  StackStatement result;
+  char text[256];
+  if (!interaction) {
+    result.statement = "no interaction: the cells keep their vertical separations";
+    result.met = m.largest_separation_change < 0.5;
+    std::snprintf(text, sizeof(text), "largest separation change %.4f < 0.5 um", m.largest_separation_change);
+  } else if (shear_rate <= 0.3) {
+    result.statement = "0.25 1/s: the stack rotates as one body";
+    const double turn_mismatch = std::fabs(m.stack_axis_deg + m.mean_inclination_deg);
+    result.met = m.intact && turn_mismatch < 10.0;
+    std::snprintf(text, sizeof(text), "largest gap growth %.4f < r0 = %.2f um, |axis + inclination| %.2f < 10 deg",
+                  m.largest_gap_growth, zero_force_length, turn_mismatch);
+  } else if (shear_rate <= 1.0) {
+    result.statement = "0.5 1/s: the stack aligns with the flow and starts to separate";
+    result.met = !m.intact && std::fabs(m.mean_inclination_deg) < 20.0;
+    std::snprintf(text, sizeof(text), "largest gap growth %.4f > r0 = %.2f um, |mean inclination| %.2f < 20 deg",
+                  m.largest_gap_growth, zero_force_length, std::fabs(m.mean_inclination_deg));
+  } else {
+    result.statement = "3.0 1/s: the stack breaks up into parallel layers";
+    result.met = !m.intact && m.inclination_spread_deg < 10.0;
+    std::snprintf(text, sizeof(text), "largest gap growth %.4f > r0 = %.2f um, inclination spread %.2f < 10 deg",
+                  m.largest_gap_growth, zero_force_length, m.inclination_spread_deg);
+  }
+  result.measured = text;
+  return result;
 }
 
 }  // namespace rouleau

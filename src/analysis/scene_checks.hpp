@@ -64,4 +64,21 @@ struct StackMeasures {
 // intact test.
 StackMeasures measure_stack(const DiagnosticsRows& rows, int cells, int cells_per_stack, double zero_force_length);
 
+// The paper's statement (Liu et al. 2004, Figs. 7-12) for a stack's run, as measures
+// against thresholds:
+// - no interaction: the cells keep their vertical separations (every change < 0.5 μm);
+// - shear rate ≤ 0.3 1/s: the stack rotates as one body (intact: every gap grew by less
+//   than r0; the centroid line turns with the discs, |axis + mean inclination| < 10°);
+// - ≤ 1 1/s: it aligns with the flow and starts to separate (a gap grew by more than r0,
+//   out of the Morse well's range, the complement of "intact"; |mean inclination| < 20°);
+// - above: it breaks up into parallel layers (a gap grew by more than r0; the
+//   inclinations agree within 10°).
+struct StackStatement {
+  std::string statement;  // the paper's words
+  std::string measured;   // the measures against their thresholds, one line
+  bool met = false;
+};
+StackStatement check_stack_statement(const StackMeasures& measures, double shear_rate, bool interaction,
+                                     double zero_force_length);
+
 }  // namespace rouleau

@@ -1,0 +1,78 @@
+// The scene checks of src/analysis/scene_checks.hpp on made-up diagnostics whose measures
+// are known: a four-cell stack at its first and last rows, and the paper's statements
+// (Liu et al. 2004, Figs. 7-12) on either side of each threshold.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <string>
+
+#include "analysis/scene_checks.hpp"
+
+namespace {
+
+using rouleau::DiagnosticsRows;
+
+// A row of a vertical stack: cell c at (x[c], y[c]) with inclination incl, neighbour gaps gap[c].
+std::map<std::string, double> stack_row(const double (&x)[4], const double (&y)[4], double inclination,
+                                        const double (&gap)[3]) {
+  std::map<std::string, double> row;
+  for (int c = 0; c < 4; ++c) {
+    const std::string cell = "cell" + std::to_string(c) + "_";
+    row[cell + "centroid_x_um"] = x[c];
+    row[cell + "centroid_y_um"] = y[c];
+    row[cell + "inclination_deg"] = inclination + c;  // spread 3 deg
+  }
+  for (int c = 0; c < 3; ++c) row["gap_" + std::to_string(c) + "_" + std::to_string(c + 1) + "_um"] = gap[c];
+  return row;
+}
+
+TEST(SceneChecks, StackMeasuresAreTheChangesBetweenTheFirstAndLastRows) {
+  const DiagnosticsRows rows{stack_row({0, 0, 0, 0}, {-6, -2, 2, 6}, 0.0, {1.4, 1.4, 1.4}),
+                             stack_row({-1, 0, 0, 1}, {-6.5, -2, 2.3, 6}, -12.0, {1.0, 2.1, 1.3})};
+  const auto m = rouleau::measure_stack(rows, 4, 4, 0.25);
+  EXPECT_NEAR(m.largest_gap_growth, 0.7, 1e-12);          // the middle gap, 1.4 -> 2.1
+  EXPECT_NEAR(m.largest_separation_change, 0.5, 1e-12);   // cells 0-1: 4 -> 4.5
+  EXPECT_NEAR(m.mean_inclination_deg, -10.5, 1e-12);      // -12, -11, -10, -9
+  EXPECT_NEAR(m.inclination_spread_deg, 3.0, 1e-12);
+  EXPECT_NEAR(m.stack_axis_deg, std::atan2(2.0, 12.5) * 180.0 / M_PI, 1e-12);  // dx 2, dy 12.5
+  EXPECT_FALSE(m.intact);                                 // 0.7 > r0
+}
+
+TEST(SceneChecks, EachShearRateHasThePapersStatementWithItsThresholds) {
+  rouleau::StackMeasures held;  // a stack turned by 20 deg as one body, gaps grown by 0.1 um
+  held.largest_gap_growth = 0.1;
+  held.intact = true;
+  held.mean_inclination_deg = -20.0;
+  held.stack_axis_deg = 18.0;
+  held.inclination_spread_deg = 2.0;
+  rouleau::StackMeasures parted = held;  // the same with a gap grown by 0.4 um
+  parted.largest_gap_growth = 0.4;
+  parted.intact = false;
+  const double r0 = 0.25;
+  EXPECT_TRUE(rouleau::check_stack_statement(held, 0.25, true, r0).met);
+  EXPECT_FALSE(rouleau::check_stack_statement(parted, 0.25, true, r0).met);
+  rouleau::StackMeasures sliding = held;  // intact but the centroid line does not turn with the discs
+  sliding.stack_axis_deg = 0.0;
+  EXPECT_FALSE(rouleau::check_stack_statement(sliding, 0.25, true, r0).met);
+  // 0.5 1/s: starting to separate is the complement of intact; aligned within 20 deg.
+  EXPECT_FALSE(rouleau::check_stack_statement(held, 0.5, true, r0).met);
+  rouleau::StackMeasures aligned_parted = parted;
+  aligned_parted.mean_inclination_deg = -8.0;
+  EXPECT_TRUE(rouleau::check_stack_statement(aligned_parted, 0.5, true, r0).met);
+  EXPECT_FALSE(rouleau::check_stack_statement(parted, 0.5, true, r0).met);  // -20 deg: not aligned
+  // 3.0 1/s: apart and in parallel layers.
+  EXPECT_TRUE(rouleau::check_stack_statement(parted, 3.0, true, r0).met);
+  rouleau::StackMeasures tumbling = parted;
+  tumbling.inclination_spread_deg = 25.0;
+  EXPECT_FALSE(rouleau::check_stack_statement(tumbling, 3.0, true, r0).met);
+  // Without the interaction, whatever the rate: the vertical separations.
+  held.largest_separation_change = 0.3;
+  EXPECT_TRUE(rouleau::check_stack_statement(held, 3.0, false, r0).met);
+  held.largest_separation_change = 0.9;
+  const auto moved = rouleau::check_stack_statement(held, 3.0, false, r0);
+  EXPECT_FALSE(moved.met);
+  EXPECT_NE(moved.measured.find("0.9000"), std::string::npos) << moved.measured;
+}
+
+}  // namespace

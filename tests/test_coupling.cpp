@@ -111,6 +111,12 @@ TEST(Coupling, TaylorDeformationIsMeasuredOnTheMembraneMidSurface) {
   EXPECT_NEAR(shape.breadth, mid_radius / stretch, 0.03);
   EXPECT_NEAR(shape.inclination_deg, 30.0, 0.5);
   EXPECT_GT(shape.taylor_deformation - outer.taylor_deformation, 0.01);
+  // The outer surface's extent: along z, unstretched, the outer diameter; along x, the
+  // mid-surface ellipsoid's 2 a_m sqrt(m_xx² + m_xy²) plus at most the offset on each side.
+  EXPECT_NEAR(shape.extent[2], 2.0 * outer_radius, 0.03);
+  const double mid_extent_x = 2.0 * mid_radius * std::hypot(m_xx, m_xy);
+  EXPECT_GT(shape.extent[0], mid_extent_x - 0.03);
+  EXPECT_LT(shape.extent[0], mid_extent_x + thickness + 0.03);
 }
 
 TEST(Coupling, CapsuleDeformsInProportionToCaAndKeepsItsVolume) {

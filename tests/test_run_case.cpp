@@ -205,12 +205,12 @@ TEST(RunCase, ContractionWritesTetrahedraAndTheDrivingPressure) {
 }
 
 TEST(RunCase, CapsuleEntersTheCapillaryCase) {
-  // The capillary case with its capsule, coarsened, three steps: the run completes, the
+  // The capillary case with its capsule, coarsened, three semi-implicit steps: the run completes, the
   // capsule moves downstream, and the driving pressure is in the diagnostics.
   const std::string out = fresh_output_dir("capillary");
   const Outcome o = run_rouleau("run " + cases_dir + "/capillary/case.toml --no-progress --out " + out +
                                 " --set vessel.element_size_um=3.0 --set vessel.wall_element_size_um=1.5"
-                                " --set time.end_s=0.00042");
+                                " --set time.end_s=0.003");
   ASSERT_EQ(o.exit_code, 0) << o.err;
   const auto row = rouleau::read_last_diagnostics(out + "/diagnostics.csv");
   std::printf("capillary (coarse), 3 steps: capsule centroid x %.5f um, driving pressure %.4f Pa\n",

@@ -75,4 +75,38 @@ TEST(SceneChecks, EachShearRateHasThePapersStatementWithItsThresholds) {
   EXPECT_NE(moved.measured.find("0.9000"), std::string::npos) << moved.measured;
 }
 
+// A capsule row: centroid x, x-extent, driving pressure.
+std::map<std::string, double> capsule_row(double x, double length, double pressure) {
+  return {{"cell0_centroid_x_um", x}, {"cell0_extent_x_um", length}, {"driving_pressure_Pa", pressure}};
+}
+
+TEST(SceneChecks, CapillaryPassageRisesPlugsStretchesAndFalls) {
+  // A capillary from x = 20 to 40 um; a capsule of free length 6 um.
+  const DiagnosticsRows passage{capsule_row(7, 6.0, 1.6), capsule_row(18, 6.4, 2.5), capsule_row(30, 9.0, 4.0),
+                                capsule_row(39, 8.0, 3.0), capsule_row(50, 6.5, 1.8)};
+  const auto c = rouleau::check_capillary_passage(passage, 20.0, 40.0);
+  EXPECT_DOUBLE_EQ(c.peak_pressure, 4.0);
+  EXPECT_DOUBLE_EQ(c.peak_position, 30.0);
+  EXPECT_DOUBLE_EQ(c.longest_inside, 9.0);
+  EXPECT_DOUBLE_EQ(c.free_length, 6.0);
+  EXPECT_TRUE(c.rose && c.left && c.fell && c.longer_inside);
+  EXPECT_TRUE(c.met());
+  // Still inside at the end: it has not left, so the pressure has not fallen.
+  const DiagnosticsRows stuck(passage.begin(), passage.begin() + 4);
+  const auto s = rouleau::check_capillary_passage(stuck, 20.0, 40.0);
+  EXPECT_TRUE(s.rose);
+  EXPECT_FALSE(s.left);
+  EXPECT_FALSE(s.fell);
+  EXPECT_FALSE(s.met());
+  // Left, but the pressure stayed up (fallen by 0.6 of the 2.4 Pa rise, below 3/4).
+  DiagnosticsRows high = passage;
+  high.back() = capsule_row(50, 6.5, 3.4);
+  EXPECT_FALSE(rouleau::check_capillary_passage(high, 20.0, 40.0).fell);
+  // A 5 % rise is no rise; a capsule that kept its length inside is not "longer".
+  const DiagnosticsRows flat{capsule_row(7, 6.0, 1.6), capsule_row(30, 6.0, 1.68), capsule_row(50, 6.0, 1.6)};
+  const auto f = rouleau::check_capillary_passage(flat, 20.0, 40.0);
+  EXPECT_FALSE(f.rose);
+  EXPECT_FALSE(f.longer_inside);
+}
+
 }  // namespace

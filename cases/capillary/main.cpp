@@ -1,9 +1,11 @@
 // A capsule squeezing through a capillary (paper Figs. 16–17): runs cases/capillary/case.toml
 // (or the file given) and prints the history of the driving pressure with the capsule's
-// position, the data of the paper's Fig. 17, against the plasma's drop at the same flow.
+// position, the data of the paper's Fig. 17, against the plasma's drop at the same flow,
+// then the paper's statement as measures against thresholds (check_capillary_passage).
 //   case_capillary [CASE.toml] [--out DIR] [--set KEY=VALUE]... (the options of `rouleau run`)
 #include <cstdio>
 
+#include "analysis/scene_checks.hpp"
 #include "geometry/vessel_profile.hpp"
 #include "io/diagnostics_reader.hpp"
 #include "run/run_case.hpp"
@@ -20,9 +22,29 @@ int main(int argc, char** argv) {
     std::printf("%10.5f %12.4f %12.5f %14.5f\n", row.at("time_s"), with_capsule ? row.at("cell0_centroid_x_um") : 0.0,
                 row.at("driving_pressure_Pa"), row.at("relative_apparent_viscosity"));
   const rouleau::VesselProfile& profile = run.config.vessel.profile;
+  const double entry = profile.inlet_length + profile.contraction_length, exit = entry + profile.throat_length;
   std::printf("capillary from x = %.1f to %.1f um; relative_visc is the drop over Hagen-Poiseuille's summed over the "
               "cross-sections at the same flow rate (the plasma alone: 1.045)\n",
-              profile.inlet_length + profile.contraction_length,
-              profile.inlet_length + profile.contraction_length + profile.throat_length);
+              entry, exit);
+  if (!with_capsule) return 0;
+  // The paper's statement (Fig. 17), as measures against thresholds.
+  const auto c = rouleau::check_capillary_passage(rows, entry, exit);
+  using Check = rouleau::CapillaryPassageCheck;
+  auto verdict = [](bool met) { return met ? "met" : "NOT MET"; };
+  std::printf("driving pressure %.4f Pa at the start, peak %.4f Pa with the capsule at x = %.2f um, %.4f Pa at the end "
+              "(capsule at x = %.2f um)\n",
+              c.initial_pressure, c.peak_pressure, c.peak_position, c.final_pressure, c.final_position);
+  std::printf("check (the pressure rises while the capsule enters and plugs the capillary): rise %.1f %% >= %.0f %%, "
+              "peak within a diameter of the capillary: %s\n",
+              100.0 * (c.peak_pressure / c.initial_pressure - 1.0), 100.0 * Check::rise_fraction, verdict(c.rose));
+  std::printf("check (and falls after it leaves): capsule past x = %.2f um: %s; fallen by %.0f %% of the rise >= %.0f %%: "
+              "%s\n",
+              exit + 0.5 * c.free_length, c.left ? "yes" : "no",
+              c.peak_pressure > c.initial_pressure
+                  ? 100.0 * (c.peak_pressure - c.final_pressure) / (c.peak_pressure - c.initial_pressure)
+                  : 0.0,
+              100.0 * Check::fall_fraction, verdict(c.fell));
+  std::printf("check (inside, the capsule is longer than its free diameter): longest %.3f um > %.3f um: %s\n",
+              c.longest_inside, c.free_length, verdict(c.longer_inside));
   return 0;
 }

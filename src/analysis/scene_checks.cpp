@@ -52,6 +52,34 @@ int cells_past(const std::map<std::string, double>& row, int cells, double x) {
   return past;
 }
 
+CapillaryPassageCheck check_capillary_passage(const DiagnosticsRows& rows, double entry, double exit) {
+  if (rows.empty()) throw std::runtime_error("rouleau::check_capillary_passage: no diagnostics rows");
+  const std::vector<double> pressure = diagnostics_column(rows, "driving_pressure_Pa");
+  const std::vector<double> position = diagnostics_column(rows, "cell0_centroid_x_um");
+  const std::vector<double> length = diagnostics_column(rows, "cell0_extent_x_um");
+  CapillaryPassageCheck check;
+  check.initial_pressure = pressure.front();
+  check.final_pressure = pressure.back();
+  check.final_position = position.back();
+  check.free_length = length.front();
+  check.peak_pressure = pressure.front();
+  check.peak_position = position.front();
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (pressure[i] > check.peak_pressure) {
+      check.peak_pressure = pressure[i];
+      check.peak_position = position[i];
+    }
+    if (position[i] >= entry && position[i] <= exit) check.longest_inside = std::max(check.longest_inside, length[i]);
+  }
+  const double rise = check.peak_pressure - check.initial_pressure;
+  check.rose = rise >= CapillaryPassageCheck::rise_fraction * check.initial_pressure &&
+               check.peak_position >= entry - check.free_length && check.peak_position <= exit + check.free_length;
+  check.left = check.final_position > exit + 0.5 * check.free_length;
+  check.fell = check.left && check.peak_pressure - check.final_pressure >= CapillaryPassageCheck::fall_fraction * rise;
+  check.longer_inside = check.longest_inside > check.free_length;
+  return check;
+}
+
 StackMeasures measure_stack(const DiagnosticsRows& rows, int cells, int cells_per_stack, double zero_force_length) {
   if (rows.empty()) throw std::runtime_error("rouleau::measure_stack: no diagnostics rows");
   StackMeasures m;

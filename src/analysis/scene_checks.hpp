@@ -42,6 +42,33 @@ AggregationCheck check_aggregation(const DiagnosticsRows& rows, double zero_forc
 // `cells` cells have their centroid beyond `x` [μm] (the throat's exit) in `row`.
 int cells_past(const std::map<std::string, double>& row, int cells, double x);
 
+// A capsule squeezing through a capillary along x from `entry` to `exit` [μm] (Liu et
+// al. 2004, Figs. 16-17): "the pressure rises while the capsule enters and plugs the
+// capillary and falls after it leaves; inside, the capsule is longer than its free
+// diameter". Cell 0's centroid and x-extent, and driving_pressure_Pa, over the run.
+struct CapillaryPassageCheck {
+  double initial_pressure = 0.0;  // [Pa] first row (the capsule still in the inlet feeder)
+  double peak_pressure = 0.0;     // [Pa] largest over the run
+  double peak_position = 0.0;     // [μm] the capsule's centroid x at the peak
+  double final_pressure = 0.0;    // [Pa] last row
+  double final_position = 0.0;    // [μm] the capsule's centroid x, last row
+  double free_length = 0.0;       // [μm] x-extent in the first row (undeformed)
+  double longest_inside = 0.0;    // [μm] largest x-extent while the centroid is in [entry, exit]
+  // Thresholds: the pressure rises when the peak is at least rise_fraction above the
+  // initial pressure, with the capsule's centroid within a free diameter of the capillary;
+  // it falls when the capsule's centroid is past `exit` + half its free length and the
+  // pressure has come back by at least fall_fraction of the rise; longer when
+  // longest_inside > free_length.
+  static constexpr double rise_fraction = 0.1;
+  static constexpr double fall_fraction = 0.75;
+  bool rose = false;
+  bool left = false;
+  bool fell = false;
+  bool longer_inside = false;
+  bool met() const { return rose && left && fell && longer_inside; }
+};
+CapillaryPassageCheck check_capillary_passage(const DiagnosticsRows& rows, double entry, double exit);
+
 // Stacks of cells in simple shear (Liu et al. 2004, Figs. 7-12): columns of
 // `cells_per_stack` cells each, cells 0, 1, ... stacked along y in that order within a
 // column, columns one after the other; measured at the first and the last row. Neighbours

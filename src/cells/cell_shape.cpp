@@ -26,9 +26,14 @@ std::vector<ShearPlaneShape> shear_plane_shapes(const CellPopulation& population
     const auto& centroid = measures[c].centroid;
     const double slab = 0.6 * edge_sum[c] / std::max(1.0, edge_count[c]);
     double gxx = 0.0, gxy = 0.0, gyy = 0.0, largest = 0.0, smallest = HUGE_VAL;
+    double lowest[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, highest[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
     const int first = population.cell_first_node()[c], count = population.cell_node_count()[c];
     for (int n = first; n < first + count; ++n) {
       if (weight(n) <= 0.0) continue;  // not on the outer surface
+      for (int d = 0; d < 3; ++d) {
+        lowest[d] = std::min(lowest[d], x(n, d));
+        highest[d] = std::max(highest[d], x(n, d));
+      }
       const double rx = x(n, 0) - centroid[0], ry = x(n, 1) - centroid[1];
       gxx += weight(n) * rx * rx;
       gxy += weight(n) * rx * ry;
@@ -42,6 +47,7 @@ std::vector<ShearPlaneShape> shear_plane_shapes(const CellPopulation& population
     // The major axis of [[gxx, gxy], [gxy, gyy]] is at θ = ½ atan2(2 gxy, gxx − gyy).
     ShearPlaneShape& shape = shapes[c];
     shape.inclination_deg = 0.5 * std::atan2(2.0 * gxy, gxx - gyy) * 180.0 / M_PI;
+    for (int d = 0; d < 3; ++d) shape.extent[d] = highest[d] > lowest[d] ? highest[d] - lowest[d] : 0.0;
     if (largest > 0.0) {
       const double depth = membrane_depth.empty() ? 0.0 : membrane_depth.at(c);
       shape.length = largest - depth;

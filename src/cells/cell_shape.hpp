@@ -11,7 +11,9 @@
 //                a hollow shell, whose mid-surface is the thin membrane it stands for; the
 //                shell thins where it stretches, which this leaves out: for a 0.18 μm
 //                shell stretched 20 %, 0.015 μm of a 3 μm radius);
-//   D            the Taylor deformation (L − B) / (L + B).
+//   D            the Taylor deformation (L − B) / (L + B);
+// and, in 3D, the extent of the outer surface along x, y and z (its bounding box: a
+// capsule's length and width in a capillary along x).
 #include <vector>
 
 #include "cells/cell_population.hpp"
@@ -23,6 +25,7 @@ struct ShearPlaneShape {
   double length = 0.0;   // L [μm]
   double breadth = 0.0;  // B [μm]
   double taylor_deformation = 0.0;
+  double extent[3] = {0.0, 0.0, 0.0};  // [μm] max − min of the outer-surface nodes' x, y, z
 };
 
 // One entry per cell; `measures` are population.measures() at the same positions;

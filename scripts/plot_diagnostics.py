@@ -9,6 +9,8 @@ Writes PNG files into RUN_DIR/figures (or FOLDER) and prints their paths:
   gaps.png              two cells or more: each pair's gap and contact area against time
   cell_shapes.png       cells: inclination and Taylor deformation in the shear plane
   volumes.png           cells: each cell's volume relative to its first row
+  cell_extents.png      cells: the outer surface's extent along x, y and z (a capsule's
+                        length and width in a capillary along x)
   wall_stress.png       the wall shear stress and the relative apparent viscosity
   solver.png            Newton and GMRES iterations per row
   cross_sections.png    cells: the nodes within half a micrometre of a plane through the
@@ -120,6 +122,22 @@ def plot_cells(columns, folder, written):
     save(figure, folder, "volumes.png", written)
 
 
+def plot_extents(columns, folder, written):
+    cells = cell_count(columns)
+    if cells == 0 or "cell0_extent_x_um" not in columns:
+        return
+    time = columns["time_s"]
+    figure, axis = plt.subplots(figsize=(7, 4))
+    for c in range(min(cells, 12)):
+        for direction, style in (("x", "-"), ("y", "--"), ("z", ":")):
+            axis.plot(time, columns[f"cell{c}_extent_{direction}_um"], style, color=f"C{c % 10}",
+                      label=f"cell {c} along {direction}")
+    axis.set_ylabel("extent of the outer surface [μm]")
+    axis.set_xlabel("time [s]")
+    axis.legend(fontsize="small", ncol=3)
+    save(figure, folder, "cell_extents.png", written)
+
+
 def plot_walls(columns, folder, written):
     names = [n for n in ("wall_shear_stress_y_min_Pa", "wall_shear_stress_y_max_Pa", "mean_wall_shear_stress_Pa")
              if n in columns and any(math.isfinite(v) for v in columns[n])]
@@ -205,6 +223,7 @@ def main(argv):
     plot_vessel(columns, case, folder, written)
     plot_gaps(columns, folder, written)
     plot_cells(columns, folder, written)
+    plot_extents(columns, folder, written)
     plot_walls(columns, folder, written)
     plot_solver(columns, folder, written)
     plot_cross_sections(arguments.run_dir, arguments.plane, arguments.snapshots, folder, written)

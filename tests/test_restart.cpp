@@ -28,8 +28,8 @@ namespace {
 
 const std::string cases_dir = std::string(ROULEAU_SOURCE_DIR) + "/cases";
 
-// The reduced two-cell aggregation (semi-implicit, Morse on, coarse cells on a 12x12x10
-// box), 8.5e-5 s steps, one diagnostics row per step.
+// The reduced two-cell aggregation (semi-implicit, Morse on at five times the case's depth,
+// coarse cells on a 12x12x10 box), 8.5e-5 s steps, one diagnostics row per step.
 constexpr double aggregation_step_s = 8.5e-5;
 std::string end_after(int steps) {
   char text[64];
@@ -40,7 +40,8 @@ std::vector<std::string> reduced_aggregation_arguments(const std::string& out, i
   std::vector<std::string> arguments{"run", cases_dir + "/aggregation/case.toml", "--out", out, "--threads",
                                      std::to_string(threads), "--no-progress"};
   for (const char* setting : {"domain.elements=[12,12,10]", "cell_kinds.normal.resolution=coarse",
-                              "coupling.scheme=semi_implicit", "time.dt_s=8.5e-5", "output.diagnostics_every_steps=1"}) {
+                              "coupling.scheme=semi_implicit", "time.dt_s=8.5e-5", "output.diagnostics_every_steps=1",
+                              "interaction.strength_multiplier=25"}) {
     arguments.push_back("--set");
     arguments.push_back(setting);
   }

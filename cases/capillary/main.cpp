@@ -44,7 +44,11 @@ int main(int argc, char** argv) {
                   ? 100.0 * (c.peak_pressure - c.final_pressure) / (c.peak_pressure - c.initial_pressure)
                   : 0.0,
               100.0 * Check::fall_fraction, verdict(c.fell));
-  std::printf("check (inside, the capsule is longer than its free diameter): longest %.3f um > %.3f um: %s\n",
-              c.longest_inside, c.free_length, verdict(c.longer_inside));
+  if (c.longest_inside > 0.0)
+    std::printf("check (inside, the capsule is longer than its free diameter): longest %.3f um > %.3f um: %s\n",
+                c.longest_inside, c.free_length, verdict(c.longer_inside));
+  else
+    std::printf("check (inside, the capsule is longer than its free diameter): its centroid never entered the "
+                "capillary: NOT MET\n");
   return 0;
 }

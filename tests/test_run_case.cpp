@@ -204,6 +204,29 @@ TEST(RunCase, ContractionWritesTetrahedraAndTheDrivingPressure) {
   }
 }
 
+TEST(RunCase, CellsEnterTheContractionNormalAndSickle) {
+  // cases/contraction/cells.toml coarsened, three semi-implicit steps of the case's 1e-3 s:
+  // the three normal cells, and the sickle variant (ten times stiffer, five times
+  // stickier, whose explicit step would be 1.7e-5 s), run, move downstream and keep their
+  // volumes.
+  const std::string coarse = " --set vessel.element_size_um=3.0 --set vessel.wall_element_size_um=1.5"
+                             " --set time.end_s=0.003 --set output.fields=false --set output.diagnostics_every_steps=1";
+  for (const std::string variant : {std::string(), std::string(" --set 'cells=[{kind=\"sickle\", center_um=[9, 0, 0]}]'")}) {
+    const std::string out = fresh_output_dir(variant.empty() ? "contraction_normal" : "contraction_sickle");
+    const Outcome o = run_rouleau("run " + cases_dir + "/contraction/cells.toml --no-progress --out " + out + coarse +
+                                  variant);
+    ASSERT_EQ(o.exit_code, 0) << o.err;
+    const auto rows = rouleau::read_diagnostics(out + "/diagnostics.csv");
+    ASSERT_EQ(rows.size(), 3u);
+    const double start = variant.empty() ? 5.0 : 9.0;  // cell 0's centre in the case
+    std::printf("contraction (coarse) %s: cell 0 at x = %.4f um after 3 ms, largest volume change %.2e\n",
+                variant.empty() ? "normal cells" : "sickle cell", rows.back().at("cell0_centroid_x_um"),
+                rows.back().at("largest_relative_volume_change"));
+    EXPECT_GT(rows.back().at("cell0_centroid_x_um"), start + 0.01);
+    EXPECT_LT(rows.back().at("largest_relative_volume_change"), 1e-3);
+  }
+}
+
 TEST(RunCase, CapsuleEntersTheCapillaryCase) {
   // The capillary case with its capsule, coarsened, three semi-implicit steps: the run completes, the
   // capsule moves downstream, and the driving pressure is in the diagnostics.

@@ -311,7 +311,7 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
           if (options.progress) progress.finish();
           table.flush();
           std::cerr << "stopped by signal " << signal_number << " after step " << step << " (t = " << simulation.time()
-                    << " s); checkpoint " << checkpoints.last_path() << "\ncontinue with: rouleau run --restart "
+                    << " s); checkpoint " << checkpoints.last_path() << "\ncontinue with: " << options.continue_command << " "
                     << out << "\n";
           return static_cast<int>(ExitCode::interrupted);
         }
@@ -343,6 +343,7 @@ CaseDriverRun run_case_driver(int argc, char** argv, const std::string& default_
     return run;
   }
   run.options = run_options(command_line);
+  if (argc > 0) run.options.continue_command = std::string(argv[0]) + " --restart";
   run.status = run_reporting_errors(
       [&] {
         // The whole case is validated before Kokkos starts, as `rouleau run` does.

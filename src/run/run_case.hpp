@@ -18,6 +18,9 @@ struct RunOptions {
   bool progress = true;            // show the progress line
   // --restart: continue from this checkpoint (of a run in output_dir), or start afresh.
   std::shared_ptr<const FoundCheckpoint> restart;
+  // The command that continues a stopped run, given the output folder: a case driver's
+  // own program, so that its checks run at the end of the continued run too.
+  std::string continue_command = "rouleau run --restart";
 };
 
 // The run options a command line asks for (`rouleau run`, a case driver).

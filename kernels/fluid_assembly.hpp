@@ -175,6 +175,41 @@ struct FluidResidualFunctor {
   }
 };
 
+// R += the stabilization's share of the immersed nodal loads (fluid_element_load_stabilization):
+// `load` holds b (scaled, node-interleaved like the state, velocity entries read),
+// `lumped_mass` m per dof node, `frozen` the velocity for τ. An element none of whose
+// nodes carries a load adds nothing and is passed over (cells cover few elements).
+template <class Element, class Scatter>
+struct FluidLoadStabilizationFunctor {
+  FluidElementData data;
+  Kokkos::View<const double*> frozen, load, lumped_mass;
+  Scatter residual;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int e) const {
+    constexpr int n = Element::nodes;
+    double b[n][3];
+    detail::gather_nodal<Element, 3>(load, data, e, b);
+    bool loaded = false;
+    for (int a = 0; a < n; ++a)
+      for (int i = 0; i < 3; ++i) loaded = loaded || b[a][i] != 0.0;
+    if (!loaded) return;
+    double uf[n][3], density[n][3], r[n][4];
+    detail::gather_nodal<Element, 3>(frozen, data, e, uf);
+    for (int a = 0; a < n; ++a) {
+      const double inverse_mass = 1.0 / lumped_mass(data.element_dof_nodes(e, a));
+      for (int i = 0; i < 3; ++i) density[a][i] = b[a][i] * inverse_mass;
+      for (int c = 0; c < 4; ++c) r[a][c] = 0.0;
+    }
+    fluid_element_load_stabilization<Element>(data.coefficients, data.geometry, e, data.element_size(e), uf, density,
+                                              r);
+    auto out = residual.access();
+    for (int a = 0; a < n; ++a) {
+      const int base = 4 * data.element_dof_nodes(e, a);
+      for (int c = 0; c < 4; ++c) out(base + c) += r[a][c];
+    }
+  }
+};
+
 // Y += J(U) δ: the residual evaluated on U + εδ in dual numbers (τ frozen at U). The
 // sources matter: the SUPG weight u·∇N_a multiplies the strong residual, which holds them.
 template <class Element, class Scatter>

@@ -153,4 +153,53 @@ KOKKOS_INLINE_FUNCTION void fluid_element_residual(
   }
 }
 
+// The stabilization's share of the immersed nodal loads b (paper eq. 16). The loads enter
+// the Galerkin momentum rows as they are, R_ai −= b_ai (the exact transpose of RKPM
+// interpolation); their force density, interpolated from the nodes,
+//     f_h = Σ_b N_b b_b / m_b,      m_b = ∫ N_b dV (the lumped mass),
+// is the −f of the strong residual r that SUPG and PSPG weight, as a body force is:
+//     R_ai += −Re τ_M c (u·∇N_a) f_h,i          (SUPG)
+//     R_a4 += −τ_M ∇N_a · f_h                   (PSPG)
+// Without it, r holds the pressure gradient that balances a cell's membrane force but not
+// the force, and PSPG's term τ_M ∇N_a·∇p carries a Darcy-like flux τ_M ∇p (scaled)
+// through the membrane (tests/test_fluid_flows.cpp, a pressurized shell at rest).
+//   frozen(a, 0..2)  nodal velocity for τ_M and the SUPG weight (neither differentiated)
+//   density(a, 0..2) nodal force density b_a / m_a (scaled)
+template <class Element, class GeometryView>
+KOKKOS_INLINE_FUNCTION void fluid_element_load_stabilization(const FluidCoefficients& coef,
+                                                             const GeometryView& geometry, const int e,
+                                                             const double h, const double (&frozen)[Element::nodes][3],
+                                                             const double (&density)[Element::nodes][3],
+                                                             double (&residual)[Element::nodes][4]) {
+  constexpr int n = Element::nodes;
+  for (int q = 0; q < Element::quadrature_points; ++q) {
+    double xi[3];
+    Element::quadrature_point(q, xi);
+    double shape[n], grad[n][3];
+    for (int a = 0; a < n; ++a) {
+      shape[a] = Element::shape(a, xi);
+      double ref[3];
+      for (int k = 0; k < 3; ++k) ref[k] = Element::shape_gradient(a, k, xi);
+      for (int d = 0; d < 3; ++d)
+        grad[a][d] = ref[0] * geometry(e, q, d) + ref[1] * geometry(e, q, 3 + d) + ref[2] * geometry(e, q, 6 + d);
+    }
+    const double dv = geometry(e, q, 9);
+    double u[3] = {0, 0, 0}, f[3] = {0, 0, 0};
+    for (int a = 0; a < n; ++a)
+      for (int i = 0; i < 3; ++i) {
+        u[i] += shape[a] * frozen[a][i];
+        f[i] += shape[a] * density[a][i];
+      }
+    const double speed = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    const double tau_dv = stabilization_tau(coef, speed, h) * dv;
+    for (int a = 0; a < n; ++a) {
+      residual[a][3] -= tau_dv * (grad[a][0] * f[0] + grad[a][1] * f[1] + grad[a][2] * f[2]);
+      if (coef.convection) {
+        const double weight = coef.reynolds * tau_dv * (u[0] * grad[a][0] + u[1] * grad[a][1] + u[2] * grad[a][2]);
+        for (int i = 0; i < 3; ++i) residual[a][i] -= weight * f[i];
+      }
+    }
+  }
+}
+
 }  // namespace rouleau

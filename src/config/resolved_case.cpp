@@ -253,6 +253,8 @@ std::string resolved_case_toml(const CaseConfig& config, const DerivedQuantities
   toml_file.key("stable_step_factor", coupling.stable_step_factor);
   toml_file.key("allow_unstable_step", coupling.allow_unstable_step);
   toml_file.key("volume_tolerance", coupling.volume_tolerance);
+  toml_file.key("forces_in_stabilization", coupling.forces_in_stabilization,
+                "the spread forces' density in SUPG/PSPG's strong residual");
   toml_file.key("gravity_m_s2", std::array<double, 3>{in_file_units(coupling.gravity[0], 1e6),
                                                       in_file_units(coupling.gravity[1], 1e6),
                                                       in_file_units(coupling.gravity[2], 1e6)});

@@ -70,6 +70,7 @@ ImmersedCoupling::ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, c
   interpolated_ = NodeVectors("rouleau::ImmersedCoupling::interpolated", nodes);
   previous_velocities_ = NodeVectors("rouleau::ImmersedCoupling::previous_velocities", nodes);
   fluid_load_ = Kokkos::View<double*>("rouleau::ImmersedCoupling::fluid_load", fluid.fluid_operator().num_unknowns());
+  fluid_.set_immersed_forces_in_stabilization(config.coupling.forces_in_stabilization);
   if (interaction_) interaction_forces_ = NodeVectors("rouleau::ImmersedCoupling::interaction_forces", nodes);
   if (config.vessel.enabled && config.vessel.wall_repulsion_pressure > 0.0) {
     wall_ = std::make_unique<WallRepulsion>(config.vessel.profile, config.vessel.wall_repulsion_pressure,

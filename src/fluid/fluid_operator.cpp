@@ -28,6 +28,15 @@ void apply_dirichlet_rows(const Kokkos::View<int*>& dofs, const Kokkos::View<dou
         result(d) = residual_rows ? state(d) - values(i) : direction(d);
       });
 }
+
+// result −= load (an empty load is none).
+template <class ExecSpace>
+void subtract_nodal_load(const ConstVector& load, const Vector& result) {
+  if (load.extent(0) == 0) return;
+  Kokkos::parallel_for(
+      "rouleau::FluidOperator::nodal_load", Kokkos::RangePolicy<ExecSpace>(0, load.extent(0)),
+      KOKKOS_LAMBDA(const int i) { result(i) -= load(i); });
+}
 }  // namespace
 
 template <class ExecSpace>
@@ -115,18 +124,33 @@ void BasicFluidOperator<ExecSpace>::residual(const ConstVector& state, const Con
   ProfilingRegion region("rouleau::FluidOperator::residual");
   if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_);
   Scatter& scatter = zeroed_scatter(unknowns_scatter_, result.extent(0), "rouleau::FluidOperator::unknowns_scatter");
+  const bool stabilized_load = immersed_load_.extent(0) > 0 && immersed_load_in_stabilization_;
   visit_fluid_element(mesh_.element_type, [&](auto element) {
-    FluidResidualFunctor<decltype(element), Scatter> f{
-        element_data(), state, frozen, history_, body_force_, state_gradient_, scatter};
-    for_each_element("rouleau::FluidOperator::residual", f, scatter, result);
+    using Element = decltype(element);
+    FluidResidualFunctor<Element, Scatter> f{element_data(), state, frozen, history_, body_force_, state_gradient_,
+                                             scatter};
+    Kokkos::parallel_for("rouleau::FluidOperator::residual", Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
+    if (stabilized_load) {
+      FluidLoadStabilizationFunctor<Element, Scatter> g{element_data(), frozen, immersed_load_, lumped_mass_, scatter};
+      Kokkos::parallel_for("rouleau::FluidOperator::load_stabilization",
+                           Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), g);
+    }
+    gather_into(result, scatter);
   });
-  if (nodal_load_.extent(0) > 0) {
-    auto load = nodal_load_;
-    Kokkos::parallel_for(
-        "rouleau::FluidOperator::nodal_load", Kokkos::RangePolicy<ExecSpace>(0, num_unknowns_),
-        KOKKOS_LAMBDA(const int i) { result(i) -= load(i); });
-  }
+  subtract_nodal_load<ExecSpace>(nodal_load_, result);
+  subtract_nodal_load<ExecSpace>(immersed_load_, result);
   if (constrained_rows) apply_dirichlet_rows<ExecSpace>(dirichlet_dofs_, dirichlet_values_, state, state, true, result);
+}
+
+template <class ExecSpace>
+void BasicFluidOperator<ExecSpace>::load_stabilization(const ConstVector& frozen, const ConstVector& load,
+                                                       const Vector& result) const {
+  ProfilingRegion region("rouleau::FluidOperator::load_stabilization");
+  Scatter& scatter = zeroed_scatter(unknowns_scatter_, result.extent(0), "rouleau::FluidOperator::unknowns_scatter");
+  visit_fluid_element(mesh_.element_type, [&](auto element) {
+    FluidLoadStabilizationFunctor<decltype(element), Scatter> f{element_data(), frozen, load, lumped_mass_, scatter};
+    for_each_element("rouleau::FluidOperator::load_stabilization", f, scatter, result);
+  });
 }
 
 template <class ExecSpace>

@@ -5,9 +5,10 @@
 // jacobian_action    J(U)δ with τ frozen at U (exact, from dual numbers), Dirichlet rows δ_d
 // linear_action      Aδ for an affine residual (the Stokes limit): R without sources
 // diagonal_blocks    the 4×4 node blocks of J (for block Jacobi), Dirichlet rows identity
-// The constant nodal load b holds traction loads and spread forces (paper eq. 16: these
-// are nodal loads and do not enter the stabilization's strong residual). Quadrature
-// geometry is computed once, at construction: the mesh never moves.
+// The constant nodal load b holds traction loads and the immersed (spread) forces of
+// paper eq. 16. The immersed forces may also enter the stabilization's strong residual as
+// the force density they stand for (load_stabilization; kernels/fluid_element.hpp). Quadrature geometry is computed once, at construction: the mesh
+// never moves.
 #include <Kokkos_Core.hpp>
 #include <Kokkos_ScatterView.hpp>
 #include <vector>
@@ -41,8 +42,18 @@ class BasicFluidOperator {
   // Sets U_d = g_d on the constrained unknowns.
   void impose_dirichlet(const Vector& state) const;
 
-  // The constant nodal load b (scaled); an empty View means none.
+  // The constant nodal load b (scaled): traction loads; an empty View means none.
   void set_nodal_load(const Vector& load) { nodal_load_ = load; }
+  // The immersed forces' nodal loads (scaled, velocity entries), a second part of b; with
+  // `in_stabilization` their force density also enters SUPG/PSPG's strong residual.
+  void set_immersed_load(const ConstVector& load, bool in_stabilization) {
+    immersed_load_ = load;
+    immersed_load_in_stabilization_ = in_stabilization;
+  }
+  bool immersed_load_in_stabilization() const { return immersed_load_in_stabilization_; }
+  // result = the stabilization's share of nodal loads `load` (τ and the SUPG weight from
+  // `frozen`): the terms −Re τ c (u·∇N_a) f_h and −τ ∇N_a·f_h, f_h = Σ N_b b_b/m_b.
+  void load_stabilization(const ConstVector& frozen, const ConstVector& load, const Vector& result) const;
 
   // The sources of the residual: BDF history H and nodal body force f (scaled, node-
   // interleaved like the state; only the velocity entries are read). Empty = zero.
@@ -77,6 +88,8 @@ class BasicFluidOperator {
   // Geometry stored per quadrature point (scaled): [e][q][(J⁻¹)_kd, det J·w].
   const Kokkos::View<double***>& geometry() const { return geometry_; }
   const Kokkos::View<double*>& element_size() const { return element_size_; }
+  // The lumped mass m_a = Σ_e ∫ N_a dV per dof node (scaled).
+  const Kokkos::View<double*>& lumped_mass() const { return lumped_mass_; }
   double length_scale() const { return length_scale_; }
 
  private:
@@ -95,6 +108,8 @@ class BasicFluidOperator {
   Kokkos::View<int*> dirichlet_dofs_;
   Kokkos::View<double*> dirichlet_values_;
   Vector nodal_load_;
+  ConstVector immersed_load_;
+  bool immersed_load_in_stabilization_ = false;
   ConstVector history_, body_force_;
   // The elements grouped by colour (no two of a colour share a dof node), for a CRS
   // assembly without atomics: colored_elements_[color_offsets_[c], color_offsets_[c+1]).

@@ -236,28 +236,40 @@ double FluidSolver::kinetic_energy() const {
 }
 
 void FluidSolver::set_immersed_forces(const ConstVector& nodal_forces) {
-  if (nodal_load_.extent(0) == 0) {
-    nodal_load_ = Vector("rouleau::FluidSolver::nodal_load", state_.extent(0));
-    operator_.set_nodal_load(nodal_load_);
+  if (immersed_load_.extent(0) == 0) {
+    immersed_load_ = Vector("rouleau::FluidSolver::immersed_load", state_.extent(0));
+    operator_.set_immersed_load(immersed_load_, immersed_forces_in_stabilization_);
   }
-  // b = traction loads + F / (P L²), the forces in the residual's scale
-  const auto traction = boundary_.traction_load;
-  const auto load = nodal_load_;
+  // b = F / (P L²), the forces in the residual's scale
+  const auto load = immersed_load_;
   const double inverse_force_scale = 1.0 / scales_.force();
   Kokkos::parallel_for(
       "rouleau::FluidSolver::set_immersed_forces", Kokkos::RangePolicy<ExecSpace>(0, load.extent(0)),
-      KOKKOS_LAMBDA(const int i) { load(i) = traction(i) + inverse_force_scale * nodal_forces(i); });
+      KOKKOS_LAMBDA(const int i) { load(i) = inverse_force_scale * nodal_forces(i); });
+}
+
+void FluidSolver::set_immersed_forces_in_stabilization(bool in_stabilization) {
+  immersed_forces_in_stabilization_ = in_stabilization;
+  if (immersed_load_.extent(0) > 0) operator_.set_immersed_load(immersed_load_, in_stabilization);
 }
 
 void FluidSolver::set_immersed_stiffness(const LinearOperator* stiffness) {
   immersed_stiffness_ = stiffness;
-  if (stiffness && stiffness_action_.extent(0) == 0)
+  if (stiffness && stiffness_action_.extent(0) == 0) {
     stiffness_action_ = Vector("rouleau::FluidSolver::stiffness_action", state_.extent(0));
+    stiffness_stabilization_ = Vector("rouleau::FluidSolver::stiffness_stabilization", state_.extent(0));
+  }
 }
 
 void FluidSolver::add_immersed_stiffness(const ConstVector& x, const Vector& y, bool skip_constrained) const {
   if (!immersed_stiffness_) return;
   immersed_stiffness_->apply(x, stiffness_action_);
+  // Ŝx is minus the change of the immersed loads; that change enters the stabilization's
+  // strong residual as the loads do: Ŝx − P(Ŝx), P = FluidOperator::load_stabilization.
+  if (immersed_forces_in_stabilization_) {
+    operator_.load_stabilization(state_, stiffness_action_, stiffness_stabilization_);
+    KokkosBlas::axpy(-1.0, stiffness_stabilization_, stiffness_action_);
+  }
   if (skip_constrained) zero_rows(operator_.dirichlet_dofs(), stiffness_action_);
   KokkosBlas::axpy(1.0, stiffness_action_, y);
 }

@@ -53,14 +53,19 @@ class FluidSolver {
 
   // Nodal forces [pN] on the fluid's unknowns, node-interleaved like the state (velocity
   // entries read): the cells' forces spread by RKPM (paper eq. 16). They enter the
-  // momentum residual as nodal loads, not the stabilization's strong residual (DESIGN.md).
+  // momentum residual as nodal loads (the exact transpose of interpolation) and, when
+  // turned on, the stabilization's strong residual as the force density they stand for
+  // (FluidOperator::load_stabilization; without it PSPG drives a flux τ ∇p through cells).
   void set_immersed_forces(const ConstVector& nodal_forces);
+  void set_immersed_forces_in_stabilization(bool in_stabilization);
 
   // The semi-implicit coupling's linearized cell forces: an operator Ŝ on the scaled state
   // whose action Ŝ U enters the residual, R(U) = R_fluid(U) + Ŝ U, and so the Jacobian,
-  // J = J_fluid + Ŝ (zero on the constrained rows). ImmersedCoupling passes
-  // Ŝ U = −S K I (Δt U) / (P L²) (coupling/cell_stiffness.hpp); null turns it off. The
-  // operator must outlive its use; the preconditioner does not see it.
+  // J = J_fluid + Ŝ (zero on the constrained rows), with the stabilization's share
+  // −P(Ŝ U) of that change of the loads when the immersed forces are in the
+  // stabilization. ImmersedCoupling passes Ŝ U = −S K I (Δt U) / (P L²)
+  // (coupling/cell_stiffness.hpp); null turns it off. The operator must outlive its use;
+  // the preconditioner does not see it.
   void set_immersed_stiffness(const LinearOperator* stiffness);
 
   // Sets the velocity everywhere to velocity(x) [μm/s] at the nodes x [μm] (an initial
@@ -119,9 +124,10 @@ class FluidSolver {
   FluidBoundaryConditions boundary_;
   Vector state_, previous_state_, older_state_, history_, body_force_, correction_, blocks_;
   double density_;                 // ρ [pN·s²/μm⁴]
-  Vector nodal_load_;              // traction loads and immersed forces (scaled), when there are cells
+  Vector immersed_load_;           // the immersed forces (scaled), when there are cells
+  bool immersed_forces_in_stabilization_ = false;
   const LinearOperator* immersed_stiffness_ = nullptr;  // Ŝ of the semi-implicit coupling, or null
-  Vector stiffness_action_;        // Ŝ x (scratch)
+  Vector stiffness_action_, stiffness_stabilization_;  // Ŝ x and P(Ŝ x) (scratch)
   Vector residual_;  // also scratch for boundary_forces() (const)
   Vector state_gradient_;  // G(U) during a Krylov solve
   BlockJacobi block_jacobi_;

@@ -210,6 +210,52 @@ struct FluidLoadStabilizationFunctor {
   }
 };
 
+// The moments of PSPG's subscale velocity, M_ai = ∫ N_a τ_M r_i dV, r the strong momentum
+// residual of `state` (with the sources, and the immersed loads' force density when `load`
+// is not empty: FluidLoadStabilizationFunctor). Its lumped projection onto the nodes is
+// u'_a = −M_a / m_a. In the variational multiscale reading of SUPG/PSPG the fluid's
+// velocity is u_h + u', and the weak continuity equation, ∫ N_a ∇·u_h + τ_M ∇N_a·r = 0,
+// says that it is u_h + u', not u_h, whose flux is conserved: where a membrane's force
+// makes ∇p large, u' carries part of the flow through the membrane.
+template <class Element, class Scatter>
+struct FluidSubscaleFunctor {
+  FluidElementData data;
+  Kokkos::View<const double*> state, history, force, gradient, load, lumped_mass;
+  Scatter moments;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int e) const {
+    constexpr int n = Element::nodes;
+    double u[n][4], uf[n][3], h[n][3], f[n][3], r[n][4], m[n][3];
+    detail::gather_nodal<Element, 4>(state, data, e, u);
+    detail::gather_nodal<Element, 3>(state, data, e, uf);
+    detail::gather_nodal<Element, 3>(history, data, e, h);
+    detail::gather_nodal<Element, 3>(force, data, e, f);
+    for (int a = 0; a < n; ++a) {
+      for (int c = 0; c < 4; ++c) r[a][c] = 0.0;
+      for (int i = 0; i < 3; ++i) m[a][i] = 0.0;
+    }
+    double g[n * 9];
+    if (data.coefficients.viscous_reconstruction) detail::gather_gradient<Element, double>(gradient, {}, data, e, g);
+    fluid_element_residual<Element, double>(data.coefficients, data.geometry, e, data.element_size(e), u, uf, h, f, g,
+                                            r, m);
+    if (load.extent(0) > 0) {
+      double b[n][3];
+      detail::gather_nodal<Element, 3>(load, data, e, b);
+      for (int a = 0; a < n; ++a) {
+        const double inverse_mass = 1.0 / lumped_mass(data.element_dof_nodes(e, a));
+        for (int i = 0; i < 3; ++i) b[a][i] *= inverse_mass;
+      }
+      fluid_element_load_stabilization<Element>(data.coefficients, data.geometry, e, data.element_size(e), uf, b, r,
+                                                m);
+    }
+    auto out = moments.access();
+    for (int a = 0; a < n; ++a) {
+      const int base = 4 * data.element_dof_nodes(e, a);
+      for (int i = 0; i < 3; ++i) out(base + i) += m[a][i];
+    }
+  }
+};
+
 // Y += J(U) δ: the residual evaluated on U + εδ in dual numbers (τ frozen at U). The
 // sources matter: the SUPG weight u·∇N_a multiplies the strong residual, which holds them.
 template <class Element, class Scatter>

@@ -22,6 +22,7 @@
 // The time derivative is u_t = m u + H with m = α0/Δt and H the history part of BDF.
 #include <Kokkos_Core.hpp>
 #include <cmath>
+#include <type_traits>
 
 #include "kernels/dual.hpp"
 
@@ -62,12 +63,15 @@ inline constexpr int geometry_entries = 10;
 //   history(a, 0..2) nodal BDF history H;  force(a, 0..2) nodal body force f
 //   gradient         nodal projected velocity gradient G_a (9 per node, G_a[3i+j] = ∂_j u_i),
 //                    read when coef.viscous_reconstruction is on (else may be null)
+//   subscale         when not null (Scalar = double only): subscale[a][i] += ∫ N_a τ_M r_i dV,
+//                    the moments of PSPG's subscale velocity u' = −τ_M r (see
+//                    FluidSubscaleFunctor)
 template <class Element, class Scalar, class GeometryView>
 KOKKOS_INLINE_FUNCTION void fluid_element_residual(
     const FluidCoefficients& coef, const GeometryView& geometry, const int e, const double h,
     const Scalar (&state)[Element::nodes][4], const double (&frozen)[Element::nodes][3],
     const double (&history)[Element::nodes][3], const double (&force)[Element::nodes][3],
-    const Scalar* gradient, Scalar (&residual)[Element::nodes][4]) {
+    const Scalar* gradient, Scalar (&residual)[Element::nodes][4], double (*subscale)[3] = nullptr) {
   constexpr int n = Element::nodes;
   const double re = coef.reynolds;
   for (int q = 0; q < Element::quadrature_points; ++q) {
@@ -146,6 +150,10 @@ KOKKOS_INLINE_FUNCTION void fluid_element_residual(
       flux[3][i] = (dv * tau) * strong[i];
     }
     source[3] = dv * divergence;
+    if constexpr (std::is_same<Scalar, double>::value)
+      if (subscale)
+        for (int a = 0; a < n; ++a)
+          for (int i = 0; i < 3; ++i) subscale[a][i] += shape[a] * flux[3][i];
     for (int a = 0; a < n; ++a)
       for (int c = 0; c < 4; ++c)
         residual[a][c] += shape[a] * source[c] + grad[a][0] * flux[c][0] + grad[a][1] * flux[c][1] +
@@ -165,12 +173,13 @@ KOKKOS_INLINE_FUNCTION void fluid_element_residual(
 // through the membrane (tests/test_fluid_flows.cpp, a pressurized shell at rest).
 //   frozen(a, 0..2)  nodal velocity for τ_M and the SUPG weight (neither differentiated)
 //   density(a, 0..2) nodal force density b_a / m_a (scaled)
+//   subscale         when not null: subscale[a][i] += ∫ N_a τ_M (−f_h,i) dV, the loads' share
+//                    of the subscale velocity's moments (fluid_element_residual)
 template <class Element, class GeometryView>
-KOKKOS_INLINE_FUNCTION void fluid_element_load_stabilization(const FluidCoefficients& coef,
-                                                             const GeometryView& geometry, const int e,
-                                                             const double h, const double (&frozen)[Element::nodes][3],
-                                                             const double (&density)[Element::nodes][3],
-                                                             double (&residual)[Element::nodes][4]) {
+KOKKOS_INLINE_FUNCTION void fluid_element_load_stabilization(
+    const FluidCoefficients& coef, const GeometryView& geometry, const int e, const double h,
+    const double (&frozen)[Element::nodes][3], const double (&density)[Element::nodes][3],
+    double (&residual)[Element::nodes][4], double (*subscale)[3] = nullptr) {
   constexpr int n = Element::nodes;
   for (int q = 0; q < Element::quadrature_points; ++q) {
     double xi[3];
@@ -193,6 +202,8 @@ KOKKOS_INLINE_FUNCTION void fluid_element_load_stabilization(const FluidCoeffici
     const double speed = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
     const double tau_dv = stabilization_tau(coef, speed, h) * dv;
     for (int a = 0; a < n; ++a) {
+      if (subscale)
+        for (int i = 0; i < 3; ++i) subscale[a][i] -= shape[a] * tau_dv * f[i];
       residual[a][3] -= tau_dv * (grad[a][0] * f[0] + grad[a][1] * f[1] + grad[a][2] * f[2]);
       if (coef.convection) {
         const double weight = coef.reynolds * tau_dv * (u[0] * grad[a][0] + u[1] * grad[a][1] + u[2] * grad[a][2]);

@@ -199,16 +199,11 @@ struct ShellAtRest {
   }
 };
 
-// Solves the closed box with the shell's loads; returns the errors against rest.
-FluidErrors shell_at_rest_errors(int n, bool forces_in_stabilization, FluidElementType element) {
-  FluidMesh mesh = make_box_mesh({0, 0, 0}, {1, 1, 1}, {n, n, n}, {1, 1, 1}, {false, false, false});
-  if (element == FluidElementType::tetrahedron4) mesh = split_into_tetrahedra(mesh);
-  FluidSolver solver(mesh, unit_fluid(0.0), std::array<BoundaryConfig, 6>{}, tight_solver(), unit_scales(0.0), true);
-  solver.set_immersed_forces_in_stabilization(forces_in_stabilization);
-  const ShellAtRest shell;
+// Gives the solver the shell's force as immersed nodal loads F_J = m_J f(x_J).
+void load_shell(const FluidMesh& mesh, const ShellAtRest& shell, FluidSolver& solver) {
   auto coordinates = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
   auto mass = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), solver.fluid_operator().lumped_mass());
-  Kokkos::View<double*> loads("loads", mesh.num_unknowns());
+  Kokkos::View<double*> loads("rouleau::test::shell_loads", mesh.num_unknowns());
   auto host = Kokkos::create_mirror_view(loads);
   for (int node = 0; node < mesh.num_nodes; ++node) {
     const double x[3] = {coordinates(node, 0), coordinates(node, 1), coordinates(node, 2)};
@@ -218,6 +213,16 @@ FluidErrors shell_at_rest_errors(int n, bool forces_in_stabilization, FluidEleme
   }
   Kokkos::deep_copy(loads, host);
   solver.set_immersed_forces(loads);
+}
+
+// Solves the closed box with the shell's loads; returns the errors against rest.
+FluidErrors shell_at_rest_errors(int n, bool forces_in_stabilization, FluidElementType element) {
+  FluidMesh mesh = make_box_mesh({0, 0, 0}, {1, 1, 1}, {n, n, n}, {1, 1, 1}, {false, false, false});
+  if (element == FluidElementType::tetrahedron4) mesh = split_into_tetrahedra(mesh);
+  FluidSolver solver(mesh, unit_fluid(0.0), std::array<BoundaryConfig, 6>{}, tight_solver(), unit_scales(0.0), true);
+  solver.set_immersed_forces_in_stabilization(forces_in_stabilization);
+  const ShellAtRest shell;
+  load_shell(mesh, shell, solver);
   const FluidSolveReport report = solver.solve_steady();
   EXPECT_TRUE(report.converged) << report.failure;
   return fluid_l2_errors(solver.fluid_operator(), solver.state(), shell);
@@ -249,6 +254,81 @@ TEST(FluidFlows, ImmersedLoadsInTheStabilizationKeepAPressurizedShellAtRest) {
     std::printf("shell at rest, %s: spurious velocity falls at order %.2f with the loads in the stabilization, "
                 "%.2f without\n", name, order, order_without);
     EXPECT_GT(order, order_without + 0.4);
+  }
+}
+
+// The flux of a nodal velocity field (4 entries per dof node, scaled) on the uniform
+// n³ box mesh of the unit cube through the sphere of radius `radius` about the box's
+// centre, its trilinear interpolant integrated by a product rule in (cos θ, φ).
+double flux_through_sphere(const FluidMesh& mesh, int n, const Kokkos::View<double*>& field, double radius) {
+  auto coordinates = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
+  auto values = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), field);
+  std::vector<std::array<double, 3>> grid((n + 1) * (n + 1) * (n + 1));
+  const auto at = [n](int i, int j, int k) { return (k * (n + 1) + j) * (n + 1) + i; };
+  for (int node = 0; node < mesh.num_nodes; ++node) {
+    const int i = static_cast<int>(std::lround(coordinates(node, 0) * n));
+    const int j = static_cast<int>(std::lround(coordinates(node, 1) * n));
+    const int k = static_cast<int>(std::lround(coordinates(node, 2) * n));
+    const int dof = mesh.dof_node_of_node[node];
+    grid[at(i, j, k)] = {values(4 * dof), values(4 * dof + 1), values(4 * dof + 2)};
+  }
+  const int polar = 96, azimuthal = 192;
+  double flux = 0.0;
+  for (int a = 0; a < polar; ++a) {
+    const double mu = -1.0 + (a + 0.5) * 2.0 / polar, sine = std::sqrt(1.0 - mu * mu);
+    for (int b = 0; b < azimuthal; ++b) {
+      const double phi = (b + 0.5) * 2.0 * M_PI / azimuthal;
+      const double normal[3] = {sine * std::cos(phi), sine * std::sin(phi), mu};
+      double x[3], u[3] = {0, 0, 0};
+      int cell[3];
+      double t[3];
+      for (int d = 0; d < 3; ++d) {
+        x[d] = ShellAtRest::centre + radius * normal[d];
+        cell[d] = std::min(n - 1, static_cast<int>(x[d] * n));
+        t[d] = x[d] * n - cell[d];
+      }
+      for (int corner = 0; corner < 8; ++corner) {
+        const int di = corner & 1, dj = (corner >> 1) & 1, dk = (corner >> 2) & 1;
+        const double w = (di ? t[0] : 1 - t[0]) * (dj ? t[1] : 1 - t[1]) * (dk ? t[2] : 1 - t[2]);
+        const auto& value = grid[at(cell[0] + di, cell[1] + dj, cell[2] + dk)];
+        for (int d = 0; d < 3; ++d) u[d] += w * value[d];
+      }
+      flux += (u[0] * normal[0] + u[1] * normal[1] + u[2] * normal[2]) * radius * radius * (2.0 / polar) *
+              (2.0 * M_PI / azimuthal);
+    }
+  }
+  return flux;
+}
+
+TEST(FluidFlows, SubscaleVelocityCarriesTheFluxThatSeepsThroughAPressurizedShell) {
+  // The pressurized shell at rest with its loads as nodal loads only (the Galerkin part):
+  // PSPG's flux u' = −τ_M r = −τ_M ∇p points outwards through the shell, and the weak
+  // continuity equation makes u_h carry the same flux back in, so a membrane moving with
+  // u_h would shrink. The whole velocity u_h + u' (FluidSolver::total_velocity, what the
+  // cells move with under coupling.subscale_velocity) has a small fraction of that flux.
+  for (const int n : {16, 24}) {
+    const FluidMesh mesh = make_box_mesh({0, 0, 0}, {1, 1, 1}, {n, n, n}, {1, 1, 1}, {false, false, false});
+    FluidSolver solver(mesh, unit_fluid(0.0), std::array<BoundaryConfig, 6>{}, tight_solver(), unit_scales(0.0), true);
+    const ShellAtRest shell;
+    load_shell(mesh, shell, solver);
+    const FluidSolveReport report = solver.solve_steady();
+    ASSERT_TRUE(report.converged) << report.failure;
+    Kokkos::View<double*> total("total", mesh.num_unknowns());
+    solver.total_velocity(total);
+    Kokkos::View<double*> resolved("resolved", mesh.num_unknowns());
+    Kokkos::deep_copy(resolved, solver.state());
+    for (const double radius : {shell.radius - shell.width, shell.radius, shell.radius + shell.width}) {
+      const double seepage = flux_through_sphere(mesh, n, resolved, radius);
+      const double whole = flux_through_sphere(mesh, n, total, radius);
+      // against the flux scale of the spurious flow, τ ∇p over the sphere: (h²/4)(P0/w) 4πR²
+      const double h = 1.0 / n, scale = h * h / 4.0 * shell.jump / shell.width * 4.0 * M_PI * radius * radius;
+      std::printf("shell at rest, n = %d, r = %.2f: flux of u_h %.3e, of u_h + u' %.3e (%.1f %% of it; scale %.2e)\n",
+                  n, radius, seepage, whole, 100.0 * std::fabs(whole / seepage), scale);
+      EXPECT_LT(seepage, -0.05 * scale);  // u_h carries plasma into the shell
+      // Measured: 2-23 % (the most at r = R, where u' is sharpest and its lumped projection
+      // smears it; 16 % at n = 24).
+      EXPECT_LT(std::fabs(whole), 0.25 * std::fabs(seepage));
+    }
   }
 }
 

@@ -237,6 +237,12 @@ struct CouplingConfig {
   // and the explicit coupling stays stable at ten times its step estimate in the reduced
   // aggregation. Off by default until the scenes are recalibrated with it on.
   bool forces_in_stabilization = false;   // key forces_in_stabilization
+  // The cells move with the fluid's whole velocity u_h + u', u' = −τ_M r PSPG's subscale
+  // velocity projected onto the nodes (FluidOperator::subscale_velocity), instead of u_h:
+  // the weak continuity equation conserves the flux of u_h + u', so plasma no longer
+  // seeps through cells where their membrane force makes ∇p large (a cell plugging a
+  // throat: 60-90 % of the flow passed it in u' alone).   key subscale_velocity
+  bool subscale_velocity = false;
 };
 
 // What the scene builds and runs (DESIGN.md, "skip what a scene doesn't need").

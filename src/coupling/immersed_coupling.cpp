@@ -71,6 +71,9 @@ ImmersedCoupling::ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, c
   previous_velocities_ = NodeVectors("rouleau::ImmersedCoupling::previous_velocities", nodes);
   fluid_load_ = Kokkos::View<double*>("rouleau::ImmersedCoupling::fluid_load", fluid.fluid_operator().num_unknowns());
   fluid_.set_immersed_forces_in_stabilization(config.coupling.forces_in_stabilization);
+  if (config.coupling.subscale_velocity)
+    total_velocity_ =
+        Kokkos::View<double*>("rouleau::ImmersedCoupling::total_velocity", fluid.fluid_operator().num_unknowns());
   if (interaction_) interaction_forces_ = NodeVectors("rouleau::ImmersedCoupling::interaction_forces", nodes);
   if (config.vessel.enabled && config.vessel.wall_repulsion_pressure > 0.0) {
     wall_ = std::make_unique<WallRepulsion>(config.vessel.profile, config.vessel.wall_repulsion_pressure,
@@ -167,10 +170,16 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
   report.fluid = times.time(fluid_stage, [&] { return fluid_.advance(dt, scheme); });
   if (stiffness_) fluid_.set_immersed_stiffness(nullptr);
   if (!report.fluid.converged) return report;
+  // The velocity the cells move with: u_h, or u_h + u' (coupling.subscale_velocity).
+  Kokkos::View<const double*> cell_carrier = fluid_.state();
+  if (total_velocity_.extent(0) > 0) {
+    times.time(interpolate_stage, [&] { fluid_.total_velocity(total_velocity_); });
+    cell_carrier = total_velocity_;
+  }
   // The semi-implicit step's forces f^n + K Δt I u^{n+1}, spread as the fluid felt them.
   if (stiffness_)
     times.time(stiffness_stage, [&] {
-      stiffness_->force_change(fluid_.state(), force_change_);
+      stiffness_->force_change(cell_carrier, force_change_);
       add_node_vectors(fsi_forces_, force_change_);
       Kokkos::deep_copy(fluid_load_, 0.0);
       rkpm_.spread(fsi_forces_, fluid_load_, fluid_unknowns_per_node);
@@ -178,7 +187,7 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
     });
   // 4. interpolate
   times.time(interpolate_stage,
-             [&] { rkpm_.interpolate(fluid_.state(), fluid_unknowns_per_node, interpolated_); });
+             [&] { rkpm_.interpolate(cell_carrier, fluid_unknowns_per_node, interpolated_); });
   // 5. move
   double largest_speed2 = 0.0;
   times.time(move_stage, [&] {

@@ -90,6 +90,9 @@ class ImmersedCoupling {
   NodeVectors interaction_forces_, wall_forces_, fsi_forces_;
   NodeVectors interpolated_;               // v̂_I, the scaled fluid velocity at the nodes
   Kokkos::View<double*> fluid_load_;       // the spread forces on the fluid's unknowns [pN]
+  // With coupling.subscale_velocity: the fluid's whole velocity u_h + u' (scaled, like the
+  // fluid's state), which the cells move with; empty otherwise (they move with u_h).
+  Kokkos::View<double*> total_velocity_;
   std::unique_ptr<CellStiffness> stiffness_;  // the semi-implicit coupling's K, or null
   NodeVectors stiffness_scratch_;           // interaction or wall forces while K is differenced
   NodeVectors force_change_;                // K Δt I u^{n+1} [pN] of the semi-implicit step

@@ -143,6 +143,28 @@ void BasicFluidOperator<ExecSpace>::residual(const ConstVector& state, const Con
 }
 
 template <class ExecSpace>
+void BasicFluidOperator<ExecSpace>::subscale_velocity(const ConstVector& state, const Vector& result) const {
+  ProfilingRegion region("rouleau::FluidOperator::subscale_velocity");
+  if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_);
+  Scatter& scatter = zeroed_scatter(unknowns_scatter_, result.extent(0), "rouleau::FluidOperator::unknowns_scatter");
+  const ConstVector load = immersed_load_in_stabilization_ ? immersed_load_ : ConstVector();
+  visit_fluid_element(mesh_.element_type, [&](auto element) {
+    FluidSubscaleFunctor<decltype(element), Scatter> f{
+        element_data(), state, history_, body_force_, state_gradient_, load, lumped_mass_, scatter};
+    for_each_element("rouleau::FluidOperator::subscale_velocity", f, scatter, result);
+  });
+  // u'_a = −M_a / m_a on the velocity entries; none on the pressure and Dirichlet entries
+  auto mass = lumped_mass_;
+  Kokkos::parallel_for(
+      "rouleau::FluidOperator::subscale_velocity::divide", Kokkos::RangePolicy<ExecSpace>(0, result.extent(0)),
+      KOKKOS_LAMBDA(const int k) { result(k) = k % 4 == 3 ? 0.0 : -result(k) / mass(k / 4); });
+  auto dofs = dirichlet_dofs_;
+  Kokkos::parallel_for(
+      "rouleau::FluidOperator::subscale_velocity::dirichlet", Kokkos::RangePolicy<ExecSpace>(0, dofs.extent(0)),
+      KOKKOS_LAMBDA(const int i) { result(dofs(i)) = 0.0; });
+}
+
+template <class ExecSpace>
 void BasicFluidOperator<ExecSpace>::load_stabilization(const ConstVector& frozen, const ConstVector& load,
                                                        const Vector& result) const {
   ProfilingRegion region("rouleau::FluidOperator::load_stabilization");

@@ -54,6 +54,10 @@ class BasicFluidOperator {
   // result = the stabilization's share of nodal loads `load` (τ and the SUPG weight from
   // `frozen`): the terms −Re τ c (u·∇N_a) f_h and −τ ∇N_a·f_h, f_h = Σ N_b b_b/m_b.
   void load_stabilization(const ConstVector& frozen, const ConstVector& load, const Vector& result) const;
+  // result = PSPG's subscale velocity of `state` projected onto the nodes (scaled, velocity
+  // entries; pressure entries and Dirichlet velocity entries 0): u'_a = −(1/m_a) ∫ N_a τ_M r,
+  // r the strong momentum residual with the current sources (FluidSubscaleFunctor).
+  void subscale_velocity(const ConstVector& state, const Vector& result) const;
 
   // The sources of the residual: BDF history H and nodal body force f (scaled, node-
   // interleaved like the state; only the velocity entries are read). Empty = zero.

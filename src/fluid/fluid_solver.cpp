@@ -248,6 +248,11 @@ void FluidSolver::set_immersed_forces(const ConstVector& nodal_forces) {
       KOKKOS_LAMBDA(const int i) { load(i) = inverse_force_scale * nodal_forces(i); });
 }
 
+void FluidSolver::total_velocity(const Vector& out) const {
+  operator_.subscale_velocity(state_, out);
+  KokkosBlas::axpy(1.0, state_, out);
+}
+
 void FluidSolver::set_immersed_forces_in_stabilization(bool in_stabilization) {
   immersed_forces_in_stabilization_ = in_stabilization;
   if (immersed_load_.extent(0) > 0) operator_.set_immersed_load(immersed_load_, in_stabilization);

@@ -80,6 +80,10 @@ class FluidSolver {
   // consistent nodal reactions: the residual at the constrained nodes before the
   // constraint rows (one residual evaluation for all sides).
   std::vector<std::array<double, 3>> boundary_forces(const std::vector<std::string>& sides) const;
+  // The fluid's whole velocity u_h + u' (scaled, node-interleaved like the state; the
+  // pressure entries are the state's): u' = −τ_M r, PSPG's subscale velocity at the
+  // current state, projected onto the nodes (FluidOperator::subscale_velocity).
+  void total_velocity(const Vector& out) const;
   // Volume average of the velocity [μm/s].
   std::array<double, 3> mean_velocity() const;
   // Kinetic energy of the fluid ½ ρ ∫ |u|² dV [pN·μm].

@@ -80,6 +80,32 @@ std::map<std::string, double> capsule_row(double x, double length, double pressu
   return {{"cell0_centroid_x_um", x}, {"cell0_extent_x_um", length}, {"driving_pressure_Pa", pressure}};
 }
 
+TEST(SceneChecks, ContractionPassageWantsNormalCellsThroughAndSickleCellsHeld) {
+  // Two cells and a throat whose exit is at x = 40 um, three rows 1 s apart: cell 0 passes
+  // at 2 s, cell 1 stops at the entrance (x = 29).
+  DiagnosticsRows rows;
+  const double x0[3] = {20, 35, 45}, x1[3] = {10, 25, 29};
+  for (int r = 0; r < 3; ++r)
+    rows.push_back({{"time_s", double(r)}, {"cell0_centroid_x_um", x0[r]}, {"cell1_centroid_x_um", x1[r]}});
+  const auto normal = rouleau::check_contraction_passage(rows, {"normal", "normal"}, 40.0);
+  EXPECT_TRUE(normal.passed[0]);
+  EXPECT_FALSE(normal.passed[1]);
+  EXPECT_DOUBLE_EQ(normal.passage_time[0], 2.0);
+  EXPECT_DOUBLE_EQ(normal.passage_time[1], -1.0);
+  EXPECT_DOUBLE_EQ(normal.final_position[1], 29.0);
+  EXPECT_DOUBLE_EQ(normal.end_time, 2.0);
+  EXPECT_FALSE(normal.met());  // a normal cell held at the entrance
+  // The held cell a sickle cell: the statement holds; the passing one a sickle cell: not.
+  EXPECT_TRUE(rouleau::check_contraction_passage(rows, {"normal", "sickle"}, 40.0).met());
+  const auto wrong = rouleau::check_contraction_passage(rows, {"sickle", "sickle"}, 40.0);
+  EXPECT_FALSE(wrong.sickle_cells_blocked);
+  EXPECT_TRUE(wrong.normal_cells_passed);  // there are none
+  EXPECT_FALSE(wrong.met());
+  // The same cells with the exit at 50 um: nobody has passed.
+  EXPECT_TRUE(rouleau::check_contraction_passage(rows, {"sickle", "sickle"}, 50.0).met());
+  EXPECT_FALSE(rouleau::check_contraction_passage(rows, {"normal"}, 50.0).met());
+}
+
 TEST(SceneChecks, CapillaryPassageRisesPlugsStretchesAndFalls) {
   // A capillary from x = 20 to 40 um; a capsule of free length 6 um.
   const DiagnosticsRows passage{capsule_row(7, 6.0, 1.6), capsule_row(18, 6.4, 2.5), capsule_row(30, 9.0, 4.0),

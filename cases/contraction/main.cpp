@@ -2,10 +2,13 @@
 // cases/contraction/case.toml (or the file given: cells.toml for the cells) and sets the
 // driving pressure against Hagen–Poiseuille's drop summed over the cross-sections,
 // (8 μ Q / π) ∫ dx / R(x)⁴, and the outflow against the inflow; with cells, it prints how
-// many have passed the throat over time with the driving pressure.
+// many have passed the throat over time with the driving pressure, and the paper's
+// statement: normal cells pass the throat, sickle cells do not (check_contraction_passage).
 //   case_contraction [CASE.toml] [--out DIR] [--set KEY=VALUE]... (the options of `rouleau run`)
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "analysis/scene_checks.hpp"
 #include "geometry/vessel_profile.hpp"
@@ -28,6 +31,18 @@ int main(int argc, char** argv) {
     for (const auto& row : rows)
       std::printf("%10.4f %12d %12.5f\n", row.at("time_s"), rouleau::cells_past(row, cells, throat_exit),
                   row.at("driving_pressure_Pa"));
+    // The paper's statement (Figs. 13-15): normal cells pass, sickle cells block the entrance.
+    std::vector<std::string> kinds;
+    for (const auto& cell : run.config.cells) kinds.push_back(cell.kind);
+    const auto passage = rouleau::check_contraction_passage(rows, kinds, throat_exit);
+    for (int c = 0; c < cells; ++c)
+      std::printf("cell %d (%s): centroid at x = %.2f um at t = %.3f s; %s\n", c, kinds[c].c_str(),
+                  passage.final_position[c], passage.end_time,
+                  passage.passed[c] ? ("past the throat's exit since t = " +
+                                       std::to_string(passage.passage_time[c]) + " s").c_str()
+                                    : "not past the throat's exit");
+    std::printf("check (normal cells pass the throat): %s; (sickle cells do not, in the same time): %s\n",
+                passage.normal_cells_passed ? "met" : "NOT MET", passage.sickle_cells_blocked ? "met" : "NOT MET");
   }
   const auto& last = rows.back();
   const double inflow = last.at("flow_rate_inlet_um3_s"), outflow = last.at("flow_rate_outlet_um3_s");

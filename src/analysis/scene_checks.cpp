@@ -52,6 +52,27 @@ int cells_past(const std::map<std::string, double>& row, int cells, double x) {
   return past;
 }
 
+ContractionPassageCheck check_contraction_passage(const DiagnosticsRows& rows, const std::vector<std::string>& kinds,
+                                                  double throat_exit) {
+  if (rows.empty()) throw std::runtime_error("rouleau::check_contraction_passage: no diagnostics rows");
+  ContractionPassageCheck check;
+  const int cells = static_cast<int>(kinds.size());
+  check.passage_time.assign(cells, -1.0);
+  check.end_time = diagnostics_value(rows.back(), "time_s");
+  for (int c = 0; c < cells; ++c) {
+    const std::vector<double> x = diagnostics_column(rows, "cell" + std::to_string(c) + "_centroid_x_um");
+    for (std::size_t r = 0; r < rows.size() && check.passage_time[c] < 0.0; ++r)
+      if (x[r] > throat_exit) check.passage_time[c] = diagnostics_value(rows[r], "time_s");
+    check.final_position.push_back(x.back());
+    check.passed.push_back(x.back() > throat_exit);
+    if (kinds[c] == "sickle")
+      check.sickle_cells_blocked = check.sickle_cells_blocked && !check.passed.back();
+    else
+      check.normal_cells_passed = check.normal_cells_passed && check.passed.back();
+  }
+  return check;
+}
+
 CapillaryPassageCheck check_capillary_passage(const DiagnosticsRows& rows, double entry, double exit) {
   if (rows.empty()) throw std::runtime_error("rouleau::check_capillary_passage: no diagnostics rows");
   const std::vector<double> pressure = diagnostics_column(rows, "driving_pressure_Pa");

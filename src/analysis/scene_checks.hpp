@@ -42,6 +42,22 @@ AggregationCheck check_aggregation(const DiagnosticsRows& rows, double zero_forc
 // `cells` cells have their centroid beyond `x` [μm] (the throat's exit) in `row`.
 int cells_past(const std::map<std::string, double>& row, int cells, double x);
 
+// Cells through a contraction (Liu et al. 2004, Figs. 13-15): "normal cells pass; sickle
+// cells (crescents, stiffer, stickier) block the entrance", within the run's time. A cell
+// has passed when its centroid is beyond the throat's exit at x = `throat_exit` [μm] at
+// the last row; `kinds` names each cell's kind ("sickle" must not pass, any other must).
+struct ContractionPassageCheck {
+  std::vector<bool> passed;          // per cell, at the last row
+  std::vector<double> passage_time;  // [s] per cell, the first row with it past the exit; −1: never
+  std::vector<double> final_position;  // [μm] per cell, its centroid's x at the last row
+  double end_time = 0.0;             // [s]
+  bool normal_cells_passed = true;   // every cell not of kind "sickle" passed (true when none)
+  bool sickle_cells_blocked = true;  // no "sickle" cell passed (true when none)
+  bool met() const { return normal_cells_passed && sickle_cells_blocked; }
+};
+ContractionPassageCheck check_contraction_passage(const DiagnosticsRows& rows, const std::vector<std::string>& kinds,
+                                                  double throat_exit);
+
 // A capsule squeezing through a capillary along x from `entry` to `exit` [μm] (Liu et
 // al. 2004, Figs. 16-17): "the pressure rises while the capsule enters and plugs the
 // capillary and falls after it leaves; inside, the capsule is longer than its free

@@ -205,12 +205,13 @@ TEST(RunCase, ContractionWritesTetrahedraAndTheDrivingPressure) {
 }
 
 TEST(RunCase, CellsEnterTheContractionNormalAndSickle) {
-  // cases/contraction/cells.toml coarsened, three semi-implicit steps of the case's 1e-3 s:
+  // cases/contraction/cells.toml coarsened, three semi-implicit steps of 1e-3 s (twice the case's):
   // the three normal cells, and the sickle variant (ten times stiffer, five times
   // stickier, whose explicit step would be 1.7e-5 s), run, move downstream and keep their
   // volumes.
   const std::string coarse = " --set vessel.element_size_um=3.0 --set vessel.wall_element_size_um=1.5"
-                             " --set time.end_s=0.003 --set output.fields=false --set output.diagnostics_every_steps=1";
+                             " --set time.dt_s=1e-3 --set time.end_s=0.003 --set output.fields=false"
+                             " --set output.diagnostics_every_steps=1";
   for (const std::string variant : {std::string(), std::string(" --set 'cells=[{kind=\"sickle\", center_um=[9, 0, 0]}]'")}) {
     const std::string out = fresh_output_dir(variant.empty() ? "contraction_normal" : "contraction_sickle");
     const Outcome o = run_rouleau("run " + cases_dir + "/contraction/cells.toml --no-progress --out " + out + coarse +
@@ -228,12 +229,13 @@ TEST(RunCase, CellsEnterTheContractionNormalAndSickle) {
 }
 
 TEST(RunCase, CapsuleEntersTheCapillaryCase) {
-  // The capillary case with its capsule, coarsened, three semi-implicit steps: the run completes, the
+  // The capillary case with its capsule, coarsened, three semi-implicit steps of 1e-3 s (twice the
+  // case's): the run completes, the
   // capsule moves downstream, and the driving pressure is in the diagnostics.
   const std::string out = fresh_output_dir("capillary");
   const Outcome o = run_rouleau("run " + cases_dir + "/capillary/case.toml --no-progress --out " + out +
                                 " --set vessel.element_size_um=3.0 --set vessel.wall_element_size_um=1.5"
-                                " --set time.end_s=0.003");
+                                " --set time.dt_s=1e-3 --set time.end_s=0.003");
   ASSERT_EQ(o.exit_code, 0) << o.err;
   const auto row = rouleau::read_last_diagnostics(out + "/diagnostics.csv");
   std::printf("capillary (coarse), 3 steps: capsule centroid x %.5f um, driving pressure %.4f Pa\n",

@@ -33,6 +33,17 @@ KOKKOS_INLINE_FUNCTION void gather_nodal(const Kokkos::View<const double*>& fiel
     for (int c = 0; c < Count; ++c) out[a][c] = present ? field(base + c) : 0.0;
   }
 }
+// Adds values c0..c0+Count−1 per node of element e into the node-interleaved scatter
+// target (4 entries per dof node).
+template <class Element, int Count, class Scatter>
+KOKKOS_INLINE_FUNCTION void scatter_nodal(const Scatter& target, const FluidElementData& d, int e,
+                                          const double (&values)[Element::nodes][Count]) {
+  auto out = target.access();
+  for (int a = 0; a < Element::nodes; ++a) {
+    const int base = 4 * d.element_dof_nodes(e, a);
+    for (int c = 0; c < Count; ++c) out(base + c) += values[a][c];
+  }
+}
 // The 9 projected gradient entries of each of element e's nodes, as Scalar; the
 // derivative part (when Scalar is Dual<1>) from `direction_gradient` if it is not empty.
 template <class Element, class Scalar>
@@ -167,11 +178,7 @@ struct FluidResidualFunctor {
     if (data.coefficients.viscous_reconstruction) detail::gather_gradient<Element, double>(gradient, {}, data, e, g);
     fluid_element_residual<Element, double>(data.coefficients, data.geometry, e, data.element_size(e), u, uf, h, f, g,
                                             r);
-    auto out = residual.access();
-    for (int a = 0; a < n; ++a) {
-      const int base = 4 * data.element_dof_nodes(e, a);
-      for (int c = 0; c < 4; ++c) out(base + c) += r[a][c];
-    }
+    detail::scatter_nodal<Element, 4>(residual, data, e, r);
   }
 };
 
@@ -202,11 +209,7 @@ struct FluidLoadStabilizationFunctor {
     }
     fluid_element_load_stabilization<Element>(data.coefficients, data.geometry, e, data.element_size(e), uf, density,
                                               r);
-    auto out = residual.access();
-    for (int a = 0; a < n; ++a) {
-      const int base = 4 * data.element_dof_nodes(e, a);
-      for (int c = 0; c < 4; ++c) out(base + c) += r[a][c];
-    }
+    detail::scatter_nodal<Element, 4>(residual, data, e, r);
   }
 };
 
@@ -248,11 +251,7 @@ struct FluidSubscaleFunctor {
       fluid_element_load_stabilization<Element>(data.coefficients, data.geometry, e, data.element_size(e), uf, b, r,
                                                 m);
     }
-    auto out = moments.access();
-    for (int a = 0; a < n; ++a) {
-      const int base = 4 * data.element_dof_nodes(e, a);
-      for (int i = 0; i < 3; ++i) out(base + i) += m[a][i];
-    }
+    detail::scatter_nodal<Element, 3>(moments, data, e, m);
   }
 };
 

@@ -57,6 +57,23 @@ KOKKOS_INLINE_FUNCTION double lsic_coefficient(const FluidCoefficients& c, doubl
 // `geometry(e, q, 9)` holds det(∂x/∂ξ)·w_q.
 inline constexpr int geometry_entries = 10;
 
+// The shape functions N_a and their gradients ∇N_a = Σ_k ∂N_a/∂ξ_k ∂ξ_k/∂x at element
+// e's quadrature point q, from the stored geometry.
+template <class Element, class GeometryView>
+KOKKOS_INLINE_FUNCTION void shape_functions_at(const GeometryView& geometry, const int e, const int q,
+                                               double (&shape)[Element::nodes],
+                                               double (&grad)[Element::nodes][3]) {
+  double xi[3];
+  Element::quadrature_point(q, xi);
+  for (int a = 0; a < Element::nodes; ++a) {
+    shape[a] = Element::shape(a, xi);
+    double ref[3];
+    for (int k = 0; k < 3; ++k) ref[k] = Element::shape_gradient(a, k, xi);
+    for (int d = 0; d < 3; ++d)
+      grad[a][d] = ref[0] * geometry(e, q, d) + ref[1] * geometry(e, q, 3 + d) + ref[2] * geometry(e, q, 6 + d);
+  }
+}
+
 // Adds the element residual R_a (see the header comment) to `residual`.
 //   state(a, 0..3)   nodal u, v, w, p (Scalar: double, or Dual for derivatives)
 //   frozen(a, 0..2)  nodal velocity from which τ_M and ν_L are computed
@@ -75,16 +92,8 @@ KOKKOS_INLINE_FUNCTION void fluid_element_residual(
   constexpr int n = Element::nodes;
   const double re = coef.reynolds;
   for (int q = 0; q < Element::quadrature_points; ++q) {
-    double xi[3];
-    Element::quadrature_point(q, xi);
     double shape[n], grad[n][3];
-    for (int a = 0; a < n; ++a) {
-      shape[a] = Element::shape(a, xi);
-      double ref[3];
-      for (int k = 0; k < 3; ++k) ref[k] = Element::shape_gradient(a, k, xi);
-      for (int d = 0; d < 3; ++d)
-        grad[a][d] = ref[0] * geometry(e, q, d) + ref[1] * geometry(e, q, 3 + d) + ref[2] * geometry(e, q, 6 + d);
-    }
+    shape_functions_at<Element>(geometry, e, q, shape, grad);
     const double dv = geometry(e, q, 9);
 
     // Values at the quadrature point.
@@ -182,16 +191,8 @@ KOKKOS_INLINE_FUNCTION void fluid_element_load_stabilization(
     double (&residual)[Element::nodes][4], double (*subscale)[3] = nullptr) {
   constexpr int n = Element::nodes;
   for (int q = 0; q < Element::quadrature_points; ++q) {
-    double xi[3];
-    Element::quadrature_point(q, xi);
     double shape[n], grad[n][3];
-    for (int a = 0; a < n; ++a) {
-      shape[a] = Element::shape(a, xi);
-      double ref[3];
-      for (int k = 0; k < 3; ++k) ref[k] = Element::shape_gradient(a, k, xi);
-      for (int d = 0; d < 3; ++d)
-        grad[a][d] = ref[0] * geometry(e, q, d) + ref[1] * geometry(e, q, 3 + d) + ref[2] * geometry(e, q, 6 + d);
-    }
+    shape_functions_at<Element>(geometry, e, q, shape, grad);
     const double dv = geometry(e, q, 9);
     double u[3] = {0, 0, 0}, f[3] = {0, 0, 0};
     for (int a = 0; a < n; ++a)

@@ -7,8 +7,8 @@
 // diagonal_blocks    the 4×4 node blocks of J (for block Jacobi), Dirichlet rows identity
 // The constant nodal load b holds traction loads and the immersed (spread) forces of
 // paper eq. 16. The immersed forces may also enter the stabilization's strong residual as
-// the force density they stand for (load_stabilization; kernels/fluid_element.hpp). Quadrature geometry is computed once, at construction: the mesh
-// never moves.
+// the force density they stand for (load_stabilization; kernels/fluid_element.hpp).
+// Quadrature geometry is computed once, at construction: the mesh never moves.
 #include <Kokkos_Core.hpp>
 #include <Kokkos_ScatterView.hpp>
 #include <vector>
@@ -46,8 +46,8 @@ class BasicFluidOperator {
   void set_nodal_load(const Vector& load) { nodal_load_ = load; }
   // The immersed forces' nodal loads (scaled, velocity entries), a second part of b; with
   // `in_stabilization` their force density also enters SUPG/PSPG's strong residual.
-  void set_immersed_load(const ConstVector& load, bool in_stabilization) {
-    immersed_load_ = load;
+  void set_immersed_load(const ConstVector& load) { immersed_load_ = load; }
+  void set_immersed_load_in_stabilization(bool in_stabilization) {
     immersed_load_in_stabilization_ = in_stabilization;
   }
   bool immersed_load_in_stabilization() const { return immersed_load_in_stabilization_; }

@@ -238,7 +238,7 @@ double FluidSolver::kinetic_energy() const {
 void FluidSolver::set_immersed_forces(const ConstVector& nodal_forces) {
   if (immersed_load_.extent(0) == 0) {
     immersed_load_ = Vector("rouleau::FluidSolver::immersed_load", state_.extent(0));
-    operator_.set_immersed_load(immersed_load_, immersed_forces_in_stabilization_);
+    operator_.set_immersed_load(immersed_load_);
   }
   // b = F / (P L²), the forces in the residual's scale
   const auto load = immersed_load_;
@@ -254,8 +254,7 @@ void FluidSolver::total_velocity(const Vector& out) const {
 }
 
 void FluidSolver::set_immersed_forces_in_stabilization(bool in_stabilization) {
-  immersed_forces_in_stabilization_ = in_stabilization;
-  if (immersed_load_.extent(0) > 0) operator_.set_immersed_load(immersed_load_, in_stabilization);
+  operator_.set_immersed_load_in_stabilization(in_stabilization);
 }
 
 void FluidSolver::set_immersed_stiffness(const LinearOperator* stiffness) {
@@ -271,7 +270,7 @@ void FluidSolver::add_immersed_stiffness(const ConstVector& x, const Vector& y, 
   immersed_stiffness_->apply(x, stiffness_action_);
   // Ŝx is minus the change of the immersed loads; that change enters the stabilization's
   // strong residual as the loads do: Ŝx − P(Ŝx), P = FluidOperator::load_stabilization.
-  if (immersed_forces_in_stabilization_) {
+  if (operator_.immersed_load_in_stabilization()) {
     operator_.load_stabilization(state_, stiffness_action_, stiffness_stabilization_);
     KokkosBlas::axpy(-1.0, stiffness_stabilization_, stiffness_action_);
   }

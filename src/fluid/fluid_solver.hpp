@@ -129,7 +129,6 @@ class FluidSolver {
   Vector state_, previous_state_, older_state_, history_, body_force_, correction_, blocks_;
   double density_;                 // ρ [pN·s²/μm⁴]
   Vector immersed_load_;           // the immersed forces (scaled), when there are cells
-  bool immersed_forces_in_stabilization_ = false;
   const LinearOperator* immersed_stiffness_ = nullptr;  // Ŝ of the semi-implicit coupling, or null
   Vector stiffness_action_, stiffness_stabilization_;  // Ŝ x and P(Ŝ x) (scratch)
   Vector residual_;  // also scratch for boundary_forces() (const)

@@ -243,14 +243,6 @@ struct CouplingConfig {
   // seeps through cells where their membrane force makes ∇p large (a cell plugging a
   // throat: 60-90 % of the flow passed it in u' alone).   key subscale_velocity
   bool subscale_velocity = false;
-  // Hollow shells meet the fluid at their membrane's mid-surface: each shell node spreads
-  // its force from, and takes its velocity at, the point half the shell thickness below
-  // the surface it lies on (coupling/shell_midsurface.hpp). The fluid cannot resolve a
-  // shell thinner than its elements, so the force resisting the layer's squeeze spreads
-  // into almost nothing; at the mid-surface the layer moves as one and keeps its
-  // thickness (a contraction's cell had a shell element crushed to 3 % of its volume
-  // entering the throat without it).   key shell_midsurface
-  bool shell_midsurface = false;
 };
 
 // What the scene builds and runs (DESIGN.md, "skip what a scene doesn't need").

@@ -843,7 +843,7 @@ void read_interaction(const TableReader& root, CaseConfig& config) {
 void read_coupling(const TableReader& root, CouplingConfig& coupling) {
   const TableReader section = root.table(
       "coupling", {"scheme", "support_elements", "stable_step_factor", "allow_unstable_step", "gravity_m_s2",
-                  "volume_tolerance", "forces_in_stabilization", "subscale_velocity", "shell_midsurface"});
+                  "volume_tolerance", "forces_in_stabilization", "subscale_velocity"});
   assign(coupling.scheme, section.choice("scheme", choices_of({CouplingScheme::explicit_forces,
                                                                CouplingScheme::semi_implicit})));
   // Below one element a point's support may hold too few fluid nodes for the moment matrix.
@@ -852,7 +852,6 @@ void read_coupling(const TableReader& root, CouplingConfig& coupling) {
   assign(coupling.allow_unstable_step, section.boolean("allow_unstable_step"));
   assign(coupling.forces_in_stabilization, section.boolean("forces_in_stabilization"));
   assign(coupling.subscale_velocity, section.boolean("subscale_velocity"));
-  assign(coupling.shell_midsurface, section.boolean("shell_midsurface"));
   assign(coupling.volume_tolerance, section.number("volume_tolerance", Range::open(0, 1)));
   // With the loads in the stabilization, u' = −τ (r − f_h) holds τ f_h: the cells would
   // move with their own forces times a mobility the semi-implicit step does not linearize,

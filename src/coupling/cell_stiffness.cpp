@@ -43,9 +43,9 @@ void position_dependent_forces(CellPopulation& population, SurfaceInteraction* i
   }
 }
 
-CellStiffness::CellStiffness(const CellFluidTransfer& transfer, const NodeVectors& positions, ForceEvaluation forces,
+CellStiffness::CellStiffness(const RkpmCoupler& rkpm, const NodeVectors& positions, ForceEvaluation forces,
                              const FluidScales& scales)
-    : transfer_(transfer), positions_(positions), forces_(std::move(forces)), scales_(scales) {
+    : rkpm_(rkpm), positions_(positions), forces_(std::move(forces)), scales_(scales) {
   const int nodes = positions.extent(0);
   base_positions_ = NodeVectors("rouleau::CellStiffness::base_positions", nodes);
   displacement_ = NodeVectors("rouleau::CellStiffness::displacement", nodes);
@@ -65,7 +65,7 @@ void CellStiffness::force_change(const Kokkos::View<const double*>& x, const Nod
   ProfilingRegion region("rouleau::CellStiffness::force_change");
   if (dt_ <= 0.0) throw std::logic_error("rouleau::CellStiffness: linearize() first");
   // δx_I = Δt U (I û)_I [μm], and its largest node displacement.
-  transfer_.interpolate(x, 4, displacement_);
+  rkpm_.interpolate(x, 4, displacement_);
   const NodeVectors displacement = displacement_;
   const double to_displacement = dt_ * scales_.velocity;
   double largest = 0.0;
@@ -111,7 +111,7 @@ void CellStiffness::apply(const Kokkos::View<const double*>& x, const Kokkos::Vi
         for (int d = 0; d < 3; ++d) change(n, d) *= to_residual;
       });
   Kokkos::deep_copy(y, 0.0);
-  transfer_.spread(change_, y, 4);
+  rkpm_.spread(change_, y, 4);
 }
 
 }  // namespace rouleau

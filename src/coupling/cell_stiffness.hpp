@@ -24,7 +24,7 @@
 
 #include "cells/cell_population.hpp"
 #include "cells/surface_interaction.hpp"
-#include "coupling/cell_fluid_transfer.hpp"
+#include "coupling/rkpm_coupler.hpp"
 #include "coupling/wall_repulsion.hpp"
 #include "fluid/boundary_conditions.hpp"
 #include "solver/linear_operator.hpp"
@@ -50,8 +50,8 @@ class CellStiffness final : public LinearOperator {
   using ForceEvaluation = std::function<void(const NodeVectors& out)>;
 
   // `positions` are the cell nodes' positions that `forces` reads; apply() moves them and
-  // puts them back. `transfer` holds the supports at x^n. All must outlive the operator.
-  CellStiffness(const CellFluidTransfer& transfer, const NodeVectors& positions, ForceEvaluation forces,
+  // puts them back. `rkpm` holds the supports at x^n. All must outlive the operator.
+  CellStiffness(const RkpmCoupler& rkpm, const NodeVectors& positions, ForceEvaluation forces,
                 const FluidScales& scales);
 
   // Linearizes about the current positions x^n (evaluates f(x^n)) for a fluid solve over
@@ -70,7 +70,7 @@ class CellStiffness final : public LinearOperator {
   long evaluations() const { return evaluations_; }
 
  private:
-  const CellFluidTransfer& transfer_;
+  const RkpmCoupler& rkpm_;
   NodeVectors positions_;
   ForceEvaluation forces_;
   FluidScales scales_;

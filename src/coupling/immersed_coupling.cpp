@@ -62,8 +62,7 @@ ImmersedCoupling::ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, c
     : fluid_(fluid),
       population_(*cells.population),
       interaction_(cells.interaction.get()),
-      transfer_(fluid.fluid_operator().mesh(), config.coupling.support_elements, cells, config,
-                config.coupling.shell_midsurface),
+      rkpm_(fluid.fluid_operator().mesh(), config.coupling.support_elements),
       skip_unneeded_(config.scene.skip_unneeded_stages),
       gravity_(config.coupling.gravity) {
   const int nodes = population_.num_nodes();
@@ -96,7 +95,7 @@ ImmersedCoupling::ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, c
     stiffness_scratch_ = NodeVectors("rouleau::ImmersedCoupling::stiffness_scratch", nodes);
     force_change_ = NodeVectors("rouleau::ImmersedCoupling::force_change", nodes);
     stiffness_ = std::make_unique<CellStiffness>(
-        transfer_, population_.positions(),
+        rkpm_, population_.positions(),
         [this](const NodeVectors& out) {
           position_dependent_forces(population_, interaction_, wall_.get(), stiffness_scratch_, out);
         },
@@ -104,7 +103,7 @@ ImmersedCoupling::ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, c
   }
   // Without skips the RKPM correction runs everywhere (it changes nothing but round-off
   // where the plain window reproduces linear fields).
-  transfer_.always_correct(!skip_unneeded_);
+  rkpm_.always_correct(!skip_unneeded_);
 }
 
 ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme scheme, StageTimes& times) {
@@ -149,7 +148,7 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
   // 2. spread, with the supports at x^n (also those of the interpolation below)
   times.time(spread_stage, [&] {
     try {
-      transfer_.update(population_.positions());
+      rkpm_.update(population_.positions());
     } catch (const PointsOutsideFluidError& error) {
       std::ostringstream what;
       what << spread_stage << ": cell " << population_.cell_of_node(error.first_point())
@@ -159,10 +158,10 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
       throw std::runtime_error(what.str());
     }
     Kokkos::deep_copy(fluid_load_, 0.0);
-    transfer_.spread(fsi_forces_, fluid_load_, fluid_unknowns_per_node);
+    rkpm_.spread(fsi_forces_, fluid_load_, fluid_unknowns_per_node);
     fluid_.set_immersed_forces(fluid_load_);
   });
-  report.corrected_points = transfer_.corrected_points();
+  report.corrected_points = rkpm_.corrected_points();
   // 3. the fluid
   if (stiffness_) {
     times.time(stiffness_stage, [&] { stiffness_->linearize(dt); });
@@ -183,12 +182,12 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
       stiffness_->force_change(cell_carrier, force_change_);
       add_node_vectors(fsi_forces_, force_change_);
       Kokkos::deep_copy(fluid_load_, 0.0);
-      transfer_.spread(fsi_forces_, fluid_load_, fluid_unknowns_per_node);
+      rkpm_.spread(fsi_forces_, fluid_load_, fluid_unknowns_per_node);
       fluid_.set_immersed_forces(fluid_load_);
     });
   // 4. interpolate
   times.time(interpolate_stage,
-             [&] { transfer_.interpolate(cell_carrier, fluid_unknowns_per_node, interpolated_); });
+             [&] { rkpm_.interpolate(cell_carrier, fluid_unknowns_per_node, interpolated_); });
   // 5. move
   double largest_speed2 = 0.0;
   times.time(move_stage, [&] {

@@ -12,9 +12,6 @@
 // forces' change over the step, linearized about x^n (coupling/cell_stiffness.hpp):
 // f^n + K Δt I u^{n+1}; after the solve that change is added to the spread forces, so the
 // reported forces, powers and wall reactions are those the fluid felt.
-// With coupling.shell_midsurface, hollow shells' nodes take the normal part of their
-// velocity at, and spread the normal part of their force from, their membrane's
-// mid-surface points (coupling/cell_fluid_transfer.hpp).
 // With viscosity ratio 1 the cell's viscous stress is the fluid's and the pressures
 // cancel, so ∇·σ_s − ∇·σ_f of eq. (7) is the elastic force alone (DESIGN.md). Spreading
 // and interpolation use the same shape functions, so the power the cells put into the
@@ -26,7 +23,7 @@
 #include "cells/cells_from_case.hpp"
 #include "config/case_config.hpp"
 #include "coupling/cell_stiffness.hpp"
-#include "coupling/cell_fluid_transfer.hpp"
+#include "coupling/rkpm_coupler.hpp"
 #include "coupling/wall_repulsion.hpp"
 #include "fluid/fluid_solver.hpp"
 #include "run/stage_times.hpp"
@@ -76,14 +73,14 @@ class ImmersedCoupling {
   // F_I of the last step [pN] (the sum of the stages' forces) and the Morse part alone.
   const NodeVectors& fsi_forces() const { return fsi_forces_; }
   const NodeVectors& interaction_forces() const { return interaction_forces_; }
-  const CellFluidTransfer& transfer() const { return transfer_; }
+  const RkpmCoupler& rkpm() const { return rkpm_; }
 
  private:
   FluidSolver& fluid_;
   CellPopulation& population_;
   SurfaceInteraction* interaction_;
   std::unique_ptr<WallRepulsion> wall_;    // a vessel with wall_repulsion_Pa > 0
-  CellFluidTransfer transfer_;
+  RkpmCoupler rkpm_;
   bool skip_unneeded_;
   bool runs_inertia_ = false;
   std::array<double, 3> gravity_;  // [μm/s²]

@@ -44,6 +44,16 @@ KOKKOS_INLINE_FUNCTION void scatter_nodal(const Scatter& target, const FluidElem
     for (int c = 0; c < Count; ++c) out(base + c) += values[a][c];
   }
 }
+// The immersed nodal loads b at element e's nodes turned, in place, into the force
+// density f_J = b_J / m_J they stand for (m the lumped mass per dof node).
+template <class Element>
+KOKKOS_INLINE_FUNCTION void to_force_density(const Kokkos::View<const double*>& lumped_mass,
+                                             const FluidElementData& d, int e, double (&b)[Element::nodes][3]) {
+  for (int a = 0; a < Element::nodes; ++a) {
+    const double inverse_mass = 1.0 / lumped_mass(d.element_dof_nodes(e, a));
+    for (int i = 0; i < 3; ++i) b[a][i] *= inverse_mass;
+  }
+}
 // The 9 projected gradient entries of each of element e's nodes, as Scalar; the
 // derivative part (when Scalar is Dual<1>) from `direction_gradient` if it is not empty.
 template <class Element, class Scalar>
@@ -194,19 +204,17 @@ struct FluidLoadStabilizationFunctor {
 
   KOKKOS_INLINE_FUNCTION void operator()(const int e) const {
     constexpr int n = Element::nodes;
-    double b[n][3];
-    detail::gather_nodal<Element, 3>(load, data, e, b);
+    double density[n][3];
+    detail::gather_nodal<Element, 3>(load, data, e, density);
     bool loaded = false;
     for (int a = 0; a < n; ++a)
-      for (int i = 0; i < 3; ++i) loaded = loaded || b[a][i] != 0.0;
+      for (int i = 0; i < 3; ++i) loaded = loaded || density[a][i] != 0.0;
     if (!loaded) return;
-    double uf[n][3], density[n][3], r[n][4];
+    detail::to_force_density<Element>(lumped_mass, data, e, density);
+    double uf[n][3], r[n][4];
     detail::gather_nodal<Element, 3>(frozen, data, e, uf);
-    for (int a = 0; a < n; ++a) {
-      const double inverse_mass = 1.0 / lumped_mass(data.element_dof_nodes(e, a));
-      for (int i = 0; i < 3; ++i) density[a][i] = b[a][i] * inverse_mass;
+    for (int a = 0; a < n; ++a)
       for (int c = 0; c < 4; ++c) r[a][c] = 0.0;
-    }
     fluid_element_load_stabilization<Element>(data.coefficients, data.geometry, e, data.element_size(e), uf, density,
                                               r);
     detail::scatter_nodal<Element, 4>(residual, data, e, r);
@@ -244,10 +252,7 @@ struct FluidSubscaleFunctor {
     if (load.extent(0) > 0) {
       double b[n][3];
       detail::gather_nodal<Element, 3>(load, data, e, b);
-      for (int a = 0; a < n; ++a) {
-        const double inverse_mass = 1.0 / lumped_mass(data.element_dof_nodes(e, a));
-        for (int i = 0; i < 3; ++i) b[a][i] *= inverse_mass;
-      }
+      detail::to_force_density<Element>(lumped_mass, data, e, b);
       fluid_element_load_stabilization<Element>(data.coefficients, data.geometry, e, data.element_size(e), uf, b, r,
                                                 m);
     }

@@ -5,7 +5,8 @@
 
 Writes PNG files into RUN_DIR/figures (or FOLDER) and prints their paths:
   driving_pressure.png  vessels: the driving pressure against time (the paper's Fig. 17),
-                        with the first cell's axial position and the throat's extent
+                        each cell's position along the vessel with the throat's extent, and
+                        the cells past the throat's exit with the inflow and outflow
   gaps.png              two cells or more: each pair's gap and contact area against time
   cell_shapes.png       cells: inclination and Taylor deformation in the shear plane
   volumes.png           cells: each cell's volume relative to its first row
@@ -15,7 +16,8 @@ Writes PNG files into RUN_DIR/figures (or FOLDER) and prints their paths:
   solver.png            Newton and GMRES iterations per row
   cross_sections.png    cells: the nodes within half a micrometre of a plane through the
                         cells' mean centre (--plane, default xy) at N field outputs spread
-                        over the run (the paper's snapshot figures, e.g. Figs. 6 and 8-16)
+                        over the run (the paper's snapshot figures, e.g. Figs. 6 and 8-16);
+                        in a vessel, with its wall in planes through its axis
 Only the figures the run's columns and files allow are drawn. Needs matplotlib
 (Debian's python3-matplotlib), and h5py (python3-h5py) for the cross-sections.
 """
@@ -57,24 +59,75 @@ def save(figure, folder, name, written):
     written.append(path)
 
 
+def throat_span(case):
+    """The throat's start and end along x [μm], or None when the case has no vessel."""
+    vessel = case.get("vessel")
+    if not vessel:
+        return None
+    start = vessel.get("inlet_length_um", 0.0) + vessel.get("contraction_length_um", 0.0)
+    return start, start + vessel.get("throat_length_um", 0.0)
+
+
+def vessel_wall(case, x):
+    """The vessel's radius at x [μm]: feeders, transitions (cosine or cone) and throat, as
+    src/geometry/vessel_profile.cpp builds the mesh."""
+    vessel = case["vessel"]
+    radius, throat = vessel["radius_um"], vessel["throat_radius_um"]
+    cosine = vessel.get("transition", "cosine") == "cosine"
+
+    def transition(start, end, s):  # from `start` (s = 0) to `end` (s = 1)
+        weight = 0.5 * (1.0 - math.cos(math.pi * s)) if cosine else s
+        return start + (end - start) * weight
+
+    contraction = vessel["inlet_length_um"]
+    throat_start = contraction + vessel["contraction_length_um"]
+    diffuser = throat_start + vessel["throat_length_um"]
+    outlet = diffuser + vessel["diffuser_length_um"]
+    if x < contraction or x >= outlet:
+        return radius
+    if x < throat_start:
+        return transition(radius, throat, (x - contraction) / vessel["contraction_length_um"])
+    if x < diffuser:
+        return throat
+    return transition(throat, radius, (x - diffuser) / vessel["diffuser_length_um"])
+
+
 def plot_vessel(columns, case, folder, written):
+    """Driving pressure (Fig. 17), each cell's position along the vessel, and the cells past
+    the throat's exit with the flow rates (the contraction's diagnostics, Figs. 13-15)."""
     if "driving_pressure_Pa" not in columns:
         return
     time = columns["time_s"]
-    figure, axis = plt.subplots(figsize=(7, 4))
-    axis.plot(time, columns["driving_pressure_Pa"], color="tab:red", label="driving pressure")
-    axis.set_xlabel("time [s]")
-    axis.set_ylabel("driving pressure (inlet − outlet) [Pa]", color="tab:red")
-    if "cell0_centroid_x_um" in columns:
-        position = axis.twinx()
-        position.plot(time, columns["cell0_centroid_x_um"], color="tab:blue")
-        position.set_ylabel("cell 0 centroid x [μm]", color="tab:blue")
-        vessel = case.get("vessel", {})
-        start = vessel.get("inlet_length_um", 0.0) + vessel.get("contraction_length_um", 0.0)
-        end = start + vessel.get("throat_length_um", 0.0)
-        if end > start:
-            position.axhspan(start, end, color="tab:blue", alpha=0.08, label="throat")
-    axis.set_title(f"{case.get('case', {}).get('name', '')}: driving pressure")
+    cells = cell_count(columns)
+    span = throat_span(case)
+    panels = 3 if cells else 1
+    figure, axes = plt.subplots(panels, 1, figsize=(7, 2.6 * panels + 0.6), sharex=True, squeeze=False)
+    axes = axes[:, 0]
+    axes[0].plot(time, columns["driving_pressure_Pa"], color="tab:red")
+    axes[0].set_ylabel("driving pressure [Pa]\n(inlet − outlet)")
+    axes[0].set_title(f"{case.get('case', {}).get('name', '')}: driving pressure, cells along the vessel")
+    if cells:
+        for c in range(min(cells, 12)):
+            axes[1].plot(time, columns[f"cell{c}_centroid_x_um"], label=f"cell {c}")
+        if span and span[1] > span[0]:
+            axes[1].axhspan(span[0], span[1], color="tab:gray", alpha=0.15, label="throat")
+        axes[1].set_ylabel("centroid x [μm]")
+        axes[1].legend(fontsize="small", ncol=4)
+        if span:
+            passed = [sum(columns[f"cell{c}_centroid_x_um"][i] > span[1] for c in range(cells))
+                      for i in range(len(time))]
+            axes[2].step(time, passed, where="post", color="black", label="cells past the throat's exit")
+            axes[2].set_ylabel("cells passed")
+            axes[2].set_ylim(-0.2, cells + 0.2)
+        if "flow_rate_inlet_um3_s" in columns:
+            rate = axes[2].twinx()
+            rate.plot(time, columns["flow_rate_inlet_um3_s"], color="tab:blue", alpha=0.6, label="inflow")
+            rate.plot(time, columns["flow_rate_outlet_um3_s"], "--", color="tab:green", alpha=0.6, label="outflow")
+            rate.set_ylabel("flow rate [μm³/s]")
+            largest = max(max(columns["flow_rate_inlet_um3_s"]), max(columns["flow_rate_outlet_um3_s"]))
+            rate.set_ylim(0.0, 1.25 * largest)  # from zero: outflow and inflow agree to the solver's tolerance
+            rate.legend(fontsize="small", loc="lower right")
+    axes[-1].set_xlabel("time [s]")
     save(figure, folder, "driving_pressure.png", written)
 
 
@@ -164,7 +217,7 @@ def plot_solver(columns, folder, written):
     save(figure, folder, "solver.png", written)
 
 
-def plot_cross_sections(run_dir, plane, snapshots, folder, written):
+def plot_cross_sections(run_dir, case, plane, snapshots, folder, written):
     """Cell nodes near a plane at `snapshots` field outputs, one panel each, coloured by cell."""
     try:
         import h5py
@@ -185,9 +238,15 @@ def plot_cross_sections(run_dir, plane, snapshots, folder, written):
     axes_of = {"xy": (0, 1, 2), "xz": (0, 2, 1), "yz": (1, 2, 0)}
     first, second, normal = axes_of[plane]
     names = "xyz"
-    figure, panels = plt.subplots(1, count, figsize=(3.2 * count, 3.4), squeeze=False)
+    along_vessel = bool(case.get("vessel")) and normal != 0  # the whole vessel in each panel: stacked
+    if along_vessel:
+        figure, panels = plt.subplots(count, 1, figsize=(10, 1.9 * count + 0.4), squeeze=False, sharex=True)
+        panels = panels[:, 0]
+    else:
+        figure, panels = plt.subplots(1, count, figsize=(3.2 * count, 3.4), squeeze=False)
+        panels = panels[0]
     centre = None
-    for panel, path in zip(panels[0], chosen):
+    for panel, path in zip(panels, chosen):
         with h5py.File(path, "r") as f:
             x = f["cells/coordinates"][()]
             cell = f["cells/cell_id"][()]
@@ -196,6 +255,13 @@ def plot_cross_sections(run_dir, plane, snapshots, folder, written):
             centre = x[:, normal].mean()
         near = abs(x[:, normal] - centre) < 0.5
         panel.scatter(x[near, first], x[near, second], c=cell[near] % 10, cmap="tab10", vmin=0, vmax=9, s=3)
+        if along_vessel:  # a plane through the vessel's axis (x): its wall
+            length = sum(case["vessel"][k] for k in ("inlet_length_um", "contraction_length_um",
+                                                     "throat_length_um", "diffuser_length_um", "outlet_length_um"))
+            wall_x = [length * i / 400 for i in range(401)]
+            wall_r = [vessel_wall(case, x) for x in wall_x]
+            panel.plot(wall_x, wall_r, color="black", linewidth=0.8)
+            panel.plot(wall_x, [-r for r in wall_r], color="black", linewidth=0.8)
         panel.set_aspect("equal")
         panel.set_title(f"t = {time:.4g} s", fontsize="small")
         panel.set_xlabel(f"{names[first]} [μm]")
@@ -226,7 +292,7 @@ def main(argv):
     plot_extents(columns, folder, written)
     plot_walls(columns, folder, written)
     plot_solver(columns, folder, written)
-    plot_cross_sections(arguments.run_dir, arguments.plane, arguments.snapshots, folder, written)
+    plot_cross_sections(arguments.run_dir, case, arguments.plane, arguments.snapshots, folder, written)
     for path in written:
         print(path)
     return 0

@@ -169,13 +169,15 @@ TEST(RunCase, ParabolicInflowIsCarriedThroughTheChannel) {
 }
 
 TEST(RunCase, ContractionWritesTetrahedraAndTheDrivingPressure) {
-  // The contraction case, coarsened: the fields are on the vessel's tetrahedra; the
+  // The contraction case's plasma alone, steady, coarsened: the fields are on the vessel's tetrahedra; the
   // outflow equals the inflow (global mass balance, to solver tolerance); the driving
   // pressure is Hagen–Poiseuille's summed over cross-sections plus the entrance and exit
   // losses (the case's own mesh: +3.9 %), so the relative apparent viscosity of plasma lies
   // just above 1.
   const std::string out = fresh_output_dir("contraction");
   const Outcome o = run_rouleau("run " + cases_dir + "/contraction/case.toml --no-progress --out " + out +
+                                " --set 'cells=[]' --set interaction.enabled=false --set 'time.mode=\"steady\"'"
+                                " --set solver.gmres_rtol=1e-8"
                                 " --set vessel.element_size_um=3.0 --set vessel.wall_element_size_um=1.5");
   ASSERT_EQ(o.exit_code, 0) << o.err;
   const auto row = rouleau::read_last_diagnostics(out + "/diagnostics.csv");
@@ -205,7 +207,7 @@ TEST(RunCase, ContractionWritesTetrahedraAndTheDrivingPressure) {
 }
 
 TEST(RunCase, CellsEnterTheContractionNormalAndSickle) {
-  // cases/contraction/cells.toml coarsened, three semi-implicit steps of 1e-3 s (twice the case's):
+  // cases/contraction/case.toml coarsened, three semi-implicit steps of 1e-3 s (twice the case's):
   // the three normal cells, and the sickle variant (ten times stiffer, five times
   // stickier, whose explicit step would be 1.7e-5 s), run, move downstream and keep their
   // volumes.
@@ -214,7 +216,7 @@ TEST(RunCase, CellsEnterTheContractionNormalAndSickle) {
                              " --set output.diagnostics_every_steps=1";
   for (const std::string variant : {std::string(), std::string(" --set 'cells=[{kind=\"sickle\", center_um=[9, 0, 0]}]'")}) {
     const std::string out = fresh_output_dir(variant.empty() ? "contraction_normal" : "contraction_sickle");
-    const Outcome o = run_rouleau("run " + cases_dir + "/contraction/cells.toml --no-progress --out " + out + coarse +
+    const Outcome o = run_rouleau("run " + cases_dir + "/contraction/case.toml --no-progress --out " + out + coarse +
                                   variant);
     ASSERT_EQ(o.exit_code, 0) << o.err;
     const auto rows = rouleau::read_diagnostics(out + "/diagnostics.csv");

@@ -1,5 +1,5 @@
-// Plasma, and cells, through a micro-vessel contraction (paper Figs. 13-15): runs
-// cases/contraction/case.toml (or the file given: cells.toml for the cells) and sets the
+// Cells, or plasma alone, through a micro-vessel contraction (paper Figs. 13-15): runs
+// cases/contraction/case.toml (or the file given; `--set 'cells=[]'` for plasma) and sets the
 // driving pressure against Hagen–Poiseuille's drop summed over the cross-sections,
 // (8 μ Q / π) ∫ dx / R(x)⁴, and the outflow against the inflow; with cells, it prints how
 // many have passed the throat over time with the driving pressure, and the paper's

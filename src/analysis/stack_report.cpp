@@ -1,0 +1,51 @@
+#include "analysis/stack_report.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace rouleau {
+
+int cells_per_column(const CaseConfig& config) {
+  int count = 0;
+  for (const auto& cell : config.cells)
+    if (std::fabs(cell.center[0] - config.cells.front().center[0]) < 0.5) ++count;
+  return count;
+}
+
+StackStatement print_stack_report(const CaseConfig& config, const DiagnosticsRows& rows) {
+  const int cells = static_cast<int>(config.cells.size());
+  const int per_column = cells_per_column(config);
+  // A gap is reported between neighbours in the same column.
+  const auto same_column = [&](int c) { return (c + 1) % per_column != 0; };
+  std::printf("%9s", "time_s");
+  for (int c = 0; c < cells; ++c) std::printf("  incl%-3d", c);
+  for (int c = 0; c + 1 < cells; ++c)
+    if (same_column(c)) std::printf("  gap%d_%-3d", c, c + 1);
+  std::printf("\n");
+  for (const auto& row : rows) {
+    std::printf("%9.4f", row.at("time_s"));
+    for (int c = 0; c < cells; ++c) std::printf(" %8.2f", row.at("cell" + std::to_string(c) + "_inclination_deg"));
+    for (int c = 0; c + 1 < cells; ++c)
+      if (same_column(c)) std::printf(" %9.4f", row.at("gap_" + std::to_string(c) + "_" + std::to_string(c + 1) + "_um"));
+    std::printf("\n");
+  }
+  // The shear rate from the walls: (u_top − u_bottom) / H.
+  const auto& domain = config.domain;
+  const double shear_rate =
+      (domain.boundary[Side::y_max].velocity[0] - domain.boundary[Side::y_min].velocity[0]) /
+      (domain.upper[1] - domain.lower[1]);
+  const double r0 = config.interaction.morse.zero_force_length;
+  const StackMeasures m = measure_stack(rows, cells, per_column, r0);
+  const double end = rows.back().at("time_s");
+  std::printf("shear rate %.3g 1/s, t = %.4g s (strain %.3g): largest neighbour gap growth %.4f um, largest change "
+              "of a vertical separation %.4f um, mean inclination %.2f deg (spread %.2f), stack axis %.2f deg, %s\n",
+              shear_rate, end, shear_rate * end, m.largest_gap_growth, m.largest_separation_change,
+              m.mean_inclination_deg, m.inclination_spread_deg, m.stack_axis_deg, m.intact ? "intact" : "broken up");
+  // The paper's statement for this run, as measures against thresholds.
+  const StackStatement check = check_stack_statement(m, shear_rate, config.interaction.enabled, r0);
+  std::printf("check (%s): %s: %s\n", check.statement.c_str(), check.measured.c_str(), check.met ? "met" : "NOT MET");
+  return check;
+}
+
+}  // namespace rouleau

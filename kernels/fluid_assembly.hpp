@@ -260,6 +260,49 @@ struct FluidSubscaleFunctor {
   }
 };
 
+// The derivative of the subscale moments along a direction δ, with τ frozen at `state`:
+// D_ai = d/dε ∫ N_a τ_M r_i(U + εδ) dV, in dual numbers as FluidJacobianActionFunctor
+// differentiates the residual; u'_a's derivative is −D_a / m_a. The sources and the
+// immersed loads' share do not depend on the state and drop out.
+template <class Element, class Scatter>
+struct FluidSubscaleActionFunctor {
+  FluidElementData data;
+  Kokkos::View<const double*> state, direction, history, force;
+  Kokkos::View<const double*> gradient, direction_gradient;  // G(U), G(δ) (viscous reconstruction)
+  Scatter moments;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int e) const {
+    constexpr int n = Element::nodes;
+    double u[n][4], du[n][4], uf[n][3], h[n][3], f[n][3];
+    Dual<1> x[n][4], r[n][4], m[n][3];
+    detail::gather_nodal<Element, 4>(state, data, e, u);
+    detail::gather_nodal<Element, 4>(direction, data, e, du);
+    detail::gather_nodal<Element, 3>(history, data, e, h);
+    detail::gather_nodal<Element, 3>(force, data, e, f);
+    for (int a = 0; a < n; ++a) {
+      for (int c = 0; c < 3; ++c) {
+        uf[a][c] = u[a][c];
+        m[a][c] = Dual<1>(0.0);
+      }
+      for (int c = 0; c < 4; ++c) {
+        x[a][c] = Dual<1>(u[a][c]);
+        x[a][c].derivative[0] = du[a][c];
+        r[a][c] = Dual<1>(0.0);
+      }
+    }
+    Dual<1> g[n * 9];
+    if (data.coefficients.viscous_reconstruction)
+      detail::gather_gradient<Element, Dual<1>>(gradient, direction_gradient, data, e, g);
+    fluid_element_residual<Element, Dual<1>>(data.coefficients, data.geometry, e, data.element_size(e), x, uf, h, f,
+                                             g, r, m);
+    auto out = moments.access();
+    for (int a = 0; a < n; ++a) {
+      const int base = 4 * data.element_dof_nodes(e, a);
+      for (int i = 0; i < 3; ++i) out(base + i) += m[a][i].derivative[0];
+    }
+  }
+};
+
 // Y += J(U) δ: the residual evaluated on U + εδ in dual numbers (τ frozen at U). The
 // sources matter: the SUPG weight u·∇N_a multiplies the strong residual, which holds them.
 template <class Element, class Scatter>

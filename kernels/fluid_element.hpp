@@ -80,15 +80,15 @@ KOKKOS_INLINE_FUNCTION void shape_functions_at(const GeometryView& geometry, con
 //   history(a, 0..2) nodal BDF history H;  force(a, 0..2) nodal body force f
 //   gradient         nodal projected velocity gradient G_a (9 per node, G_a[3i+j] = ∂_j u_i),
 //                    read when coef.viscous_reconstruction is on (else may be null)
-//   subscale         when not null (Scalar = double only): subscale[a][i] += ∫ N_a τ_M r_i dV,
-//                    the moments of PSPG's subscale velocity u' = −τ_M r (see
-//                    FluidSubscaleFunctor)
+//   subscale         when not null: subscale[a][i] += ∫ N_a τ_M r_i dV, the moments of
+//                    PSPG's subscale velocity u' = −τ_M r (FluidSubscaleFunctor; in dual
+//                    numbers their derivative along a direction, FluidSubscaleActionFunctor)
 template <class Element, class Scalar, class GeometryView>
 KOKKOS_INLINE_FUNCTION void fluid_element_residual(
     const FluidCoefficients& coef, const GeometryView& geometry, const int e, const double h,
     const Scalar (&state)[Element::nodes][4], const double (&frozen)[Element::nodes][3],
     const double (&history)[Element::nodes][3], const double (&force)[Element::nodes][3],
-    const Scalar* gradient, Scalar (&residual)[Element::nodes][4], double (*subscale)[3] = nullptr) {
+    const Scalar* gradient, Scalar (&residual)[Element::nodes][4], Scalar (*subscale)[3] = nullptr) {
   constexpr int n = Element::nodes;
   const double re = coef.reynolds;
   for (int q = 0; q < Element::quadrature_points; ++q) {
@@ -159,10 +159,9 @@ KOKKOS_INLINE_FUNCTION void fluid_element_residual(
       flux[3][i] = (dv * tau) * strong[i];
     }
     source[3] = dv * divergence;
-    if constexpr (std::is_same<Scalar, double>::value)
-      if (subscale)
-        for (int a = 0; a < n; ++a)
-          for (int i = 0; i < 3; ++i) subscale[a][i] += shape[a] * flux[3][i];
+    if (subscale)
+      for (int a = 0; a < n; ++a)
+        for (int i = 0; i < 3; ++i) subscale[a][i] += shape[a] * flux[3][i];
     for (int a = 0; a < n; ++a)
       for (int c = 0; c < 4; ++c)
         residual[a][c] += shape[a] * source[c] + grad[a][0] * flux[c][0] + grad[a][1] * flux[c][1] +

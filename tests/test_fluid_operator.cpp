@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Sparse>
+#include <KokkosBlas1_nrm2.hpp>
 #include <KokkosBlas1_update.hpp>
 #include <Kokkos_Random.hpp>
 
@@ -174,6 +175,27 @@ TEST_P(FluidOperatorOn, LinearActionEqualsJacobianActionInStokesLimit) {
   p.op.jacobian_action(p.state, p.direction, jacobian);
   p.op.linear_action(p.direction, linear);
   testing::expectAllClose(linear, jacobian, 1e-13, 1e-13);
+}
+
+TEST_P(FluidOperatorOn, SubscaleVelocityActionIsTheLinearPartOfTheSubscaleVelocity) {
+  // In the Stokes limit τ_M depends on Δt and h alone, so u'(U) is affine in U and its
+  // derivative along δ is u'(U + δ) − u'(U) exactly (the sources cancel), with and without
+  // the projected viscous term (whose gradient of δ the action projects itself).
+  for (int reconstruction : {0, 1}) {
+    TinyProblem p(GetParam(), 0, reconstruction);
+    const int n = p.mesh.num_unknowns();
+    Vector action("action", n), at_state("at_state", n), shifted("shifted", n), at_shifted("at_shifted", n),
+        expected("expected", n);
+    p.op.subscale_velocity_action(p.state, p.direction, action);
+    p.op.subscale_velocity(p.state, at_state);
+    KokkosBlas::update(1.0, p.state, 1.0, p.direction, 0.0, shifted);
+    p.op.subscale_velocity(shifted, at_shifted);
+    KokkosBlas::update(1.0, at_shifted, -1.0, at_state, 0.0, expected);
+    std::printf("viscous reconstruction %d: |u'_delta| %.3e, relative difference from u'(U + delta) - u'(U) %.2e\n",
+                reconstruction, KokkosBlas::nrm2(action), testing::relativeDifference(action, expected));
+    EXPECT_GT(KokkosBlas::nrm2(action), 1e-3 * KokkosBlas::nrm2(at_state));  // not trivially zero
+    testing::expectAllClose(action, expected, 1e-11, 1e-13);
+  }
 }
 
 TEST_P(FluidOperatorOn, DiagonalBlocksMatchAssembledMatrix) {

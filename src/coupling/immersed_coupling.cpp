@@ -165,7 +165,8 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
   // 3. the fluid
   if (stiffness_) {
     times.time(stiffness_stage, [&] { stiffness_->linearize(dt); });
-    fluid_.set_immersed_stiffness(stiffness_.get());
+    // The cells move with u_h + u' when total_velocity_ is there: Ŝ then acts on it.
+    fluid_.set_immersed_stiffness(stiffness_.get(), total_velocity_.extent(0) > 0);
   }
   report.fluid = times.time(fluid_stage, [&] { return fluid_.advance(dt, scheme); });
   if (stiffness_) fluid_.set_immersed_stiffness(nullptr);

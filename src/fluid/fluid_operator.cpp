@@ -142,6 +142,21 @@ void BasicFluidOperator<ExecSpace>::residual(const ConstVector& state, const Con
   if (constrained_rows) apply_dirichlet_rows<ExecSpace>(dirichlet_dofs_, dirichlet_values_, state, state, true, result);
 }
 
+namespace {
+// u'_a = −M_a / m_a from the moments M in `result`, on the velocity entries; none on the
+// pressure and Dirichlet entries.
+template <class ExecSpace>
+void project_subscale_moments(const Kokkos::View<const double*>& lumped_mass, const Kokkos::View<const int*>& dirichlet_dofs,
+                              const Vector& result) {
+  Kokkos::parallel_for(
+      "rouleau::FluidOperator::subscale_velocity::divide", Kokkos::RangePolicy<ExecSpace>(0, result.extent(0)),
+      KOKKOS_LAMBDA(const int k) { result(k) = k % 4 == 3 ? 0.0 : -result(k) / lumped_mass(k / 4); });
+  Kokkos::parallel_for(
+      "rouleau::FluidOperator::subscale_velocity::dirichlet", Kokkos::RangePolicy<ExecSpace>(0, dirichlet_dofs.extent(0)),
+      KOKKOS_LAMBDA(const int i) { result(dirichlet_dofs(i)) = 0.0; });
+}
+}  // namespace
+
 template <class ExecSpace>
 void BasicFluidOperator<ExecSpace>::subscale_velocity(const ConstVector& state, const Vector& result) const {
   ProfilingRegion region("rouleau::FluidOperator::subscale_velocity");
@@ -153,15 +168,24 @@ void BasicFluidOperator<ExecSpace>::subscale_velocity(const ConstVector& state, 
         element_data(), state, history_, body_force_, state_gradient_, load, lumped_mass_, scatter};
     for_each_element("rouleau::FluidOperator::subscale_velocity", f, scatter, result);
   });
-  // u'_a = −M_a / m_a on the velocity entries; none on the pressure and Dirichlet entries
-  auto mass = lumped_mass_;
-  Kokkos::parallel_for(
-      "rouleau::FluidOperator::subscale_velocity::divide", Kokkos::RangePolicy<ExecSpace>(0, result.extent(0)),
-      KOKKOS_LAMBDA(const int k) { result(k) = k % 4 == 3 ? 0.0 : -result(k) / mass(k / 4); });
-  auto dofs = dirichlet_dofs_;
-  Kokkos::parallel_for(
-      "rouleau::FluidOperator::subscale_velocity::dirichlet", Kokkos::RangePolicy<ExecSpace>(0, dofs.extent(0)),
-      KOKKOS_LAMBDA(const int i) { result(dofs(i)) = 0.0; });
+  project_subscale_moments<ExecSpace>(lumped_mass_, dirichlet_dofs_, result);
+}
+
+template <class ExecSpace>
+void BasicFluidOperator<ExecSpace>::subscale_velocity_action(const ConstVector& state, const ConstVector& direction,
+                                                             const Vector& result) const {
+  ProfilingRegion region("rouleau::FluidOperator::subscale_velocity_action");
+  if (coefficients_.viscous_reconstruction) {
+    project_gradient(state, state_gradient_);
+    project_gradient(direction, direction_gradient_);
+  }
+  Scatter& scatter = zeroed_scatter(unknowns_scatter_, result.extent(0), "rouleau::FluidOperator::unknowns_scatter");
+  visit_fluid_element(mesh_.element_type, [&](auto element) {
+    FluidSubscaleActionFunctor<decltype(element), Scatter> f{
+        element_data(), state, direction, history_, body_force_, state_gradient_, direction_gradient_, scatter};
+    for_each_element("rouleau::FluidOperator::subscale_velocity_action", f, scatter, result);
+  });
+  project_subscale_moments<ExecSpace>(lumped_mass_, dirichlet_dofs_, result);
 }
 
 template <class ExecSpace>

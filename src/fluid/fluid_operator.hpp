@@ -58,6 +58,10 @@ class BasicFluidOperator {
   // entries; pressure entries and Dirichlet velocity entries 0): u'_a = −(1/m_a) ∫ N_a τ_M r,
   // r the strong momentum residual with the current sources (FluidSubscaleFunctor).
   void subscale_velocity(const ConstVector& state, const Vector& result) const;
+  // result = its derivative along `direction` with τ frozen at `state`, projected the same
+  // way (FluidSubscaleActionFunctor): the linear part of u' that the semi-implicit
+  // coupling's Jacobian needs when the cells move with u_h + u'.
+  void subscale_velocity_action(const ConstVector& state, const ConstVector& direction, const Vector& result) const;
 
   // The sources of the residual: BDF history H and nodal body force f (scaled, node-
   // interleaved like the state; only the velocity entries are read). Empty = zero.

@@ -166,7 +166,7 @@ std::vector<std::array<double, 3>> FluidSolver::boundary_forces(const std::vecto
   const FluidMesh& mesh = operator_.mesh();
   // One residual without constraint rows and one host copy for all the sides asked.
   operator_.residual(state_, state_, residual_, false);
-  add_immersed_stiffness(state_, residual_, false);
+  add_immersed_stiffness(state_, residual_, false, StiffnessArgument::state);
   auto r = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), residual_);
   std::vector<std::array<double, 3>> forces;
   for (const std::string& side : sides) {
@@ -257,17 +257,31 @@ void FluidSolver::set_immersed_forces_in_stabilization(bool in_stabilization) {
   operator_.set_immersed_load_in_stabilization(in_stabilization);
 }
 
-void FluidSolver::set_immersed_stiffness(const LinearOperator* stiffness) {
+void FluidSolver::set_immersed_stiffness(const LinearOperator* stiffness, bool moves_with_subscale) {
   immersed_stiffness_ = stiffness;
+  stiffness_moves_with_subscale_ = moves_with_subscale;
   if (stiffness && stiffness_action_.extent(0) == 0) {
     stiffness_action_ = Vector("rouleau::FluidSolver::stiffness_action", state_.extent(0));
     stiffness_stabilization_ = Vector("rouleau::FluidSolver::stiffness_stabilization", state_.extent(0));
   }
+  if (stiffness && moves_with_subscale && stiffness_carrier_.extent(0) == 0)
+    stiffness_carrier_ = Vector("rouleau::FluidSolver::stiffness_carrier", state_.extent(0));
 }
 
-void FluidSolver::add_immersed_stiffness(const ConstVector& x, const Vector& y, bool skip_constrained) const {
+void FluidSolver::add_immersed_stiffness(const ConstVector& x, const Vector& y, bool skip_constrained,
+                                         StiffnessArgument argument) const {
   if (!immersed_stiffness_) return;
-  immersed_stiffness_->apply(x, stiffness_action_);
+  ConstVector carrier = x;
+  if (stiffness_moves_with_subscale_) {
+    // c = x + u'(x) for the state, x + u'_x (τ frozen at the state) for a direction.
+    if (argument == StiffnessArgument::state)
+      operator_.subscale_velocity(x, stiffness_carrier_);
+    else
+      operator_.subscale_velocity_action(state_, x, stiffness_carrier_);
+    KokkosBlas::axpy(1.0, x, stiffness_carrier_);
+    carrier = stiffness_carrier_;
+  }
+  immersed_stiffness_->apply(carrier, stiffness_action_);
   // Ŝx is minus the change of the immersed loads; that change enters the stabilization's
   // strong residual as the loads do: Ŝx − P(Ŝx), P = FluidOperator::load_stabilization.
   if (operator_.immersed_load_in_stabilization()) {
@@ -319,7 +333,7 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history) {
     rhs_norm = KokkosBlas::nrm2(residual_);
   }
   operator_.residual(state_, state_, residual_);
-  add_immersed_stiffness(state_, residual_, true);
+  add_immersed_stiffness(state_, residual_, true, StiffnessArgument::state);
   double norm = KokkosBlas::nrm2(residual_);
   report.initial_residual = norm;
   const double target = linear ? std::fmax(settings_.newton_atol, settings_.gmres_rtol * rhs_norm)
@@ -351,14 +365,16 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history) {
     Kokkos::deep_copy(correction_, 0.0);
     FluidJacobian::AddStiffness add_stiffness;
     if (immersed_stiffness_)
-      add_stiffness = [this](const ConstVector& x, const Vector& y) { add_immersed_stiffness(x, y, true); };
+      add_stiffness = [this](const ConstVector& x, const Vector& y) {
+        add_immersed_stiffness(x, y, true, StiffnessArgument::direction);
+      };
     FluidJacobian J(operator_, state_, state_gradient_, linear, add_stiffness);
     const GmresResult g = gmres_.solve(J, M, residual_, correction_, forcing);
     report.gmres_iterations += g.iterations;
     ++report.newton_iterations;
     KokkosBlas::axpby(1.0, correction_, 1.0, state_);
     operator_.residual(state_, state_, residual_);
-    add_immersed_stiffness(state_, residual_, true);
+    add_immersed_stiffness(state_, residual_, true, StiffnessArgument::state);
     norm = KokkosBlas::nrm2(residual_);
     if (spdlog::should_log(spdlog::level::debug)) {
       double momentum = 0.0, continuity = 0.0;

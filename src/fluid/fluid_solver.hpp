@@ -65,8 +65,12 @@ class FluidSolver {
   // −P(Ŝ U) of that change of the loads when the immersed forces are in the
   // stabilization. ImmersedCoupling passes Ŝ U = −S K I (Δt U) / (P L²)
   // (coupling/cell_stiffness.hpp); null turns it off. The operator must outlive its use;
-  // the preconditioner does not see it.
-  void set_immersed_stiffness(const LinearOperator* stiffness);
+  // the preconditioner does not see it. When the cells move with the whole velocity
+  // u_h + u' (`moves_with_subscale`), Ŝ acts on that instead of on U's velocity: the
+  // residual gains Ŝ (U + u'(U)) and the Jacobian Ŝ (δ + u'_δ), u'_δ the derivative of u'
+  // along δ with τ frozen (FluidOperator::subscale_velocity_action), so the forces the
+  // fluid solves with are those of the motion total_velocity() gives the cells.
+  void set_immersed_stiffness(const LinearOperator* stiffness, bool moves_with_subscale = false);
 
   // Sets the velocity everywhere to velocity(x) [μm/s] at the nodes x [μm] (an initial
   // condition; Dirichlet values are imposed again afterwards).
@@ -114,9 +118,13 @@ class FluidSolver {
   FluidSolveReport solve(const ConstVector& history);
   // The operator's coefficients for a BDF mass coefficient α0/Δt and 1/Δt (scaled; 0, 0: steady).
   void set_time_coefficients(double mass_coefficient, double inverse_dt);
-  // y += Ŝ x, the immersed stiffness's action, left out of the constrained rows when
-  // `skip_constrained` (Jacobian and residual rows that hold the boundary conditions).
-  void add_immersed_stiffness(const ConstVector& x, const Vector& y, bool skip_constrained) const;
+  // y += Ŝ c(x), the immersed stiffness's action on the velocity c(x) the cells move
+  // with, left out of the constrained rows when `skip_constrained` (Jacobian and residual
+  // rows that hold the boundary conditions). c(x) = x, or with the subscale velocity
+  // x + u'(x) for the state (a residual) and x + u'_x for a direction (a Jacobian action).
+  enum class StiffnessArgument { state, direction };
+  void add_immersed_stiffness(const ConstVector& x, const Vector& y, bool skip_constrained,
+                              StiffnessArgument argument) const;
   // Rebuilds the configured preconditioner from the Jacobian at the current state.
   void rebuild_preconditioner();
   const Preconditioner& preconditioner() const;
@@ -131,6 +139,8 @@ class FluidSolver {
   Vector immersed_load_;           // the immersed forces (scaled), when there are cells
   const LinearOperator* immersed_stiffness_ = nullptr;  // Ŝ of the semi-implicit coupling, or null
   Vector stiffness_action_, stiffness_stabilization_;  // Ŝ x and P(Ŝ x) (scratch)
+  bool stiffness_moves_with_subscale_ = false;         // Ŝ acts on x + u' (set_immersed_stiffness)
+  Vector stiffness_carrier_;                           // x + u' (scratch)
   Vector residual_;  // also scratch for boundary_forces() (const)
   Vector state_gradient_;  // G(U) during a Krylov solve
   BlockJacobi block_jacobi_;

@@ -260,6 +260,41 @@ struct FluidSubscaleFunctor {
   }
 };
 
+namespace detail {
+// Element e's residual r (and, when `moments` is not null, the subscale moments) at
+// U + εδ in dual numbers, τ frozen at U: their derivatives along δ are the Jacobian action
+// J(U)δ and the moments' derivative. The sources enter as in the residual.
+template <class Element>
+KOKKOS_INLINE_FUNCTION void directional_element_residual(
+    const FluidElementData& data, const int e, const Kokkos::View<const double*>& state,
+    const Kokkos::View<const double*>& direction, const Kokkos::View<const double*>& history,
+    const Kokkos::View<const double*>& force, const Kokkos::View<const double*>& gradient,
+    const Kokkos::View<const double*>& direction_gradient, Dual<1> (&r)[Element::nodes][4],
+    Dual<1> (*moments)[3] = nullptr) {
+  constexpr int n = Element::nodes;
+  double u[n][4], du[n][4], uf[n][3], h[n][3], f[n][3];
+  Dual<1> x[n][4];
+  gather_nodal<Element, 4>(state, data, e, u);
+  gather_nodal<Element, 4>(direction, data, e, du);
+  gather_nodal<Element, 3>(history, data, e, h);
+  gather_nodal<Element, 3>(force, data, e, f);
+  for (int a = 0; a < n; ++a) {
+    for (int c = 0; c < 3; ++c) uf[a][c] = u[a][c];
+    for (int c = 0; c < 4; ++c) {
+      x[a][c] = Dual<1>(u[a][c]);
+      x[a][c].derivative[0] = du[a][c];
+      r[a][c] = Dual<1>(0.0);
+    }
+    if (moments)
+      for (int c = 0; c < 3; ++c) moments[a][c] = Dual<1>(0.0);
+  }
+  Dual<1> g[n * 9];
+  if (data.coefficients.viscous_reconstruction) gather_gradient<Element, Dual<1>>(gradient, direction_gradient, data, e, g);
+  fluid_element_residual<Element, Dual<1>>(data.coefficients, data.geometry, e, data.element_size(e), x, uf, h, f, g,
+                                           r, moments);
+}
+}  // namespace detail
+
 // The derivative of the subscale moments along a direction δ, with τ frozen at `state`:
 // D_ai = d/dε ∫ N_a τ_M r_i(U + εδ) dV, in dual numbers as FluidJacobianActionFunctor
 // differentiates the residual; u'_a's derivative is −D_a / m_a. The sources and the
@@ -273,28 +308,9 @@ struct FluidSubscaleActionFunctor {
 
   KOKKOS_INLINE_FUNCTION void operator()(const int e) const {
     constexpr int n = Element::nodes;
-    double u[n][4], du[n][4], uf[n][3], h[n][3], f[n][3];
-    Dual<1> x[n][4], r[n][4], m[n][3];
-    detail::gather_nodal<Element, 4>(state, data, e, u);
-    detail::gather_nodal<Element, 4>(direction, data, e, du);
-    detail::gather_nodal<Element, 3>(history, data, e, h);
-    detail::gather_nodal<Element, 3>(force, data, e, f);
-    for (int a = 0; a < n; ++a) {
-      for (int c = 0; c < 3; ++c) {
-        uf[a][c] = u[a][c];
-        m[a][c] = Dual<1>(0.0);
-      }
-      for (int c = 0; c < 4; ++c) {
-        x[a][c] = Dual<1>(u[a][c]);
-        x[a][c].derivative[0] = du[a][c];
-        r[a][c] = Dual<1>(0.0);
-      }
-    }
-    Dual<1> g[n * 9];
-    if (data.coefficients.viscous_reconstruction)
-      detail::gather_gradient<Element, Dual<1>>(gradient, direction_gradient, data, e, g);
-    fluid_element_residual<Element, Dual<1>>(data.coefficients, data.geometry, e, data.element_size(e), x, uf, h, f,
-                                             g, r, m);
+    Dual<1> r[n][4], m[n][3];
+    detail::directional_element_residual<Element>(data, e, state, direction, history, force, gradient,
+                                                  direction_gradient, r, m);
     auto out = moments.access();
     for (int a = 0; a < n; ++a) {
       const int base = 4 * data.element_dof_nodes(e, a);
@@ -314,25 +330,9 @@ struct FluidJacobianActionFunctor {
 
   KOKKOS_INLINE_FUNCTION void operator()(const int e) const {
     constexpr int n = Element::nodes;
-    double u[n][4], du[n][4], uf[n][3], h[n][3], f[n][3];
-    Dual<1> x[n][4], r[n][4];
-    detail::gather_nodal<Element, 4>(state, data, e, u);
-    detail::gather_nodal<Element, 4>(direction, data, e, du);
-    detail::gather_nodal<Element, 3>(history, data, e, h);
-    detail::gather_nodal<Element, 3>(force, data, e, f);
-    for (int a = 0; a < n; ++a) {
-      for (int c = 0; c < 3; ++c) uf[a][c] = u[a][c];
-      for (int c = 0; c < 4; ++c) {
-        x[a][c] = Dual<1>(u[a][c]);
-        x[a][c].derivative[0] = du[a][c];
-        r[a][c] = Dual<1>(0.0);
-      }
-    }
-    Dual<1> g[n * 9];
-    if (data.coefficients.viscous_reconstruction)
-      detail::gather_gradient<Element, Dual<1>>(gradient, direction_gradient, data, e, g);
-    fluid_element_residual<Element, Dual<1>>(data.coefficients, data.geometry, e, data.element_size(e), x, uf, h, f,
-                                             g, r);
+    Dual<1> r[n][4];
+    detail::directional_element_residual<Element>(data, e, state, direction, history, force, gradient,
+                                                  direction_gradient, r);
     auto out = action.access();
     for (int a = 0; a < n; ++a) {
       const int base = 4 * data.element_dof_nodes(e, a);

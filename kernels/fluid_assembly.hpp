@@ -54,16 +54,18 @@ KOKKOS_INLINE_FUNCTION void to_force_density(const Kokkos::View<const double*>& 
     for (int i = 0; i < 3; ++i) b[a][i] *= inverse_mass;
   }
 }
-// The 9 projected gradient entries of each of element e's nodes, as Scalar; the
-// derivative part (when Scalar is Dual<1>) from `direction_gradient` if it is not empty.
+// The 9 projected gradient entries of each of element e's nodes, as Scalar (zero when
+// `gradient` is empty); the derivative part (when Scalar is Dual<1>) from
+// `direction_gradient` if it is not empty.
 template <class Element, class Scalar>
 KOKKOS_INLINE_FUNCTION void gather_gradient(const Kokkos::View<const double*>& gradient,
                                             const Kokkos::View<const double*>& direction_gradient,
                                             const FluidElementData& d, int e, Scalar (&out)[Element::nodes * 9]) {
+  const bool present = gradient.extent(0) > 0;
   for (int a = 0; a < Element::nodes; ++a) {
     const int base = 9 * d.element_dof_nodes(e, a);
     for (int k = 0; k < 9; ++k) {
-      out[9 * a + k] = Scalar(gradient(base + k));
+      out[9 * a + k] = Scalar(present ? gradient(base + k) : 0.0);
       if constexpr (!std::is_same<Scalar, double>::value)
         if (direction_gradient.extent(0) > 0) out[9 * a + k].derivative[0] = direction_gradient(base + k);
     }
@@ -298,7 +300,8 @@ KOKKOS_INLINE_FUNCTION void directional_element_residual(
 // The derivative of the subscale moments along a direction δ, with τ frozen at `state`:
 // D_ai = d/dε ∫ N_a τ_M r_i(U + εδ) dV, in dual numbers as FluidJacobianActionFunctor
 // differentiates the residual; u'_a's derivative is −D_a / m_a. The sources and the
-// immersed loads' share do not depend on the state and drop out.
+// immersed loads' share do not depend on the state and drop out, and so does the projected
+// gradient of U (the viscous term is linear in it): `gradient` may be empty.
 template <class Element, class Scatter>
 struct FluidSubscaleActionFunctor {
   FluidElementData data;

@@ -175,14 +175,12 @@ template <class ExecSpace>
 void BasicFluidOperator<ExecSpace>::subscale_velocity_action(const ConstVector& state, const ConstVector& direction,
                                                              const Vector& result) const {
   ProfilingRegion region("rouleau::FluidOperator::subscale_velocity_action");
-  if (coefficients_.viscous_reconstruction) {
-    project_gradient(state, state_gradient_);
-    project_gradient(direction, direction_gradient_);
-  }
+  // The derivative needs the projected gradient of δ, not of U (FluidSubscaleActionFunctor).
+  if (coefficients_.viscous_reconstruction) project_gradient(direction, direction_gradient_);
   Scatter& scatter = zeroed_scatter(unknowns_scatter_, result.extent(0), "rouleau::FluidOperator::unknowns_scatter");
   visit_fluid_element(mesh_.element_type, [&](auto element) {
     FluidSubscaleActionFunctor<decltype(element), Scatter> f{
-        element_data(), state, direction, history_, body_force_, state_gradient_, direction_gradient_, scatter};
+        element_data(), state, direction, history_, body_force_, ConstVector(), direction_gradient_, scatter};
     for_each_element("rouleau::FluidOperator::subscale_velocity_action", f, scatter, result);
   });
   project_subscale_moments<ExecSpace>(lumped_mass_, dirichlet_dofs_, result);

@@ -159,6 +159,25 @@ TEST(Restart, RestartRefusesAFolderWithoutCheckpointsAndADamagedCheckpoint) {
   EXPECT_NE(resumed.err.find("restarted from " + listed[1].second), std::string::npos) << resumed.err;
 }
 
+TEST(Restart, RestartWithAnotherStepEndsAtTheEndTime) {
+  // The plasma shear flow to 0.04 s in steps of 0.01 s, continued with steps of 0.005 s to
+  // 0.06 s: the run ends at 0.06 s after four more steps. (Counting the steps from zero with
+  // the new step, 0.06 / 0.005 = 12, it ran eight more, to 0.08 s: the capillary's run,
+  // restarted at half its step, went on past its end.)
+  const std::string out = fresh_output_dir("restart_new_step");
+  const Outcome run = run_rouleau("run " + cases_dir + "/shear_flow/case.toml --no-progress --out " + out +
+                                  " --set time.dt_s=0.01 --set time.end_s=0.04 --set output.fields=false"
+                                  " --set output.diagnostics_every_steps=1");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const Outcome resumed = run_rouleau("run --restart " + out +
+                                      " --no-progress --set time.dt_s=0.005 --set time.end_s=0.06");
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  const auto rows = rouleau::read_diagnostics(out + "/diagnostics.csv");
+  ASSERT_EQ(rows.size(), 8u);
+  EXPECT_NEAR(rows.back().at("time_s"), 0.06, 1e-12);
+  EXPECT_NEAR(rows[4].at("time_s"), 0.045, 1e-12);
+}
+
 // Starts the plasma shear flow with 20 000 steps of 1 ms (and `settings`, "key=value")
 // in the background, stderr into `err_path`, and returns once its step-0 checkpoint is
 // written (setup done) and `settle` more has passed, so that steps are under way.

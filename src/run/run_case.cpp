@@ -292,8 +292,11 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
         write_fields();
         write_checkpoint();
       }
-      const int steps = static_cast<int>(std::llround(config.time.end / config.time.dt));
+      // The run ends at the time time.end, whatever step a restart continues with: the
+      // steps left are (end − t) / Δt from where it starts.
       const int first_step = simulation.steps() + 1;
+      const int steps = simulation.steps() + static_cast<int>(std::max<long long>(
+                                                 0, std::llround((config.time.end - simulation.time()) / config.time.dt)));
       ProgressReporter progress(steps, config.time.end, stderr_is_terminal(), std::cerr);
       for (int step = first_step; step <= steps; ++step) {
         const FluidSolveReport& report = simulation.advance().fluid;

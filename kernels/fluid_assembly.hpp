@@ -299,21 +299,20 @@ KOKKOS_INLINE_FUNCTION void directional_element_residual(
 
 // The derivative of the subscale moments along a direction δ, with τ frozen at `state`:
 // D_ai = d/dε ∫ N_a τ_M r_i(U + εδ) dV, in dual numbers as FluidJacobianActionFunctor
-// differentiates the residual; u'_a's derivative is −D_a / m_a. The sources and the
-// immersed loads' share do not depend on the state and drop out, and so does the projected
-// gradient of U (the viscous term is linear in it): `gradient` may be empty.
+// differentiates the residual; u'_a's derivative is −D_a / m_a. The sources, the immersed
+// loads' share and the projected gradient of U do not change with the state along δ (the
+// viscous term is linear in the gradient) and drop out: none is read.
 template <class Element, class Scatter>
 struct FluidSubscaleActionFunctor {
   FluidElementData data;
-  Kokkos::View<const double*> state, direction, history, force;
-  Kokkos::View<const double*> gradient, direction_gradient;  // G(U), G(δ) (viscous reconstruction)
+  Kokkos::View<const double*> state, direction;
+  Kokkos::View<const double*> direction_gradient;  // G(δ) (viscous reconstruction)
   Scatter moments;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int e) const {
     constexpr int n = Element::nodes;
     Dual<1> r[n][4], m[n][3];
-    detail::directional_element_residual<Element>(data, e, state, direction, history, force, gradient,
-                                                  direction_gradient, r, m);
+    detail::directional_element_residual<Element>(data, e, state, direction, {}, {}, {}, direction_gradient, r, m);
     auto out = moments.access();
     for (int a = 0; a < n; ++a) {
       const int base = 4 * data.element_dof_nodes(e, a);

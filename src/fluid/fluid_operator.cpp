@@ -180,7 +180,7 @@ void BasicFluidOperator<ExecSpace>::subscale_velocity_action(const ConstVector& 
   Scatter& scatter = zeroed_scatter(unknowns_scatter_, result.extent(0), "rouleau::FluidOperator::unknowns_scatter");
   visit_fluid_element(mesh_.element_type, [&](auto element) {
     FluidSubscaleActionFunctor<decltype(element), Scatter> f{
-        element_data(), state, direction, history_, body_force_, ConstVector(), direction_gradient_, scatter};
+        element_data(), state, direction, direction_gradient_, scatter};
     for_each_element("rouleau::FluidOperator::subscale_velocity_action", f, scatter, result);
   });
   project_subscale_moments<ExecSpace>(lumped_mass_, dirichlet_dofs_, result);

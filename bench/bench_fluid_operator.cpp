@@ -7,8 +7,8 @@
 //   BM_LinearAction/n     Aδ, the Stokes limit (convection 0)
 //   BM_Residual/n         R(U) with τ frozen at U, same setting as BM_JacobianAction
 //   BM_Triad/n            a = b + s·c over as many bytes as BM_JacobianAction/n moves
-//   BM_StokesSolve/n/pc   one steady Stokes solve of a manufactured problem (pc 1: block
-//                         Jacobi, 0: none), one iteration, GMRES iterations reported
+//   BM_StokesSolve/n/pc   one steady Stokes solve of a manufactured problem (pc 0: none, 1: block
+//                         Jacobi, 2: ILU(0), 3: aggregation multigrid), one iteration, GMRES iterations reported
 //   BM_VesselJacobianAction/n, BM_VesselLinearAction/n
 //                         the same passes on a Gmsh tube (R = 5 μm, L = 40 μm) of 4-node
 //                         tetrahedra with about as many nodes as the box's (n + 1)³
@@ -234,10 +234,11 @@ std::array<double, 3> stokes_force(const std::array<double, 3>& x) {
 
 void BM_StokesSolve(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
-  // range(1): 0 no preconditioner, 1 block Jacobi, 2 ILU(0)
-  const rouleau::PreconditionerType preconditioner[3] = {
-      rouleau::PreconditionerType::none, rouleau::PreconditionerType::block_jacobi, rouleau::PreconditionerType::ilu0};
-  const char* preconditioner_name[3] = {"no preconditioner", "block Jacobi", "ILU(0)"};
+  // range(1): 0 no preconditioner, 1 block Jacobi, 2 ILU(0), 3 aggregation multigrid
+  const rouleau::PreconditionerType preconditioner[4] = {
+      rouleau::PreconditionerType::none, rouleau::PreconditionerType::block_jacobi, rouleau::PreconditionerType::ilu0,
+      rouleau::PreconditionerType::multigrid};
+  const char* preconditioner_name[4] = {"no preconditioner", "block Jacobi", "ILU(0)", "aggregation multigrid"};
   const int choice = static_cast<int>(state.range(1));
   const FluidMesh mesh = rouleau::make_box_mesh({0, 0, 0}, {1, 1, 1}, {n, n, n}, {1, 1, 1}, {false, false, false});
   rouleau::FluidConfig fluid;
@@ -305,6 +306,12 @@ BENCHMARK(BM_VesselJacobianAction)->Apply(vessel_sizes);
 BENCHMARK(BM_VesselLinearAction)->Apply(vessel_sizes);
 BENCHMARK(BM_StokesSolve)
     ->ArgNames({"n", "preconditioner"})
+    ->Args({8, 3})
+    ->Args({16, 3})
+    ->Args({24, 3})
+    ->Args({32, 3})
+    ->Args({48, 3})
+    ->Args({64, 3})
     ->Args({8, 2})
     ->Args({16, 2})
     ->Args({24, 2})

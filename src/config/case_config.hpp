@@ -83,7 +83,7 @@ struct TimeConfig {
 };
 
 enum class StokesChoice { automatic, on, off };
-enum class PreconditionerType { none, block_jacobi, ilu0 };
+enum class PreconditionerType { none, block_jacobi, ilu0, multigrid };
 
 struct SolverConfig {
   StokesChoice stokes = StokesChoice::automatic;  // key stokes = "auto" | "on" | "off"

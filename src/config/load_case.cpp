@@ -604,7 +604,7 @@ void read_solver(const TableReader& root, SolverConfig& solver) {
   assign(solver.gmres_rtol, section.number("gmres_rtol", Range::open(0, 1)));
   assign(solver.gmres_max_iterations, section.integer("gmres_max_iterations", iteration_count));
   assign(solver.preconditioner,
-         section.choice("preconditioner", choices_of({PreconditionerType::ilu0, PreconditionerType::block_jacobi,
+         section.choice("preconditioner", choices_of({PreconditionerType::ilu0, PreconditionerType::multigrid, PreconditionerType::block_jacobi,
                                                                PreconditionerType::none})));
 }
 
@@ -931,6 +931,7 @@ const char* toml_name(PreconditionerType type) {
   switch (type) {
     case PreconditionerType::ilu0: return "ilu0";
     case PreconditionerType::block_jacobi: return "block_jacobi";
+    case PreconditionerType::multigrid: return "multigrid";
     case PreconditionerType::none: break;
   }
   return "none";

@@ -106,11 +106,14 @@ FluidSolver::FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid,
   state_gradient_ = Vector("rouleau::FluidSolver::state_gradient", 9 * mesh.num_dof_nodes);
   operator_.set_dirichlet(boundary_.dirichlet_dofs, boundary_.dirichlet_values);
   operator_.set_nodal_load(boundary_.traction_load);
-  if (settings_.preconditioner == PreconditionerType::ilu0) {
+  if (settings_.preconditioner == PreconditionerType::ilu0 || settings_.preconditioner == PreconditionerType::multigrid) {
     matrix_graph_ = build_fluid_matrix_graph(mesh);
     matrix_values_ = Vector("rouleau::FluidSolver::matrix_values", matrix_graph_.entries.extent(0));
-    ilu0_ = std::make_unique<Ilu0Preconditioner>(matrix_graph_.row_map, matrix_graph_.entries);
   }
+  if (settings_.preconditioner == PreconditionerType::ilu0)
+    ilu0_ = std::make_unique<Ilu0Preconditioner>(matrix_graph_.row_map, matrix_graph_.entries);
+  if (settings_.preconditioner == PreconditionerType::multigrid)
+    multigrid_ = std::make_unique<AggregationMultigrid>(matrix_graph_, fluid_node_strength(mesh));
   operator_.impose_dirichlet(state_);
   set_uniform_body_force(fluid.body_force);
 }
@@ -303,6 +306,10 @@ void FluidSolver::rebuild_preconditioner() {
       operator_.assemble_jacobian(state_, matrix_graph_, matrix_values_);
       ilu0_->factor(matrix_values_);
       break;
+    case PreconditionerType::multigrid:
+      operator_.assemble_jacobian(state_, matrix_graph_, matrix_values_);
+      multigrid_->set_values(matrix_values_);
+      break;
     case PreconditionerType::none:
       break;
   }
@@ -312,6 +319,7 @@ const Preconditioner& FluidSolver::preconditioner() const {
   switch (settings_.preconditioner) {
     case PreconditionerType::block_jacobi: return block_jacobi_;
     case PreconditionerType::ilu0: return *ilu0_;
+    case PreconditionerType::multigrid: return *multigrid_;
     case PreconditionerType::none: break;
   }
   return identity_;

@@ -16,6 +16,7 @@
 #include "fluid/fluid_matrix.hpp"
 #include "io/checkpoint_file.hpp"
 #include "solver/block_jacobi.hpp"
+#include "solver/aggregation_multigrid.hpp"
 #include "solver/ilu0_preconditioner.hpp"
 #include "solver/gmres.hpp"
 
@@ -145,9 +146,10 @@ class FluidSolver {
   Vector state_gradient_;  // G(U) during a Krylov solve
   BlockJacobi block_jacobi_;
   IdentityPreconditioner identity_;
-  FluidMatrixGraph matrix_graph_;               // ILU(0): the assembled Jacobian's graph,
+  FluidMatrixGraph matrix_graph_;               // ILU(0), multigrid: the assembled Jacobian's graph,
   Vector matrix_values_;                        // its values,
   std::unique_ptr<Ilu0Preconditioner> ilu0_;    // and the factorization
+  std::unique_ptr<AggregationMultigrid> multigrid_;  // or the hierarchy
   Gmres gmres_;
   bool preconditioner_current_ = false;  // Stokes: J is constant while dt is
   double last_mass_coefficient_ = -1.0;

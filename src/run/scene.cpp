@@ -26,6 +26,10 @@ std::vector<Stage> plan_stages(const CaseConfig& config, const DerivedQuantities
     case PreconditionerType::ilu0:
       preconditioner = std::string("ILU(0) of the assembled Jacobian (KokkosKernels spiluk/sptrsv), ") + when;
       break;
+    case PreconditionerType::multigrid:
+      preconditioner = std::string("aggregation multigrid W-cycle (pairwise aggregates, ILU(0) smoothing, sparse LU "
+                                   "on the coarsest level) of the assembled Jacobian, ") + when;
+      break;
     case PreconditionerType::block_jacobi:
       preconditioner = std::string("point-block Jacobi (4x4 node blocks), ") + when;
       break;

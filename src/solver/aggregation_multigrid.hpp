@@ -1,0 +1,81 @@
+#pragma once
+// An aggregation multigrid preconditioner for the assembled fluid Jacobian (4×4 node
+// blocks: u, v, w, p per node), built for the saddle-point systems of the stabilized
+// equal-order Navier–Stokes equations, where one-level preconditioners need more GMRES
+// iterations the finer the mesh (ILU(0): 20, 40, 65, 92 at 8³…32³; bench/README.md).
+//
+// Hierarchy (once per mesh): nodes are aggregated by pairwise matching on a geometric
+// strength graph (weight 1/|x_a − x_b|² between nodes that share an element;
+// solver/pairwise_aggregation.hpp), three passes per level, until at most
+// `coarsest_nodes` remain. The prolongation P is piecewise constant and keeps the node
+// blocks: (P z_c)(4a + i) = z_c(4 I(a) + i); the restriction is Pᵀ.
+// Values (every rebuild): Galerkin coarse operators A_{l+1} = Pᵀ A_l P, summed as 4×4
+// blocks on the device (each coarse block gathers its fine blocks: no atomics, a fixed
+// summation order), ILU(0) of every level but the coarsest, and a sparse LU of the
+// coarsest (Eigen, on the host).
+// Apply (one W-cycle: a fixed linear operator, so plain GMRES may use it), on level l
+// from x = 0:
+//   x = S⁻¹ b;  twice: x += P cycle_{l+1}(Pᵀ (b − A x));  x += S⁻¹ (b − A x)
+// with S the level's ILU(0). A piecewise-constant P gives coarse operators too stiff for
+// the smooth error they must correct, so a V-cycle (one coarse visit) loses accuracy with
+// every level; visiting the coarse level twice (or a Krylov K-cycle, Notay 2010) recovers
+// it. Measured on the Stokes manufactured problem of bench_fluid_operator (GMRES
+// iterations to 1e-8 at n³ = 8³ … 48³): V-cycle 13 and 19 at 16³ and 24³ (growing with the
+// number of levels); W-cycle 10, 12, 16, 11, 14; ILU(0) alone 19, 35, 36 at 8³ … 24³.
+#include <Kokkos_Core.hpp>
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fluid/fluid_matrix.hpp"
+#include "solver/linear_operator.hpp"
+#include "host_algebra/pairwise_aggregation.hpp"
+
+namespace rouleau {
+
+struct AggregationMultigridSettings {
+  int pairwise_passes = 3;                // aggregates of up to 2³ nodes per level
+  int coarsest_nodes = 200;               // solved by sparse LU
+  int max_levels = 12;
+  int cycle_index = 2;                    // coarse corrections per visit: 1 V-cycle, 2 W-cycle
+};
+
+class AggregationMultigrid final : public Preconditioner {
+ public:
+  // `fine_graph`: the node-block graph of A; `strength`: the node graph's weights.
+  AggregationMultigrid(const FluidMatrixGraph& fine_graph, const WeightedGraph& strength,
+                       const AggregationMultigridSettings& settings = {});
+  ~AggregationMultigrid() override;
+  AggregationMultigrid(const AggregationMultigrid&) = delete;
+  AggregationMultigrid& operator=(const AggregationMultigrid&) = delete;
+
+  // The numeric setup from the fine matrix's values on `fine_graph` (kept by reference:
+  // the fine level smooths and forms residuals with these values).
+  void set_values(const Kokkos::View<double*>& fine_values);
+  void apply(const Kokkos::View<const double*>& r, const Kokkos::View<double*>& z) const override;
+
+  int num_levels() const { return static_cast<int>(levels_.size()); }
+  // Nodes and stored matrix entries of each level, finest first.
+  std::vector<int> level_nodes() const;
+  std::vector<std::size_t> level_entries() const;
+  // "aggregation multigrid, 3 levels of 4913 → 617 → 80 nodes", for logs.
+  std::string describe() const;
+  // Level l's matrix (graph and values after set_values) and, but on the coarsest level,
+  // the coarse node of each of its nodes (a host copy): for tests against a serial
+  // reference of the Galerkin products and the cycle.
+  const FluidMatrixGraph& level_graph(int l) const;
+  Kokkos::View<double*> level_values(int l) const;
+  std::vector<int> level_aggregates(int l) const;
+
+ private:
+  struct Level;
+  struct CoarsestSolver;
+  void cycle(int level) const;
+
+  AggregationMultigridSettings settings_;
+  std::vector<std::unique_ptr<Level>> levels_;
+  std::unique_ptr<CoarsestSolver> coarsest_;
+};
+
+}  // namespace rouleau

@@ -821,4 +821,16 @@ TEST(CellPlacement, UnknownKindAndBadKind) {
   EXPECT_EQ(bad.key(), "cell_kinds.normal");
 }
 
+TEST(CellPlacement, AHugeCellIsRejectedBeforeItIsSampled) {
+  // A diameter of 6782 μm (a fuzzer's find) would have needed 6.4e9 surface samples for the
+  // placement check and exhausted the memory: it is refused against the kind, at once.
+  CaseConfig config = shear_box_case();
+  config.cells = {placed("normal", {20, 10, 10})};
+  for (auto& kind : config.cell_kinds)
+    if (kind.name == "normal") kind.diameter = 6782.0;
+  const InputError error = placement_error(config);
+  EXPECT_EQ(error.key(), "cell_kinds.normal");
+  EXPECT_NE(error.reason().find("the cell is too large"), std::string::npos);
+}
+
 }  // namespace

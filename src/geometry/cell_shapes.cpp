@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <iomanip>
 #include <sstream>
 #include <stdexcept>
 
@@ -489,6 +490,18 @@ std::vector<std::array<double, 3>> cell_surface_samples(const CellKindConfig& ki
   validate_cell_kind(kind);
   if (!(spacing > 0.0 && std::isfinite(spacing)))
     throw std::invalid_argument("cell_surface_samples: the spacing must be positive, not " + std::to_string(spacing));
+  // No body holds more surface than the sphere of its diameter, π D²: past a few million
+  // samples the cell is far larger than any mesh could resolve (and sampling it would
+  // exhaust the memory before the placement check could say so).
+  constexpr double most_samples = 2e6;
+  const double estimated_samples = pi * kind.diameter * kind.diameter / (spacing * spacing);
+  if (estimated_samples > most_samples) {
+    std::ostringstream reason;
+    reason << "diameter_um = " << kind.diameter << " would need about " << std::setprecision(2) << estimated_samples
+           << " surface samples at the placement check's spacing of " << spacing
+           << " um (at most 2e+06): the cell is too large";
+    throw std::runtime_error(reason.str());
+  }
   switch (kind.shape) {
     case CellShape::rbc: return rbc_surface_samples(0.5 * kind.diameter, spacing);
     case CellShape::sphere: return sphere_surface_samples(0.5 * kind.diameter, spacing);

@@ -52,8 +52,10 @@ void SparseDirectSolver::factor(const std::vector<double>& values) {
 
 void SparseDirectSolver::solve(const double* b, double* x) const {
   const Factorization& f = *factorization_;
-  const Eigen::VectorXd solution = f.lu.solve(Eigen::Map<const Eigen::VectorXd>(b, f.n));
-  Eigen::Map<Eigen::VectorXd>(x, f.n) = solution;
+  // Evaluated straight into x (SparseLU copies b into x, then solves in place): no
+  // temporary vector per call; the multigrid calls this in every cycle.
+  Eigen::Map<Eigen::VectorXd> solution(x, f.n);
+  solution = f.lu.solve(Eigen::Map<const Eigen::VectorXd>(b, f.n));
 }
 
 }  // namespace rouleau

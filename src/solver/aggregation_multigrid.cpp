@@ -14,6 +14,7 @@ namespace {
 
 using IntView = Kokkos::View<int*>;
 using DoubleView = Kokkos::View<double*>;
+using ConstView = Kokkos::View<const double*>;
 
 IntView device_copy(const std::vector<int>& host, const std::string& label) {
   IntView view("rouleau::AggregationMultigrid::" + label, host.size());
@@ -83,11 +84,12 @@ AggregationMultigrid::AggregationMultigrid(const FluidMatrixGraph& fine_graph, c
     level->graph = graph;
     level->block_row = device_copy(block_rows(offsets), "block_row");
     const std::size_t rows = 4 * static_cast<std::size_t>(nodes);
-    level->rhs = DoubleView("rouleau::AggregationMultigrid::rhs", rows);
-    level->solution = DoubleView("rouleau::AggregationMultigrid::solution", rows);
     level->residual = DoubleView("rouleau::AggregationMultigrid::residual", rows);
-    if (!levels_.empty())
+    if (!levels_.empty()) {  // the finest level uses the fine values and apply()'s r and z
+      level->rhs = DoubleView("rouleau::AggregationMultigrid::rhs", rows);
+      level->solution = DoubleView("rouleau::AggregationMultigrid::solution", rows);
       level->values = DoubleView("rouleau::AggregationMultigrid::values", graph.entries.extent(0));
+    }
     const bool last = nodes <= settings_.coarsest_nodes || static_cast<int>(levels_.size()) + 1 >= settings_.max_levels;
     if (!last) {
       Aggregation aggregation = aggregate_pairwise(level_strength, settings_.pairwise_passes);
@@ -149,8 +151,9 @@ AggregationMultigrid::AggregationMultigrid(const FluidMatrixGraph& fine_graph, c
   coarsest_->lu = std::make_unique<SparseDirectSolver>(
       last.graph.num_rows, std::vector<std::size_t>(row_map.data(), row_map.data() + row_map.extent(0)),
       std::vector<int>(entries.data(), entries.data() + entries.extent(0)));
-  coarsest_->rhs = Kokkos::create_mirror_view(last.rhs);
-  coarsest_->solution = Kokkos::create_mirror_view(last.solution);
+  coarsest_->rhs = Kokkos::View<double*>::HostMirror("rouleau::AggregationMultigrid::coarsest_rhs", last.graph.num_rows);
+  coarsest_->solution =
+      Kokkos::View<double*>::HostMirror("rouleau::AggregationMultigrid::coarsest_solution", last.graph.num_rows);
   coarsest_->values.resize(entries.extent(0));
 }
 
@@ -191,7 +194,7 @@ void AggregationMultigrid::set_values(const Kokkos::View<double*>& fine_values) 
 namespace {
 
 // residual = rhs − A x on a level's CRS matrix.
-void crs_residual(const FluidMatrixGraph& graph, const DoubleView& values, const DoubleView& rhs, const DoubleView& x,
+void crs_residual(const FluidMatrixGraph& graph, const DoubleView& values, const ConstView& rhs, const DoubleView& x,
                   const DoubleView& residual) {
   const auto row_map = graph.row_map;
   const auto entries = graph.entries;
@@ -234,35 +237,35 @@ void add(const DoubleView& correction, const DoubleView& solution) {
 
 }  // namespace
 
-void AggregationMultigrid::cycle(int l) const {
+void AggregationMultigrid::cycle(int l, const Kokkos::View<const double*>& rhs,
+                                 const Kokkos::View<double*>& solution) const {
   const Level& level = *levels_[l];
   if (l + 1 == num_levels()) {
-    Kokkos::deep_copy(coarsest_->rhs, level.rhs);
+    Kokkos::deep_copy(coarsest_->rhs, rhs);
     coarsest_->lu->solve(coarsest_->rhs.data(), coarsest_->solution.data());
-    Kokkos::deep_copy(level.solution, coarsest_->solution);
+    Kokkos::deep_copy(solution, coarsest_->solution);
     return;
   }
   const Level& coarse = *levels_[l + 1];
   // Pre-smoothing from x = 0: x = S⁻¹ b.
-  level.smoother->apply(level.rhs, level.solution);
+  level.smoother->apply(rhs, solution);
   // The coarse-grid correction, `cycle_index` times (1: V-cycle, 2: W-cycle).
   for (int visit = 0; visit < settings_.cycle_index; ++visit) {
-    crs_residual(level.graph, level.values, level.rhs, level.solution, level.residual);
+    crs_residual(level.graph, level.values, rhs, solution, level.residual);
     restrict_to_coarse(level.member_offsets, level.members, level.residual, coarse.rhs);
-    cycle(l + 1);
-    prolong_and_add(level.aggregate_of, coarse.solution, level.solution);
+    cycle(l + 1, coarse.rhs, coarse.solution);
+    prolong_and_add(level.aggregate_of, coarse.solution, solution);
   }
   // Post-smoothing: x += S⁻¹ (b − A x).
-  crs_residual(level.graph, level.values, level.rhs, level.solution, level.residual);
+  crs_residual(level.graph, level.values, rhs, solution, level.residual);
   level.smoother->apply(level.residual, level.residual);
-  add(level.residual, level.solution);
+  add(level.residual, solution);
 }
 
 void AggregationMultigrid::apply(const Kokkos::View<const double*>& r, const Kokkos::View<double*>& z) const {
   ProfilingRegion region("rouleau::AggregationMultigrid::cycle");
-  Kokkos::deep_copy(levels_.front()->rhs, r);
-  cycle(0);
-  Kokkos::deep_copy(z, levels_.front()->solution);
+  // The finest level works on r and z themselves: no copies per GMRES iteration.
+  cycle(0, r, z);
 }
 
 std::vector<int> AggregationMultigrid::level_nodes() const {

@@ -71,7 +71,8 @@ class AggregationMultigrid final : public Preconditioner {
  private:
   struct Level;
   struct CoarsestSolver;
-  void cycle(int level) const;
+  // One cycle on level l: solution = M_l⁻¹ rhs (the level's own vectors below the finest).
+  void cycle(int level, const Kokkos::View<const double*>& rhs, const Kokkos::View<double*>& solution) const;
 
   AggregationMultigridSettings settings_;
   std::vector<std::unique_ptr<Level>> levels_;

@@ -4,7 +4,9 @@
 //
 //   BM_JacobianAction/n   J(U)δ, Navier–Stokes (convection 1, Re 1, transient BDF1
 //                         coefficients, history and body force set), dual numbers
-//   BM_LinearAction/n     Aδ, the Stokes limit (convection 0)
+//   BM_LinearAction/n/path  Aδ, the Stokes limit (convection 0); path 0: element by element,
+//                         path 1: the uniform-box stencil from one reference element
+//                         (fluid/uniform_box_stencil.hpp), what FluidSolver runs on such a box
 //   BM_Residual/n         R(U) with τ frozen at U, same setting as BM_JacobianAction
 //   BM_Triad/n            a = b + s·c over as many bytes as BM_JacobianAction/n moves
 //   BM_StokesSolve/n/pc   one steady Stokes solve of a manufactured problem (pc 0: none, 1: block
@@ -25,6 +27,9 @@
 //   jacobian_action: state, direction, BDF history, body force     (4 vectors)
 //   residual:        state (= frozen, the same View), history, force (3 vectors)
 //   linear_action:   direction                                       (1 vector)
+// The stencil path needs no element data: its model is the direction read and the result
+// written once (8 doubles per node); its two-pass form also writes and reads the projected
+// gradient (18 doubles per node), which the model does not count.
 // Dirichlet rows (O(n²) entries) and the ScatterView's per-thread copies are not
 // counted: the latter are an implementation cost, which is what the ratio exposes.
 // The triad counts 3 arrays × 8 bytes per entry (STREAM convention, no write-allocate).
@@ -59,13 +64,14 @@ using rouleau::bench::bytes_per_int;
 using rouleau::bench::time_applications;
 constexpr double geometry_doubles_per_element = 8.0 * rouleau::geometry_entries;  // hexahedra
 
-enum class Pass { jacobian_action, linear_action, residual };
+enum class Pass { jacobian_action, linear_action, residual, stencil_linear_action };
 
 int vectors_read(Pass pass) {
   switch (pass) {
     case Pass::jacobian_action: return 4;
     case Pass::residual: return 3;
-    case Pass::linear_action: return 1;
+    case Pass::linear_action:
+    case Pass::stencil_linear_action: return 1;
   }
   return 0;
 }
@@ -75,7 +81,8 @@ double operator_bytes(const FluidMesh& mesh, Pass pass) {
   const double unknowns = mesh.num_unknowns();
   const double geometry_doubles = rouleau::fluid_quadrature_points(mesh.element_type) * rouleau::geometry_entries;
   const double per_element = (geometry_doubles + 1.0) * bytes_per_double + mesh.nodes_per_element * bytes_per_int;
-  return (vectors_read(pass) + 1) * unknowns * bytes_per_double + mesh.num_elements * per_element;
+  const double elements = pass == Pass::stencil_linear_action ? 0.0 : mesh.num_elements;
+  return (vectors_read(pass) + 1) * unknowns * bytes_per_double + elements * per_element;
 }
 
 enum class Domain { box, tube };
@@ -182,11 +189,20 @@ void jacobian_action(benchmark::State& state, Domain domain) {
   set_operator_counters(state, p.mesh, Pass::jacobian_action);
 }
 
+// Aδ; on the box, range(1) picks the path (0: element by element, 1: the stencil).
 void linear_action(benchmark::State& state, Domain domain) {
   OperatorProblem& p = problem(static_cast<int>(state.range(0)), domain);
   p.stokes();
+  const bool stencil = domain == Domain::box && state.range(1) == 1;
+  p.op.allow_stencil(stencil);
+  if (stencil && !p.op.uses_stencil()) {
+    state.SkipWithError(("no stencil path: " + p.op.stencil_unavailable_reason()).c_str());
+    return;
+  }
   time_applications(state, [&] { p.op.linear_action(p.direction, p.result); });
-  set_operator_counters(state, p.mesh, Pass::linear_action);
+  p.op.allow_stencil(true);
+  set_operator_counters(state, p.mesh, stencil ? Pass::stencil_linear_action : Pass::linear_action);
+  state.SetLabel(stencil ? "stencil" : "element by element");
 }
 
 void BM_JacobianAction(benchmark::State& state) { jacobian_action(state, Domain::box); }
@@ -296,7 +312,11 @@ void operator_sizes(benchmark::internal::Benchmark* b) {
 }
 BENCHMARK(BM_Triad)->Apply(operator_sizes);
 BENCHMARK(BM_JacobianAction)->Apply(operator_sizes);
-BENCHMARK(BM_LinearAction)->Apply(operator_sizes);
+BENCHMARK(BM_LinearAction)
+    ->ArgNames({"n", "path"})
+    ->ArgsProduct({{16, 32, 48, 64}, {0, 1}})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Residual)->Apply(operator_sizes);
 // Tubes of about 17³, 33³, 49³ nodes, as the boxes of n = 16, 32, 48.
 void vessel_sizes(benchmark::internal::Benchmark* b) {

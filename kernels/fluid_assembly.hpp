@@ -73,6 +73,39 @@ KOKKOS_INLINE_FUNCTION void gather_gradient(const Kokkos::View<const double*>& g
 }
 }  // namespace detail
 
+// The element's moments of the velocity gradient and its lumped mass:
+//   integral[a][3i + j] = ∫ N_a ∂_j u_i dV,   mass[a] = ∫ N_a dV.
+template <class Element, class GeometryView>
+KOKKOS_INLINE_FUNCTION void element_gradient_moments(const GeometryView& geometry, const int e,
+                                                     const double (&u)[Element::nodes][4],
+                                                     double (&integral)[Element::nodes][9],
+                                                     double (&mass)[Element::nodes]) {
+  constexpr int n = Element::nodes;
+  for (int a = 0; a < n; ++a) {
+    mass[a] = 0.0;
+    for (int k = 0; k < 9; ++k) integral[a][k] = 0.0;
+  }
+  for (int q = 0; q < Element::quadrature_points; ++q) {
+    double xi[3];
+    Element::quadrature_point(q, xi);
+    double grad_u[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    for (int a = 0; a < n; ++a)
+      for (int d = 0; d < 3; ++d) {
+        const double g = Element::shape_gradient(a, 0, xi) * geometry(e, q, d) +
+                         Element::shape_gradient(a, 1, xi) * geometry(e, q, 3 + d) +
+                         Element::shape_gradient(a, 2, xi) * geometry(e, q, 6 + d);
+        for (int i = 0; i < 3; ++i) grad_u[i][d] += u[a][i] * g;
+      }
+    const double dv = geometry(e, q, 9);
+    for (int a = 0; a < n; ++a) {
+      const double w = Element::shape(a, xi) * dv;
+      mass[a] += w;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) integral[a][3 * i + j] += w * grad_u[i][j];
+    }
+  }
+}
+
 // Lumped L2 projection of the velocity gradient onto the nodes, first half:
 //   out(9·a + 3i + j) += ∫ N_a ∂_j u_i dV,   lumped_mass(a) += ∫ N_a dV (when non-empty).
 // Dividing by the lumped mass gives G_a.
@@ -89,29 +122,7 @@ struct FluidGradientProjectionFunctor {
     double u[n][4];
     detail::gather_nodal<Element, 4>(state, data, e, u);
     double integral[n][9], mass[n];
-    for (int a = 0; a < n; ++a) {
-      mass[a] = 0.0;
-      for (int k = 0; k < 9; ++k) integral[a][k] = 0.0;
-    }
-    for (int q = 0; q < Element::quadrature_points; ++q) {
-      double xi[3];
-      Element::quadrature_point(q, xi);
-      double grad_u[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-      for (int a = 0; a < n; ++a)
-        for (int d = 0; d < 3; ++d) {
-          const double g = Element::shape_gradient(a, 0, xi) * data.geometry(e, q, d) +
-                           Element::shape_gradient(a, 1, xi) * data.geometry(e, q, 3 + d) +
-                           Element::shape_gradient(a, 2, xi) * data.geometry(e, q, 6 + d);
-          for (int i = 0; i < 3; ++i) grad_u[i][d] += u[a][i] * g;
-        }
-      const double dv = data.geometry(e, q, 9);
-      for (int a = 0; a < n; ++a) {
-        const double w = Element::shape(a, xi) * dv;
-        mass[a] += w;
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) integral[a][3 * i + j] += w * grad_u[i][j];
-      }
-    }
+    element_gradient_moments<Element>(data.geometry, e, u, integral, mass);
     auto out = gradient.access();
     for (int a = 0; a < n; ++a) {
       const int node = data.element_dof_nodes(e, a);

@@ -73,6 +73,15 @@ BasicFluidOperator<ExecSpace>::BasicFluidOperator(const FluidMesh& mesh, double 
                                                                     true};
     for_each_element("rouleau::FluidOperator::lumped_mass", mass, mass_scatter, lumped_mass_);
   });
+  stencil_ = BasicUniformBoxStencil<ExecSpace>(mesh_, geometry_, element_size_);
+}
+
+template <class ExecSpace>
+std::string BasicFluidOperator<ExecSpace>::stencil_unavailable_reason() const {
+  if (uses_stencil()) return "";
+  if (!stencil_allowed_) return "the stencil path is switched off";
+  if (coefficients_.convection) return "the convective term makes every element's matrix differ";
+  return stencil_.unavailable_reason();
 }
 
 template <class ExecSpace>
@@ -223,6 +232,11 @@ void BasicFluidOperator<ExecSpace>::linear_action(const ConstVector& direction, 
   ProfilingRegion region("rouleau::FluidOperator::linear_action");
   if (coefficients_.convection)
     throw std::logic_error("rouleau::FluidOperator::linear_action: the residual is not affine with convection on");
+  if (uses_stencil()) {
+    stencil_.apply(coefficients_, direction, result);
+    apply_dirichlet_rows<ExecSpace>(dirichlet_dofs_, dirichlet_values_, direction, direction, false, result);
+    return;
+  }
   Scatter& scatter = zeroed_scatter(unknowns_scatter_, result.extent(0), "rouleau::FluidOperator::unknowns_scatter");
   if (coefficients_.viscous_reconstruction) project_gradient(direction, direction_gradient_);
   const ConstVector none;

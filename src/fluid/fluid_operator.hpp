@@ -11,9 +11,11 @@
 // Quadrature geometry is computed once, at construction: the mesh never moves.
 #include <Kokkos_Core.hpp>
 #include <Kokkos_ScatterView.hpp>
+#include <string>
 #include <vector>
 
 #include "fluid/fluid_matrix.hpp"
+#include "fluid/uniform_box_stencil.hpp"
 #include "kernels/fluid_assembly.hpp"
 #include "mesh/fluid_mesh.hpp"
 
@@ -81,6 +83,14 @@ class BasicFluidOperator {
   void jacobian_action(const ConstVector& state, const ConstVector& state_gradient, const ConstVector& direction,
                        const Vector& result) const;
   void linear_action(const ConstVector& direction, const Vector& result) const;
+  // linear_action's path: on a uniform box (every element the same matrix) the Stokes
+  // operator runs as a stencil from one reference element (fluid/uniform_box_stencil.hpp)
+  // unless `allow` is false; elsewhere, and with `allow` false, element by element. The
+  // two agree to round-off.
+  void allow_stencil(bool allow) { stencil_allowed_ = allow; }
+  bool uses_stencil() const { return stencil_allowed_ && stencil_.available() && !coefficients_.convection; }
+  // Why the stencil is not used (empty when it is).
+  std::string stencil_unavailable_reason() const;
   // blocks(16·node + 4i + j) = ∂R_(node,i)/∂U_(node,j)
   void diagonal_blocks(const ConstVector& state, const Vector& blocks) const;
   // The global Jacobian in CRS form on `graph` (with identity Dirichlet rows), for
@@ -125,6 +135,8 @@ class BasicFluidOperator {
   mutable Kokkos::View<int*> colored_elements_;
   mutable std::vector<int> color_offsets_;
   Kokkos::View<double*> lumped_mass_;                        // Σ_e ∫ N_a dV per dof node
+  BasicUniformBoxStencil<ExecSpace> stencil_;
+  bool stencil_allowed_ = true;
   Kokkos::View<double*> state_gradient_, direction_gradient_;  // scratch for G(U), G(δ)
   // Persistent scatter buffers of the element loops (per-thread copies on CPUs, the
   // atomic target on GPUs), for results of the unknowns', gradients' and blocks' sizes.

@@ -108,6 +108,9 @@ class FluidSolver {
   void restore_state(const CheckpointData& data);
 
   const FluidOperator& fluid_operator() const { return operator_; }
+  // Lets the Stokes operator run as the uniform-box stencil where the mesh allows it
+  // (FluidOperator::allow_stencil; on by default).
+  void allow_stencil(bool allow) { operator_.allow_stencil(allow); }
   const FluidScales& scales() const { return scales_; }
   bool stokes() const { return stokes_; }
   // The scaled state (u/U, p/P interleaved per dof node).

@@ -21,6 +21,7 @@ FluidMesh make_box_mesh(const std::array<double, 3>& lower, const std::array<dou
   mesh.lower = lower;
   mesh.upper = upper;
   mesh.periodic = periodic;
+  mesh.structured_elements = elements;
   const int nx = elements[0], ny = elements[1], nz = elements[2];
   const int px = nx + 1, py = ny + 1, pz = nz + 1;  // geometric node planes
   std::array<std::vector<double>, 3> axis;

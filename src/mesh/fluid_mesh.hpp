@@ -46,6 +46,10 @@ struct FluidMesh {
 
   std::array<double, 3> lower{0, 0, 0}, upper{0, 0, 0};  // bounding box, μm
   std::array<bool, 3> periodic{false, false, false};
+  // A structured box of hexahedra (make_box_mesh): elements per direction, element
+  // (i, j, k) at index i + n_x (j + n_y k) and dof node (i, j, k) at i + d_x (j + d_y k),
+  // d = n in periodic directions and n + 1 otherwise. {0, 0, 0} for any other mesh.
+  std::array<int, 3> structured_elements{0, 0, 0};
 
   int num_unknowns() const { return fluid_unknowns_per_node * num_dof_nodes; }
   const BoundaryFaces& boundary(const std::string& name) const;

@@ -12,6 +12,7 @@ FluidMesh split_into_tetrahedra(const FluidMesh& hexahedra) {
     throw std::invalid_argument("rouleau::split_into_tetrahedra: the mesh is not made of hexahedra");
   FluidMesh mesh = hexahedra;
   mesh.element_type = FluidElementType::tetrahedron4;
+  mesh.structured_elements = {0, 0, 0};
   mesh.nodes_per_element = 4;
   mesh.num_elements = 6 * hexahedra.num_elements;
   // Corner offsets of the VTK hexahedron (see make_box_mesh) and the corner index of an offset.

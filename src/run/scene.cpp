@@ -2,12 +2,30 @@
 
 #include <map>
 #include <sstream>
+#include <string>
 
 #include "config/cell_kinds.hpp"
 #include "config/derived.hpp"
 #include "config/load_case.hpp"
 
 namespace rouleau {
+
+namespace {
+// Which path the Stokes operator takes (FluidOperator::uses_stencil decides the same from
+// the mesh itself).
+std::string fluid_operator_path(const CaseConfig& config, const DerivedQuantities& derived) {
+  const char* elementwise = "element by element, matrix-free";
+  if (config.vessel.enabled) return std::string(elementwise) + " (tetrahedra: every element has its own geometry)";
+  if (!derived.stokes)
+    return std::string(elementwise) + " (Navier–Stokes: the convective term makes every element's matrix differ)";
+  for (double grading : config.domain.wall_grading)
+    if (grading != 1.0) return std::string(elementwise) + " (a graded box: its elements differ)";
+  if (!config.scene.skip_unneeded_stages)
+    return std::string(elementwise) + " (scene.skip_unneeded_stages = false; a uniform box would allow the stencil)";
+  return "stencil from one reference element: a uniform box in the Stokes limit, where every element has the "
+         "same matrix (no per-element geometry; the same Aδ as element by element to round-off)";
+}
+}  // namespace
 
 std::vector<Stage> plan_stages(const CaseConfig& config, const DerivedQuantities& derived) {
   std::vector<Stage> stages;
@@ -19,6 +37,7 @@ std::vector<Stage> plan_stages(const CaseConfig& config, const DerivedQuantities
     fluid << "; " << (config.time.scheme == TimeScheme::bdf2 ? "BDF2" : "backward Euler") << " steps of "
           << config.time.dt << " s to " << config.time.end << " s";
   stages.push_back({"fluid", true, fluid.str()});
+  stages.push_back({"fluid operator", true, fluid_operator_path(config, derived)});
   std::string preconditioner;
   const char* when = derived.stokes ? "built once (the Stokes operator is constant while dt is)"
                                     : "rebuilt every Newton step";

@@ -36,6 +36,9 @@ Simulation::Simulation(const CaseConfig& config, const std::string& mesh_cache_d
     return std::make_unique<FluidSolver>(mesh_, config_.fluid, case_boundaries(config_), config_.solver, scales,
                                          derived_.stokes);
   });
+  // The stencil changes Aδ only by round-off; scene.skip_unneeded_stages = false keeps the
+  // element-by-element path for comparisons.
+  fluid_->allow_stencil(config_.scene.skip_unneeded_stages);
   cells_ = times_.time("cell meshes", [&] { return make_case_cells(config_, mesh_cache_dir); });
   // The cells move with the fluid in a time loop; a steady solve keeps them in place.
   if (cells_.population && config_.time.mode == TimeMode::transient)

@@ -253,6 +253,12 @@ TEST(RunCase, ExplainListsTheStokesLimitAndSkippedStages) {
   ASSERT_EQ(o.exit_code, 0) << o.err;
   EXPECT_NE(o.out.find("Stokes limit"), std::string::npos) << o.out;
   EXPECT_NE(o.out.find("[skip] Morse"), std::string::npos) << o.out;
+  // A uniform box in the Stokes limit: the operator runs as a stencil, unless skips are off.
+  EXPECT_NE(o.out.find("fluid operator: stencil from one reference element"), std::string::npos) << o.out;
+  const Outcome all = run_rouleau("run " + cases_dir + "/shear_flow/case.toml --explain --out " +
+                                  fresh_output_dir("explain_all") + " --set scene.skip_unneeded_stages=false");
+  ASSERT_EQ(all.exit_code, 0) << all.err;
+  EXPECT_NE(all.out.find("fluid operator: element by element"), std::string::npos) << all.out;
 }
 
 // A run that diverged before any periodic checkpoint names step 0's as the last good one.

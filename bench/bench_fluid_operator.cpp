@@ -49,6 +49,7 @@
 #include "fluid/fluid_operator.hpp"
 #include "fluid/fluid_element_types.hpp"
 #include "fluid/fluid_solver.hpp"
+#include "fluid/manufactured_solution.hpp"
 #include "geometry/mesh_cache.hpp"
 #include "mesh/fluid_mesh.hpp"
 
@@ -227,27 +228,6 @@ void BM_Triad(benchmark::State& state) {
                                                8 * bytes_per_int));
 }
 
-// The manufactured Stokes problem on the unit cube (k = π), divergence-free:
-//   u = (sin kx cos ky cos kz, cos kx sin ky cos kz, −2 cos kx cos ky sin kz),
-//   p = sin kx sin ky sin kz,  f = −Δu + ∇p = 3k² u + ∇p  (unit scales: μ = 1, L = U = 1).
-constexpr double pi = 3.14159265358979323846;
-
-std::array<double, 3> exact_velocity(const std::array<double, 3>& x) {
-  const double sx = std::sin(pi * x[0]), sy = std::sin(pi * x[1]), sz = std::sin(pi * x[2]);
-  const double cx = std::cos(pi * x[0]), cy = std::cos(pi * x[1]), cz = std::cos(pi * x[2]);
-  return {sx * cy * cz, cx * sy * cz, -2.0 * cx * cy * sz};
-}
-
-std::array<double, 3> stokes_force(const std::array<double, 3>& x) {
-  const double sx = std::sin(pi * x[0]), sy = std::sin(pi * x[1]), sz = std::sin(pi * x[2]);
-  const double cx = std::cos(pi * x[0]), cy = std::cos(pi * x[1]), cz = std::cos(pi * x[2]);
-  const auto u = exact_velocity(x);
-  const double grad_p[3] = {pi * cx * sy * sz, pi * sx * cy * sz, pi * sx * sy * cz};
-  std::array<double, 3> f;
-  for (int i = 0; i < 3; ++i) f[i] = 3.0 * pi * pi * u[i] + grad_p[i];
-  return f;
-}
-
 void BM_StokesSolve(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   // range(1): 0 no preconditioner, 1 block Jacobi, 2 ILU(0), 3 aggregation multigrid
@@ -276,14 +256,8 @@ void BM_StokesSolve(benchmark::State& state) {
     // the preconditioner is built inside solve_steady() and so is timed (for ILU(0) the
     // graph and symbolic factorization are built with the solver, outside).
     rouleau::FluidSolver solver(mesh, fluid, std::array<rouleau::BoundaryConfig, 6>{}, settings, scales, true);
-    solver.prescribe_boundary_velocity(exact_velocity);
-    auto coordinates = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
-    std::vector<double> force(3 * mesh.num_dof_nodes);
-    for (int node = 0; node < mesh.num_nodes; ++node) {
-      const auto f = stokes_force({coordinates(node, 0), coordinates(node, 1), coordinates(node, 2)});
-      for (int d = 0; d < 3; ++d) force[3 * mesh.dof_node_of_node[node] + d] = f[d];
-    }
-    solver.set_body_force(force);
+    // The manufactured Stokes problem (fluid/manufactured_solution.hpp, Re = 0).
+    rouleau::set_up_manufactured_problem(solver, mesh, rouleau::ManufacturedSolution{0.0});
     Kokkos::fence();
     Kokkos::Timer timer;
     report = solver.solve_steady();

@@ -8,6 +8,7 @@
 
 #include "fluid/fluid_errors.hpp"
 #include "fluid/fluid_solver.hpp"
+#include "fluid/manufactured_solution.hpp"
 #include "unit_fluid.hpp"
 
 namespace rouleau {
@@ -81,38 +82,7 @@ TEST(FluidFlows, PoiseuilleFlowConvergesAtSecondOrder) {
   EXPECT_LT(errors.back(), 1e-3);
 }
 
-// A divergence-free manufactured solution on the unit cube (k = π):
-//   u = (sin kx cos ky cos kz, cos kx sin ky cos kz, −2 cos kx cos ky sin kz),
-//   p = sin kx sin ky sin kz,
-// with the body force f = Re u·∇u − Δu + ∇p (Δu = −3k² u) that makes it exact.
-struct ManufacturedSolution {
-  double reynolds = 0.0;
-  static constexpr double k = 3.14159265358979323846;
-
-  KOKKOS_INLINE_FUNCTION void operator()(const double x[3], double u[3], double& p) const {
-    const double sx = sin(k * x[0]), sy = sin(k * x[1]), sz = sin(k * x[2]);
-    const double cx = cos(k * x[0]), cy = cos(k * x[1]), cz = cos(k * x[2]);
-    u[0] = sx * cy * cz;
-    u[1] = cx * sy * cz;
-    u[2] = -2.0 * cx * cy * sz;
-    p = sx * sy * sz;
-  }
-  std::array<double, 3> force(const double x[3]) const {
-    const double sx = std::sin(k * x[0]), sy = std::sin(k * x[1]), sz = std::sin(k * x[2]);
-    const double cx = std::cos(k * x[0]), cy = std::cos(k * x[1]), cz = std::cos(k * x[2]);
-    double u[3], p;
-    (*this)(x, u, p);
-    // ∇u (row i: gradient of u_i)
-    const double g[3][3] = {{k * cx * cy * cz, -k * sx * sy * cz, -k * sx * cy * sz},
-                            {-k * sx * sy * cz, k * cx * cy * cz, -k * cx * sy * sz},
-                            {2 * k * sx * cy * sz, 2 * k * cx * sy * sz, -2 * k * cx * cy * cz}};
-    const double grad_p[3] = {k * cx * sy * sz, k * sx * cy * sz, k * sx * sy * cz};
-    std::array<double, 3> f;
-    for (int i = 0; i < 3; ++i)
-      f[i] = reynolds * (u[0] * g[i][0] + u[1] * g[i][1] + u[2] * g[i][2]) + 3.0 * k * k * u[i] + grad_p[i];
-    return f;
-  }
-};
+// The manufactured solution: fluid/manufactured_solution.hpp.
 
 // Solves the manufactured problem on n³ elements; returns relative velocity and pressure errors.
 // On hexahedra, or on tetrahedra (the same nodes, each hexahedron cut in six).
@@ -128,19 +98,7 @@ std::pair<double, double> manufactured_errors(int n, double reynolds, bool stoke
   settings.preconditioner = preconditioner;
   FluidSolver solver(mesh, unit_fluid(reynolds), std::array<BoundaryConfig, 6>{}, settings, unit_scales(reynolds),
                      stokes);
-  solver.prescribe_boundary_velocity([&](const std::array<double, 3>& x) {
-    double u[3], p;
-    exact(x.data(), u, p);
-    return std::array<double, 3>{u[0], u[1], u[2]};
-  });
-  auto coordinates = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
-  std::vector<double> force(3 * mesh.num_dof_nodes);
-  for (int node = 0; node < mesh.num_nodes; ++node) {
-    const double x[3] = {coordinates(node, 0), coordinates(node, 1), coordinates(node, 2)};
-    const auto f = exact.force(x);
-    for (int d = 0; d < 3; ++d) force[3 * mesh.dof_node_of_node[node] + d] = f[d];
-  }
-  solver.set_body_force(force);
+  set_up_manufactured_problem(solver, mesh, exact);
   const FluidSolveReport report = solver.solve_steady();
   EXPECT_TRUE(report.converged) << report.failure;
   gmres_iterations = report.gmres_iterations;

@@ -47,6 +47,33 @@ inline void triad(benchmark::State& state, double bytes) {
   state.counters["MB/application"] = moved * 1e-6;
 }
 
+// The machine's achievable floating-point rate for this build (compiler flags, vector
+// width): every thread runs 16 independent chains of x = x·a + b in doubles, long enough
+// that memory plays no part; 2 flops per link (a multiply and an add, or one FMA where
+// the build allows it). Reported as GFLOP/s, the roof the compute-bound kernels meet.
+inline void peak_flops(benchmark::State& state) {
+  constexpr int chains = 24, links = 4096;
+  const int items = 64 * Kokkos::DefaultExecutionSpace().concurrency();
+  Kokkos::View<double*> sink("bench::peak_flops::sink", items);
+  time_applications(state, [&] {
+    Kokkos::parallel_for(
+        "bench::peak_flops", Kokkos::RangePolicy<Kokkos::DefaultExecutionSpace>(0, items),
+        KOKKOS_LAMBDA(const int i) {
+          double x[chains];
+          for (int c = 0; c < chains; ++c) x[c] = 1.0 + 1e-3 * (i + c);
+          const double a = 0.999999, b = 1e-7;
+          for (int k = 0; k < links; ++k)
+            for (int c = 0; c < chains; ++c) x[c] = x[c] * a + b;
+          double sum = 0.0;
+          for (int c = 0; c < chains; ++c) sum += x[c];
+          sink(i) = sum;
+        });
+  });
+  const double flops = 2.0 * chains * links * static_cast<double>(items);
+  state.counters["GFLOP/s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()) * flops * 1e-9, benchmark::Counter::kIsRate);
+}
+
 // The Kokkos execution space, its concurrency and the Kokkos version, in the context.
 inline void add_kokkos_context() {
   using Space = Kokkos::DefaultExecutionSpace;

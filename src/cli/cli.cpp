@@ -132,7 +132,16 @@ std::string case_summary(const CaseConfig& config, const DerivedQuantities& deri
                 config.name.c_str(), describe_fluid_domain(config).c_str(), derived.length_scale,
                 derived.velocity_scale, derived.pressure_scale, derived.reynolds, derived.stokes ? "yes" : "no",
                 derived.stokes_reason.c_str());
-  return text;
+  std::string summary = text;
+  // The explicit coupling's stable step, which the stability study (bench/stability.py)
+  // sets its time steps against.
+  if (derived.stable_dt > 0.0 && config.time.mode == TimeMode::transient) {
+    char step[160];
+    std::snprintf(step, sizeof(step), "dt        %g s; explicit stable step estimate %g s (", config.time.dt,
+                  derived.stable_dt);
+    summary += step + derived.stable_dt_reason + ")\n";
+  }
+  return summary;
 }
 
 CaseConfig load_run_case(const CommandLine& command_line, std::shared_ptr<const FoundCheckpoint>& restart,

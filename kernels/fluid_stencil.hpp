@@ -129,7 +129,7 @@ struct ReferenceElementColumnsFunctor {
 //   stencil(t, o, j): (Σ_e ∫ N_n ∂_j N_(n+o) dV) / m_n over the class's elements
 struct StencilGradientFunctor {
   StructuredDofNodes nodes;
-  Kokkos::View<const double***> stencil;  // [class][offset][3]
+  Kokkos::View<const double***, Kokkos::LayoutRight> stencil;  // [class][offset][3], rows contiguous
   Kokkos::View<const double*> direction;  // δ, 4 per node
   Kokkos::View<double*> gradient;         // G, 9 per node
 
@@ -137,7 +137,7 @@ struct StencilGradientFunctor {
     int ijk[3], plane[3][3];
     nodes.position(n, ijk);
     nodes.neighbor_planes(ijk, plane);
-    const int t = nodes.node_class(ijk);
+    const double* weights = &stencil(nodes.node_class(ijk), 0, 0);  // [offset][3]
     double g[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
     for (int oz = 0; oz < 3; ++oz) {
       if (plane[2][oz] < 0) continue;
@@ -146,12 +146,10 @@ struct StencilGradientFunctor {
         for (int ox = 0; ox < 3; ++ox) {
           if (plane[0][ox] < 0) continue;
           const int m = plane[0][ox] + plane[1][oy] + plane[2][oz];
-          const int offset = ox + 3 * oy + 9 * oz;
-          const double w[3] = {stencil(t, offset, 0), stencil(t, offset, 1), stencil(t, offset, 2)};
-          for (int i = 0; i < 3; ++i) {
-            const double u = direction(4 * m + i);
-            for (int j = 0; j < 3; ++j) g[3 * i + j] += w[j] * u;
-          }
+          const double* w = weights + 3 * (ox + 3 * oy + 9 * oz);
+          const double* u = &direction(4 * m);
+          for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) g[3 * i + j] += w[j] * u[i];
         }
       }
     }
@@ -160,13 +158,13 @@ struct StencilGradientFunctor {
 };
 
 // (Aδ)_n = Σ_o K[t(n)][o] δ_(n+o) + e_p Σ_o B[t(n)][o] · G_(n+o)
-//   block_stencil(t, o, 4i + j): the weight of δ_j at n + o in row i of node n
+//   block_stencil(t, o, 4j + i): the weight of δ_j at n + o in row i of node n (by columns)
 //   viscous_stencil(t, o, k):    the weight of G_k at n + o in node n's pressure row
 // (no G term when `gradient` is empty: viscous reconstruction off).
 struct StencilActionFunctor {
   StructuredDofNodes nodes;
-  Kokkos::View<const double***> block_stencil;    // [class][offset][16]
-  Kokkos::View<const double***> viscous_stencil;  // [class][offset][9]
+  Kokkos::View<const double***, Kokkos::LayoutRight> block_stencil;    // [class][offset][16], contiguous
+  Kokkos::View<const double***, Kokkos::LayoutRight> viscous_stencil;  // [class][offset][9], contiguous
   Kokkos::View<const double*> direction;          // δ, 4 per node
   Kokkos::View<const double*> gradient;           // G(δ), 9 per node, or empty
   Kokkos::View<double*> result;
@@ -176,7 +174,8 @@ struct StencilActionFunctor {
     nodes.position(n, ijk);
     nodes.neighbor_planes(ijk, plane);
     const int t = nodes.node_class(ijk);
-    const bool viscous = gradient.extent(0) > 0;
+    const double* blocks = &block_stencil(t, 0, 0);                                       // [offset][16]
+    const double* viscous = gradient.extent(0) > 0 ? &viscous_stencil(t, 0, 0) : nullptr;  // [offset][9]
     double r[4] = {0, 0, 0, 0};
     for (int oz = 0; oz < 3; ++oz) {
       if (plane[2][oz] < 0) continue;
@@ -186,12 +185,16 @@ struct StencilActionFunctor {
           if (plane[0][ox] < 0) continue;
           const int m = plane[0][ox] + plane[1][oy] + plane[2][oz];
           const int offset = ox + 3 * oy + 9 * oz;
-          const double d[4] = {direction(4 * m), direction(4 * m + 1), direction(4 * m + 2), direction(4 * m + 3)};
-          for (int i = 0; i < 4; ++i)
-            r[i] += block_stencil(t, offset, 4 * i) * d[0] + block_stencil(t, offset, 4 * i + 1) * d[1] +
-                    block_stencil(t, offset, 4 * i + 2) * d[2] + block_stencil(t, offset, 4 * i + 3) * d[3];
-          if (viscous)
-            for (int k = 0; k < 9; ++k) r[3] += viscous_stencil(t, offset, k) * gradient(9 * m + k);
+          const double* w = blocks + 16 * offset;
+          const double* d = &direction(4 * m);
+          // Column by column: r += column_j δ_j, four contiguous rows.
+          for (int j = 0; j < 4; ++j)
+            for (int i = 0; i < 4; ++i) r[i] += w[4 * j + i] * d[j];
+          if (viscous) {
+            const double* b = viscous + 9 * offset;
+            const double* g = &gradient(9 * m);
+            for (int k = 0; k < 9; ++k) r[3] += b[k] * g[k];
+          }
         }
       }
     }

@@ -81,11 +81,11 @@ BasicUniformBoxStencil<ExecSpace>::BasicUniformBoxStencil(const FluidMesh& mesh,
   }
   available_ = true;
   unavailable_reason_.clear();
-  block_stencil_ = Kokkos::View<double***>("rouleau::UniformBoxStencil::block_stencil", stencil_node_classes,
+  block_stencil_ = Table("rouleau::UniformBoxStencil::block_stencil", stencil_node_classes,
                                            stencil_offsets, 16);
-  viscous_stencil_ = Kokkos::View<double***>("rouleau::UniformBoxStencil::viscous_stencil", stencil_node_classes,
+  viscous_stencil_ = Table("rouleau::UniformBoxStencil::viscous_stencil", stencil_node_classes,
                                              stencil_offsets, 9);
-  gradient_stencil_ = Kokkos::View<double***>("rouleau::UniformBoxStencil::gradient_stencil", stencil_node_classes,
+  gradient_stencil_ = Table("rouleau::UniformBoxStencil::gradient_stencil", stencil_node_classes,
                                               stencil_offsets, 3);
   gradient_ = Kokkos::View<double*>("rouleau::UniformBoxStencil::gradient", 9 * mesh.num_dof_nodes);
 }
@@ -149,7 +149,7 @@ void BasicUniformBoxStencil<ExecSpace>::build_tables(const FluidCoefficients& c)
         const int b = hex_corner_index(other[0], other[1], other[2]);
         const int o = stencil_offset_index(other[0] - corner[0], other[1] - corner[1], other[2] - corner[2]);
         for (int i = 0; i < 4; ++i)
-          for (int j = 0; j < 4; ++j) block(t, o, 4 * i + j) += K(4 * b + j, 4 * a + i);
+          for (int j = 0; j < 4; ++j) block(t, o, 4 * j + i) += K(4 * b + j, 4 * a + i);
         for (int k = 0; k < 9; ++k) viscous(t, o, k) += B(9 * b + k, 4 * a + 3);
         for (int j = 0; j < 3; ++j) gradient(t, o, j) += P(3 * b, 9 * a + j);
       }

@@ -43,7 +43,9 @@ class BasicUniformBoxStencil {
   Kokkos::View<const double*> element_size_;
   mutable bool tables_built_ = false;
   mutable FluidCoefficients tables_coefficients_;
-  mutable Kokkos::View<double***> block_stencil_, viscous_stencil_, gradient_stencil_;
+  // [class][offset][entries], LayoutRight on every device: the kernels walk them by pointer.
+  using Table = Kokkos::View<double***, Kokkos::LayoutRight>;
+  mutable Table block_stencil_, viscous_stencil_, gradient_stencil_;
   mutable Kokkos::View<double*> gradient_;  // G(δ), 9 per dof node
 };
 

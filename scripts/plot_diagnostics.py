@@ -251,7 +251,10 @@ def plot_cross_sections(run_dir, case, plane, snapshots, folder, written):
             x = f["cells/coordinates"][()]
             cell = f["cells/cell_id"][()]
             time = float(f["time"][0])
-        if centre is None:  # the plane through the cells' mean centre at the first snapshot
+        # The plane through the cells' mean centre: fixed at the first snapshot in a vessel
+        # (its axis), followed from snapshot to snapshot in a box, where an aggregate can
+        # drift along the vorticity direction (the twelve cells moved 5-9 um in z over 3 s).
+        if centre is None or not along_vessel:
             centre = x[:, normal].mean()
         near = abs(x[:, normal] - centre) < 0.5
         panel.scatter(x[near, first], x[near, second], c=cell[near] % 10, cmap="tab10", vmin=0, vmax=9, s=3)

@@ -94,7 +94,10 @@ struct SolverConfig {
   int gmres_restart = 60;
   double gmres_rtol = 1e-8;                       // relative to the right-hand side
   int gmres_max_iterations = 3000;
-  PreconditionerType preconditioner = PreconditionerType::ilu0;
+  // The aggregation multigrid: on the work–precision study (bench/README.md) it is on the
+  // Pareto front from about 2e4 unknowns on, where every paper scene lies, and its 2–5×
+  // fewer GMRES iterations save the semi-implicit cells' force evaluation per iteration.
+  PreconditionerType preconditioner = PreconditionerType::multigrid;
 };
 
 // Scales of the nondimensional solver variables; 0 = derive from the case.

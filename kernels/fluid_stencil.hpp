@@ -63,6 +63,21 @@ struct StructuredDofNodes {
       stride *= planes[d];
     }
   }
+  // Calls visit(m, offset) for each neighbour m of the node at ijk inside the box (the node
+  // itself included), offset its stencil_offset_index, z slowest and x fastest.
+  template <class Visit>
+  KOKKOS_INLINE_FUNCTION void for_each_neighbor(const int (&ijk)[3], const Visit& visit) const {
+    int plane[3][3];
+    neighbor_planes(ijk, plane);
+    for (int oz = 0; oz < 3; ++oz) {
+      if (plane[2][oz] < 0) continue;
+      for (int oy = 0; oy < 3; ++oy) {
+        if (plane[1][oy] < 0) continue;
+        for (int ox = 0; ox < 3; ++ox)
+          if (plane[0][ox] >= 0) visit(plane[0][ox] + plane[1][oy] + plane[2][oz], ox + 3 * oy + 9 * oz);
+      }
+    }
+  }
   // The dof node at ijk + o (wrapped in periodic directions), or −1 outside the box.
   KOKKOS_INLINE_FUNCTION int neighbor(const int (&ijk)[3], const int (&o)[3]) const {
     int index = 0, stride = 1;
@@ -134,25 +149,16 @@ struct StencilGradientFunctor {
   Kokkos::View<double*> gradient;         // G, 9 per node
 
   KOKKOS_INLINE_FUNCTION void operator()(const int n) const {
-    int ijk[3], plane[3][3];
+    int ijk[3];
     nodes.position(n, ijk);
-    nodes.neighbor_planes(ijk, plane);
     const double* weights = &stencil(nodes.node_class(ijk), 0, 0);  // [offset][3]
     double g[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-    for (int oz = 0; oz < 3; ++oz) {
-      if (plane[2][oz] < 0) continue;
-      for (int oy = 0; oy < 3; ++oy) {
-        if (plane[1][oy] < 0) continue;
-        for (int ox = 0; ox < 3; ++ox) {
-          if (plane[0][ox] < 0) continue;
-          const int m = plane[0][ox] + plane[1][oy] + plane[2][oz];
-          const double* w = weights + 3 * (ox + 3 * oy + 9 * oz);
-          const double* u = &direction(4 * m);
-          for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) g[3 * i + j] += w[j] * u[i];
-        }
-      }
-    }
+    nodes.for_each_neighbor(ijk, [&](const int m, const int offset) {
+      const double* w = weights + 3 * offset;
+      const double* u = &direction(4 * m);
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) g[3 * i + j] += w[j] * u[i];
+    });
     for (int k = 0; k < 9; ++k) gradient(9 * n + k) = g[k];
   }
 };
@@ -170,34 +176,24 @@ struct StencilActionFunctor {
   Kokkos::View<double*> result;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int n) const {
-    int ijk[3], plane[3][3];
+    int ijk[3];
     nodes.position(n, ijk);
-    nodes.neighbor_planes(ijk, plane);
     const int t = nodes.node_class(ijk);
     const double* blocks = &block_stencil(t, 0, 0);                                       // [offset][16]
     const double* viscous = gradient.extent(0) > 0 ? &viscous_stencil(t, 0, 0) : nullptr;  // [offset][9]
     double r[4] = {0, 0, 0, 0};
-    for (int oz = 0; oz < 3; ++oz) {
-      if (plane[2][oz] < 0) continue;
-      for (int oy = 0; oy < 3; ++oy) {
-        if (plane[1][oy] < 0) continue;
-        for (int ox = 0; ox < 3; ++ox) {
-          if (plane[0][ox] < 0) continue;
-          const int m = plane[0][ox] + plane[1][oy] + plane[2][oz];
-          const int offset = ox + 3 * oy + 9 * oz;
-          const double* w = blocks + 16 * offset;
-          const double* d = &direction(4 * m);
-          // Column by column: r += column_j δ_j, four contiguous rows.
-          for (int j = 0; j < 4; ++j)
-            for (int i = 0; i < 4; ++i) r[i] += w[4 * j + i] * d[j];
-          if (viscous) {
-            const double* b = viscous + 9 * offset;
-            const double* g = &gradient(9 * m);
-            for (int k = 0; k < 9; ++k) r[3] += b[k] * g[k];
-          }
-        }
+    nodes.for_each_neighbor(ijk, [&](const int m, const int offset) {
+      const double* w = blocks + 16 * offset;
+      const double* d = &direction(4 * m);
+      // Column by column: r += column_j δ_j, four contiguous rows.
+      for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) r[i] += w[4 * j + i] * d[j];
+      if (viscous) {
+        const double* b = viscous + 9 * offset;
+        const double* g = &gradient(9 * m);
+        for (int k = 0; k < 9; ++k) r[3] += b[k] * g[k];
       }
-    }
+    });
     for (int i = 0; i < 4; ++i) result(4 * n + i) = r[i];
   }
 };

@@ -48,7 +48,7 @@ inline void triad(benchmark::State& state, double bytes) {
 }
 
 // The machine's achievable floating-point rate for this build (compiler flags, vector
-// width): every thread runs 16 independent chains of x = x·a + b in doubles, long enough
+// width): every thread runs 24 independent chains of x = x·a + b in doubles, long enough
 // that memory plays no part; 2 flops per link (a multiply and an add, or one FMA where
 // the build allows it). Reported as GFLOP/s, the roof the compute-bound kernels meet.
 inline void peak_flops(benchmark::State& state) {

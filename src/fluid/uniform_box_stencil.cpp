@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 #include "run/instantiate.hpp"
 #include "run/profiling_region.hpp"
@@ -28,10 +29,10 @@ int count_irregular_elements(const FluidMesh& mesh, const StructuredDofNodes& no
         bool same = fabs(element_size(e) - element_size(0)) <= tolerance * element_size(0);
         for (int q = 0; q < points; ++q)
           for (int k = 0; k < entries; ++k) same = same && fabs(geometry(e, q, k) - geometry(0, q, k)) <= tolerance;
-        // Hexahedron node order (VTK): corner a at (x, y, z) offsets below.
+        // Local node a sits at the element's corner (0 or 1 per direction, Hex8's order).
         const int ijk[3] = {e % nx, (e / nx) % ny, e / (nx * ny)};
         for (int a = 0; a < 8; ++a) {
-          const int o[3] = {((a + 1) >> 1) & 1, (a >> 1) & 1, (a >> 2) & 1};
+          const int o[3] = {Hex8::node_sign(a, 0) > 0, Hex8::node_sign(a, 1) > 0, Hex8::node_sign(a, 2) > 0};
           same = same && nodes.neighbor(ijk, o) == dof_nodes(e, a);
         }
         if (!same) ++count;
@@ -40,10 +41,16 @@ int count_irregular_elements(const FluidMesh& mesh, const StructuredDofNodes& no
   return irregular;
 }
 
-// Local index (VTK order) of the hexahedron corner at offsets (x, y, z) ∈ {0, 1}³.
+// Local index of the hexahedron node at corner (x, y, z) ∈ {0, 1}³, in Hex8's order.
 int hex_corner_index(int x, int y, int z) {
-  constexpr int bottom[2][2] = {{0, 3}, {1, 2}};  // [x][y]
-  return bottom[x][y] + 4 * z;
+  const int corner[3] = {x, y, z};
+  for (int a = 0; a < Hex8::nodes; ++a) {
+    bool here = true;
+    for (int d = 0; d < 3; ++d) here = here && (Hex8::node_sign(a, d) > 0) == (corner[d] == 1);
+    if (here) return a;
+  }
+  throw std::logic_error("rouleau::UniformBoxStencil: no hexahedron corner (" + std::to_string(x) + ", " +
+                         std::to_string(y) + ", " + std::to_string(z) + ")");
 }
 
 bool same_coefficients(const FluidCoefficients& a, const FluidCoefficients& b) {

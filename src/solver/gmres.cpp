@@ -14,6 +14,7 @@ namespace rouleau {
 Gmres::Gmres(int n, const GmresSettings& settings)
     : settings_(settings),
       basis_("rouleau::Gmres::basis", n, settings.restart + 1),
+      gram_schmidt_(n, settings.restart + 1),
       work_("rouleau::Gmres::work", n),
       preconditioned_("rouleau::Gmres::preconditioned", n),
       correction_("rouleau::Gmres::correction", n),
@@ -57,17 +58,9 @@ GmresResult Gmres::solve(const LinearOperator& A, const Preconditioner& M, const
       M.apply(Kokkos::subview(basis_, Kokkos::ALL(), k), preconditioned_);
       auto w = Kokkos::subview(basis_, Kokkos::ALL(), k + 1);
       A.apply(preconditioned_, w);
-      // CGS2: h = Vᵀw; w −= V h, twice.
+      // CGS2: h = Vᵀw, w ⟂ V, and ‖w‖.
       auto V = Kokkos::subview(basis_, Kokkos::ALL(), Kokkos::make_pair(0, k + 1));
-      auto coeffs = Kokkos::subview(projection_, Kokkos::make_pair(0, k + 1));
-      for (int j = 0; j <= k; ++j) h(j, k) = 0.0;
-      for (int pass = 0; pass < 2; ++pass) {
-        KokkosBlas::gemv("T", 1.0, V, w, 0.0, coeffs);
-        KokkosBlas::gemv("N", -1.0, V, coeffs, 1.0, w);
-        Kokkos::deep_copy(projection_host, projection_);
-        for (int j = 0; j <= k; ++j) h(j, k) += projection_host(j);
-      }
-      const double w_norm = KokkosBlas::nrm2(w);
+      const double w_norm = gram_schmidt_.orthogonalize(V, w, &h(0, k));
       h(k + 1, k) = w_norm;
       if (w_norm > 0.0) KokkosBlas::scal(w, 1.0 / w_norm, w);
       // Apply the earlier rotations to the new column, then make one for h(k+1,k).

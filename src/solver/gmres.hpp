@@ -4,11 +4,13 @@
 // Solves A x = b. With right preconditioning A M⁻¹ y = b, x = M⁻¹ y, the residual that
 // GMRES minimizes is the true residual b − A x, so the tolerance means what it says.
 // The Krylov basis is a LayoutLeft (n × m+1) View; orthogonalization is classical
-// Gram–Schmidt applied twice (CGS2) through KokkosBlas gemv, so each iteration costs two
-// reductions of m dot products instead of m separate ones. The small Hessenberg least
+// Gram–Schmidt applied twice (CGS2, solver/gram_schmidt.hpp): three sweeps over the basis
+// per iteration, each with one reduction of all its dot products, instead of m separate
+// ones. The small Hessenberg least
 // squares problem is solved on the host with Givens rotations.
 #include <Kokkos_Core.hpp>
 
+#include "solver/gram_schmidt.hpp"
 #include "solver/linear_operator.hpp"
 
 namespace rouleau {
@@ -39,6 +41,7 @@ class Gmres {
  private:
   GmresSettings settings_;
   Kokkos::View<double**, Kokkos::LayoutLeft> basis_;  // V: n × (m+1)
+  GramSchmidt gram_schmidt_;
   Kokkos::View<double*> work_, preconditioned_, correction_;
   Kokkos::View<double*> projection_;  // h: m+1 coefficients of one Gram–Schmidt pass
 };

@@ -84,6 +84,7 @@ void expect_identical_cases(const CaseConfig& a, const CaseConfig& b) {
   EXPECT_EQ(a.solver.stokes_reynolds_threshold, b.solver.stokes_reynolds_threshold);
   EXPECT_EQ(a.solver.newton_rtol, b.solver.newton_rtol);
   EXPECT_EQ(a.solver.newton_atol, b.solver.newton_atol);
+  EXPECT_EQ(a.solver.newton_step_rtol, b.solver.newton_step_rtol);
   EXPECT_EQ(a.solver.newton_max_iterations, b.solver.newton_max_iterations);
   EXPECT_EQ(a.solver.gmres_restart, b.solver.gmres_restart);
   EXPECT_EQ(a.solver.gmres_rtol, b.solver.gmres_rtol);

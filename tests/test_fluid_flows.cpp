@@ -333,6 +333,42 @@ TEST(FluidFlows, ManufacturedNavierStokesSolutionConverges) {
   check_manufactured_convergence("Navier-Stokes MMS (Re = 10)", 10.0, false);
 }
 
+// A residual target below the round-off floor (newton_atol = 0, newton_rtol = 1e-30):
+// Newton must stop on its update, ‖δ‖ ≤ newton_step_rtol ‖U‖, at the same solution as a
+// reachable target, and fail as before when that stop is turned off.
+TEST(FluidFlows, NewtonStopsAtTheResidualsRoundOffFloor) {
+  const double reynolds = 10.0;
+  const FluidMesh mesh = make_box_mesh({0, 0, 0}, {1, 1, 1}, {6, 6, 6}, {1, 1, 1}, {false, false, false});
+  const ManufacturedSolution exact{reynolds};
+  auto solve = [&](double newton_rtol, double step_rtol, FluidSolveReport& report) {
+    SolverConfig settings = tight_solver();
+    settings.newton_rtol = newton_rtol;
+    settings.newton_atol = 0.0;
+    settings.newton_step_rtol = step_rtol;
+    FluidSolver solver(mesh, unit_fluid(reynolds), std::array<BoundaryConfig, 6>{}, settings, unit_scales(reynolds),
+                       false);
+    set_up_manufactured_problem(solver, mesh, exact);
+    report = solver.solve_steady();
+    return fluid_l2_errors(solver.fluid_operator(), solver.state(), exact).velocity;
+  };
+  FluidSolveReport reachable, floor, without_stop;
+  const double error_reachable = solve(1e-10, 0.0, reachable);
+  const double error_floor = solve(1e-30, 1e-8, floor);
+  solve(1e-30, 0.0, without_stop);
+  std::printf("Newton: %d iterations to 1e-10 of the initial residual; %d to the round-off floor (residual %.2e); "
+              "velocity errors %.6e and %.6e\n",
+              reachable.newton_iterations, floor.newton_iterations, floor.momentum_residual, error_reachable,
+              error_floor);
+  ASSERT_TRUE(reachable.converged) << reachable.failure;
+  EXPECT_FALSE(reachable.stalled_at_round_off);
+  ASSERT_TRUE(floor.converged) << floor.failure;
+  EXPECT_TRUE(floor.stalled_at_round_off);
+  EXPECT_LT(floor.newton_iterations, SolverConfig{}.newton_max_iterations);
+  EXPECT_NEAR(error_floor, error_reachable, 1e-8 * error_reachable);
+  EXPECT_FALSE(without_stop.converged);
+  EXPECT_NE(without_stop.failure.find("Newton did not converge"), std::string::npos) << without_stop.failure;
+}
+
 // The tetrahedral element (vessel meshes) through the same kernels and solver, on the
 // same nodes: the same rates are required. Its pressure is much less accurate than the
 // hexahedra's (relative 0.35 against 0.006 at n = 24): along the box's edges Kuhn's cut

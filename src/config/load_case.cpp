@@ -592,12 +592,13 @@ void read_time(const TableReader& root, TimeConfig& time) {
 
 void read_solver(const TableReader& root, SolverConfig& solver) {
   const TableReader section = root.table(
-      "solver", {"stokes", "stokes_reynolds_threshold", "newton_rtol", "newton_atol", "newton_max_iterations",
+      "solver", {"stokes", "stokes_reynolds_threshold", "newton_rtol", "newton_atol", "newton_step_rtol", "newton_max_iterations",
                  "gmres_restart", "gmres_rtol", "gmres_max_iterations", "preconditioner"});
   assign(solver.stokes, section.choice("stokes", choices_of({StokesChoice::automatic, StokesChoice::on, StokesChoice::off})));
   assign(solver.stokes_reynolds_threshold, section.number("stokes_reynolds_threshold", Range::above(0)));
   assign(solver.newton_rtol, section.number("newton_rtol", Range::open(0, 1)));
   assign(solver.newton_atol, section.number("newton_atol", Range::at_least(0)));
+  assign(solver.newton_step_rtol, section.number("newton_step_rtol", Range::at_least(0)));
   const Range iteration_count = Range::at_least(1);
   assign(solver.newton_max_iterations, section.integer("newton_max_iterations", iteration_count));
   assign(solver.gmres_restart, section.integer("gmres_restart", Range::closed(1, 1000)));

@@ -204,6 +204,7 @@ std::string resolved_case_toml(const CaseConfig& config, const DerivedQuantities
   toml_file.key("stokes_reynolds_threshold", solver.stokes_reynolds_threshold);
   toml_file.key("newton_rtol", solver.newton_rtol);
   toml_file.key("newton_atol", solver.newton_atol);
+  toml_file.key("newton_step_rtol", solver.newton_step_rtol);
   toml_file.key("newton_max_iterations", solver.newton_max_iterations);
   toml_file.key("gmres_restart", solver.gmres_restart);
   toml_file.key("gmres_rtol", solver.gmres_rtol);

@@ -348,7 +348,8 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history) {
                                : std::fmax(settings_.newton_atol, settings_.newton_rtol * norm);
   if (!std::isfinite(norm)) report.failure = "the residual is not finite";
   double previous_norm = norm, previous_forcing = 0.1;
-  while (report.failure.empty() && norm > target && report.newton_iterations < settings_.newton_max_iterations) {
+  while (report.failure.empty() && norm > target && !report.stalled_at_round_off &&
+         report.newton_iterations < settings_.newton_max_iterations) {
     // Preconditioner from the Jacobian at the current state (constant in the Stokes limit).
     if (!linear || !preconditioner_current_) {
       rebuild_preconditioner();
@@ -384,6 +385,11 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history) {
     operator_.residual(state_, state_, residual_);
     add_immersed_stiffness(state_, residual_, true, StiffnessArgument::state);
     norm = KokkosBlas::nrm2(residual_);
+    // ‖δ‖ ≤ newton_step_rtol ‖U‖: the update no longer changes the state, so the residual
+    // is at its round-off floor (converged, even if above the residual target).
+    if (!linear && settings_.newton_step_rtol > 0.0 &&
+        KokkosBlas::nrm2(correction_) <= settings_.newton_step_rtol * KokkosBlas::nrm2(state_))
+      report.stalled_at_round_off = true;
     if (spdlog::should_log(spdlog::level::debug)) {
       double momentum = 0.0, continuity = 0.0;
       block_norms(residual_, momentum, continuity);
@@ -406,7 +412,7 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history) {
     if (linear) break;  // affine residual: one Krylov solve is the solution
   }
   block_norms(residual_, report.momentum_residual, report.continuity_residual);
-  report.converged = report.failure.empty() && (norm <= target || linear);
+  report.converged = report.failure.empty() && (norm <= target || linear || report.stalled_at_round_off);
   if (report.failure.empty() && !report.converged) {
     std::ostringstream msg;
     msg << "Newton did not converge in " << report.newton_iterations << " iterations (residual " << norm

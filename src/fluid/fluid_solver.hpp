@@ -29,6 +29,7 @@ struct FluidSolveReport {
   double initial_residual = 0.0;     // ‖R(U₀)‖ (scaled)
   double momentum_residual = 0.0;    // ‖R‖ over velocity rows at the end
   double continuity_residual = 0.0;  // ‖R‖ over pressure rows at the end
+  bool stalled_at_round_off = false;  // converged on ‖δ‖ ≤ newton_step_rtol ‖U‖, not on ‖R‖
   std::string failure;               // why it did not converge
 };
 

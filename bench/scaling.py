@@ -7,9 +7,12 @@ Two families, each run with `rouleau run` for a few steps:
 
   fluid   the empty shear box of cases/shear_flow (40 x 20 x 20 um, periodic in x and z,
           moving walls at y = +/-10 um; Stokes limit, uniform box: the stencil operator and
-          the multigrid preconditioner), refined as domain.elements = [2n, n, n], from
-          about 1e4 fluid unknowns (4 per node) up to --max-unknowns (default 4e5: about
-          three minutes on one busy core, the setup of the largest size being most of it).
+          the multigrid preconditioner) refined as domain.elements = [2n, n, n], at about
+          1e4 x 10^(k/2) fluid unknowns (4 per node) up to --max-unknowns (default 4e5, so
+          the largest is 3.2e5: about two minutes on one core, most of it that size's
+          setup, which grows like n^2.4 there). Memory is about 4.5 kB per unknown: 1e7
+          needs ~45 GB, and sizes the machine's available memory cannot hold are skipped;
+          1e6 needs ~4.5 GB and, by the setup's growth, a quarter of an hour or more.
           Time step 1e-5 s instead of the case's 0.05 s: the box's diffusion time is
           3.4e-4 s, so every step is a real solve of the developing flow (at 0.05 s the
           flow is steady after two steps and later steps take 1-7 GMRES iterations).
@@ -24,7 +27,9 @@ Two families, each run with `rouleau run` for a few steps:
           (1 um of plasma beyond it in x and z, 2 um to the walls in y) at h_f of about
           1.5 um (the scenes use 1 um), so that the fluid stays small (35 k unknowns for 64
           cells, 212 k for 512) and the same while the cells grow. Smaller N fill the
-          centre of that lattice. The case is written to a temporary TOML file.
+          centre of that lattice. The case is written to a temporary TOML file. Every
+          diagnostics row measures the gap of every pair of cells, brute force (about 30 ms
+          per pair on one core): 1 min per row for 64 cells, about an hour for 512.
 
 Each run makes --steps steps (default 6, even) with a diagnostics row at the middle and at
 the end. The first half is warm-up: step 1 (backward Euler) and step 2 (BDF2) each build
@@ -43,8 +48,8 @@ Peak memory (the run's maximum resident set) and the run's wall time are in the 
         [--quick] [--max-unknowns 4e5] [--many-cells] [--out bench/scaling.csv]
                                                              (figure beside it, .png)
 
---quick: fluid at 1e4, 3e4, 1e5 unknowns and 1, 8 cells; about a minute on one thread.
-Sizes whose estimated memory exceeds the machine's available memory are skipped.
+--quick: fluid at 1e4, 3e4, 1e5 unknowns and 1, 8 cells (in the 8-cell box); 40 s on one
+thread. Exit code 1 if a run failed.
 """
 import argparse
 import csv
@@ -140,7 +145,8 @@ def cells_case_toml(count, box_side, steps):
         for j in range(side):
             for k in range(side):
                 center = [(a - offset) * s for a, s in zip((i, j, k), LATTICE_SPACING_UM)]
-                lines += ["[[cells]]", 'kind = "normal"', f"center_um = {center!r}", "orientation_deg = [90.0, 0.0, 0.0]"]
+                lines += ["[[cells]]", 'kind = "normal"', f"center_um = {center!r}",
+                          "orientation_deg = [90.0, 0.0, 0.0]"]
     return "\n".join(lines) + "\n"
 
 
@@ -199,7 +205,8 @@ def measure(folder, log, steps):
     totals = stage_totals(log)
     gaps_per_row = sum(totals.get(s, 0.0) for s in PER_ROW_STAGES) / len(rows)
     # The window between the rows holds the middle row's diagnostics (its wall time is read first).
-    times = {(WHOLE_STEP, PER_STEP): (float(last["wall_time_s"]) - float(middle["wall_time_s"]) - gaps_per_row) / measured}
+    window = float(last["wall_time_s"]) - float(middle["wall_time_s"])
+    times = {(WHOLE_STEP, PER_STEP): (window - gaps_per_row) / measured}
     for stage, seconds in totals.items():
         if stage_column(stage) in last:
             times[(stage, PER_STEP)] = float(last[stage_column(stage)]) / measured
@@ -278,6 +285,8 @@ def main():
             print(f"{family} {label}: {unknowns} fluid unknowns, {times[(WHOLE_STEP, PER_STEP)]:.3f} s per step, "
                   f"peak memory {memory_mb:.0f} MB, run {wall:.1f} s", flush=True)
 
+    if not rows:
+        sys.exit("scaling.py: no run finished")
     add_slopes(rows)
     part = args.out + ".part"
     with open(part, "w", newline="") as f:
@@ -299,6 +308,12 @@ def series(rows):
     return {key: sorted(points) for key, points in found.items()}
 
 
+def worth_showing(basis, points):
+    """Stages shown in the table and the figure (all are in the CSV): above the noise floor
+    somewhere, and setup stages only when they take 10 ms or more."""
+    return max(p[1] for p in points) >= (1e-2 if basis == PER_RUN else MIN_FIT_SECONDS)
+
+
 def add_slopes(rows):
     slopes = {key: slope([p[0] for p in points], [p[1] for p in points]) for key, points in series(rows).items()}
     for r in rows:
@@ -318,45 +333,54 @@ def print_tables(rows, args):
               " | slope | slope, last two | |")
         print("|---|---|" + "---|" * len(sizes) + "---|---|---|")
         for (fam, stage, basis), points in series(rows).items():
-            if fam != family or max(p[1] for p in points) < MIN_FIT_SECONDS:
+            if fam != family or not worth_showing(basis, points):
                 continue
             by_size = dict(points)
             first = next(r for r in mine if r["stage"] == stage and r["basis"] == basis)
             fitted = first["slope"]
             flag = "grows faster than linear" if fitted != "" and fitted > FASTER_THAN_LINEAR else ""
-            print(f"| {stage} | {basis} | " + " | ".join(f"{by_size[s]:.4g}" if s in by_size else "–" for s in sizes) +
-                  f" | {fitted if fitted != '' else '–'} | {first['slope_last_two'] if fitted != '' else '–'} | {flag} |")
+            values = " | ".join(f"{by_size[s]:.4g}" if s in by_size else "–" for s in sizes)
+            slopes = f"{fitted} | {first['slope_last_two']}" if fitted != "" else "– | –"
+            print(f"| {stage} | {basis} | {values} | {slopes} | {flag} |")
         for s in sizes:
             r = next(r for r in mine if r["size"] == s)
-            print(f"  {s:g} {size_name}: {r['fluid_unknowns']} fluid unknowns, GMRES iterations (last step) "
-                  f"{r['gmres_iterations_last_step']}, peak memory {r['peak_memory_MB']:.0f} MB, run {r['run_wall_s']:.1f} s")
+            fluid = f", {r['fluid_unknowns']} fluid unknowns" if family == "cells" else ""
+            print(f"  {s:g} {size_name}{fluid}: GMRES iterations (last step) {r['gmres_iterations_last_step']}, "
+                  f"peak memory {r['peak_memory_MB']:.0f} MB, run {r['run_wall_s']:.1f} s")
 
 
 def plot(rows, path, args):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    from matplotlib.ticker import NullFormatter
     figure, axes = plt.subplots(1, 2, figsize=(14, 6))
     styles = {PER_STEP: "-", PER_STEP_ALL: "-.", PER_ROW: ":", PER_RUN: "--"}
+    colors = iter(plt.cm.tab10.colors * 3)
     for ax, family, xlabel in ((axes[0], "fluid", "fluid unknowns"), (axes[1], "cells", "cells (normal RBCs)")):
         for (fam, stage, basis), points in series(rows).items():
             points = [p for p in points if p[1] >= MIN_FIT_SECONDS]
-            if fam != family or not points:
+            if fam != family or len(points) < 2 or not worth_showing(basis, points):
                 continue
             fitted = next(r["slope"] for r in rows if (r["family"], r["stage"], r["basis"]) == (fam, stage, basis))
-            label = f"{stage} ({basis})" + (f", slope {fitted:.2f}" if fitted != "" else "")
             x, y = zip(*points)
-            ax.plot(x, y, styles[basis], marker="o", linewidth=2.5 if stage == WHOLE_STEP else 1.2,
-                    color="k" if stage == WHOLE_STEP else None, label=label)
-            if stage == WHOLE_STEP and len(x) > 1:
-                ax.plot([x[0], x[-1]], [y[0], y[0] * x[-1] / x[0]], color="0.6", linestyle="--", linewidth=1,
-                        label="slope 1 (from the first step time)")
+            whole = stage == WHOLE_STEP
+            ax.plot(x, y, styles[basis], marker="o", linewidth=2.5 if whole else 1.2,
+                    color="k" if whole else next(colors), label=f"{stage} ({basis}), slope {fitted:.2f}")
+            if whole:
+                ax.plot([x[0], x[-1]], [y[0], y[0] * x[-1] / x[0]], color="0.5", linestyle=(0, (2, 2)), linewidth=1,
+                        label="slope 1 through the first step time")
+        sizes = sorted({r["size"] for r in rows if r["family"] == family})
         ax.set_xscale("log")
         ax.set_yscale("log")
+        if sizes:
+            ax.set_xticks(sizes)
+            ax.set_xticklabels([f"{s:.3g}" for s in sizes])
+            ax.xaxis.set_minor_formatter(NullFormatter())
         ax.set_xlabel(xlabel)
         ax.set_ylabel("seconds")
         ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=7)
+        ax.legend(fontsize=7, loc="upper left")
     axes[0].set_title(f"empty shear box, refined ({args.threads} thread(s))")
     axes[1].set_title(f"cells in a fixed box, semi-implicit, Morse on ({args.threads} thread(s))")
     figure.tight_layout()

@@ -1,14 +1,17 @@
 // The Krylov solver's parts: the fused CGS2 sweeps (GramSchmidt) against a plain serial
-// Gram–Schmidt, and restarted GMRES on a nonsymmetric operator with a known solution.
+// Gram–Schmidt, the level-scheduled triangular solve (ILU(0)'s) against serial
+// substitution, and restarted GMRES on a nonsymmetric operator with a known solution.
 #include <gtest/gtest.h>
 
 #include <Kokkos_Core.hpp>
 #include <Kokkos_Random.hpp>
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "solver/gmres.hpp"
 #include "solver/gram_schmidt.hpp"
+#include "solver/triangular_solver.hpp"
 #include "test_helpers.hpp"
 
 namespace {
@@ -98,6 +101,103 @@ TEST(GramSchmidt, RejectsABasisLargerThanItsWorkspace) {
   rouleau::GramSchmidt gram_schmidt(100, 3);
   std::vector<double> h(4);
   EXPECT_THROW(gram_schmidt.orthogonalize(V, w, h.data()), std::logic_error);
+}
+
+// A random sparse triangle in CRS (host): up to `per_row` off-diagonal entries per row on
+// the triangle's side, in random order, and a dominant diagonal unless `unit` (then none).
+struct HostCrs {
+  std::vector<std::size_t> row_map{0};
+  std::vector<int> entries;
+  std::vector<double> values;
+};
+
+HostCrs random_triangle(int n, int per_row, rouleau::TriangularPart triangle, bool unit, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> value(-1.0, 1.0);
+  HostCrs t;
+  for (int row = 0; row < n; ++row) {
+    std::vector<int> columns;
+    const int available = triangle == rouleau::TriangularPart::lower ? row : n - 1 - row;
+    for (int k = 0; k < std::min(per_row, available); ++k) {
+      std::uniform_int_distribution<int> pick(0, available - 1);
+      const int offset = pick(rng);
+      columns.push_back(triangle == rouleau::TriangularPart::lower ? offset : row + 1 + offset);
+    }
+    std::sort(columns.begin(), columns.end());
+    columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
+    if (!unit) columns.push_back(row);
+    std::shuffle(columns.begin(), columns.end(), rng);
+    for (int c : columns) {
+      t.entries.push_back(c);
+      t.values.push_back(c == row ? 4.0 + value(rng) : value(rng));
+    }
+    t.row_map.push_back(t.entries.size());
+  }
+  return t;
+}
+
+template <class T>
+Kokkos::View<T*> to_device(const std::vector<T>& host, const char* label) {
+  Kokkos::View<T*> v(std::string(label), host.size());
+  Kokkos::deep_copy(v, Kokkos::View<const T*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(host.data(), host.size()));
+  return v;
+}
+
+TEST(TriangularSolver, MatchesSerialSubstitutionAndRespectsItsLevels) {
+  const int n = 2000;
+  for (const rouleau::TriangularPart triangle : {rouleau::TriangularPart::lower, rouleau::TriangularPart::upper}) {
+    for (const bool unit : {false, true}) {
+      SCOPED_TRACE(std::string(triangle == rouleau::TriangularPart::lower ? "lower" : "upper") + (unit ? ", unit" : ""));
+      const HostCrs t = random_triangle(n, 6, triangle, unit, unit ? 3 : 4);
+      std::vector<double> b(n), x_reference(n);
+      std::mt19937 rng(11);
+      std::uniform_real_distribution<double> value(-1.0, 1.0);
+      for (double& v : b) v = value(rng);
+      // Serial substitution: forward for a lower triangle, backward for an upper one.
+      for (int step = 0; step < n; ++step) {
+        const int row = triangle == rouleau::TriangularPart::lower ? step : n - 1 - step;
+        double sum = b[row], diagonal = 1.0;
+        for (std::size_t k = t.row_map[row]; k < t.row_map[row + 1]; ++k)
+          if (t.entries[k] == row)
+            diagonal = t.values[k];
+          else
+            sum -= t.values[k] * x_reference[t.entries[k]];
+        x_reference[row] = sum / diagonal;
+      }
+      const rouleau::TriangularSolver solver(to_device(t.row_map, "test::row_map"), to_device(t.entries, "test::entries"),
+                                             triangle);
+      Kokkos::View<double*> x("test::x", n);
+      solver.solve(to_device(t.values, "test::values"), to_device(b, "test::b"), x);
+      auto x_host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), x);
+      double largest = 0.0;
+      for (int row = 0; row < n; ++row)
+        largest = std::fmax(largest, std::fabs(x_host(row) - x_reference[row]) / (1.0 + std::fabs(x_reference[row])));
+      EXPECT_LE(largest, 1e-13);
+      // Every row reads only rows of earlier levels, and every row is scheduled once.
+      auto order = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), solver.rows_by_level());
+      const std::vector<int>& offsets = solver.level_offsets();
+      ASSERT_EQ(offsets.back(), n);
+      std::vector<int> level_of(n, -1);
+      for (int l = 0; l < solver.num_levels(); ++l)
+        for (int i = offsets[l]; i < offsets[l + 1]; ++i) level_of[order(i)] = l;
+      for (int row = 0; row < n; ++row) {
+        ASSERT_GE(level_of[row], 0) << "row " << row << " not scheduled";
+        for (std::size_t k = t.row_map[row]; k < t.row_map[row + 1]; ++k)
+          if (t.entries[k] != row) EXPECT_LT(level_of[t.entries[k]], level_of[row]) << "row " << row;
+      }
+      EXPECT_GT(solver.num_levels(), 1);
+      EXPECT_LT(solver.num_levels(), n);
+    }
+  }
+}
+
+TEST(TriangularSolver, RejectsAnEntryOnTheWrongSideOfTheDiagonal) {
+  // Row 0 of a "lower" triangle reads column 1.
+  const std::vector<std::size_t> row_map{0, 2, 3};
+  const std::vector<int> entries{0, 1, 1};
+  EXPECT_THROW(rouleau::TriangularSolver(to_device(row_map, "test::row_map"), to_device(entries, "test::entries"),
+                                         rouleau::TriangularPart::lower),
+               std::invalid_argument);
 }
 
 // y = A x for the 1D convection–diffusion matrix A = tridiag(−1 − p, 2 + s, −1 + p): p = 0.4

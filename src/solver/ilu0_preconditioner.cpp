@@ -1,7 +1,6 @@
 #include "solver/ilu0_preconditioner.hpp"
 
 #include <KokkosSparse_spiluk.hpp>
-#include <KokkosSparse_sptrsv.hpp>
 
 #include "run/profiling_region.hpp"
 
@@ -9,7 +8,6 @@ namespace rouleau {
 
 namespace {
 using KokkosSparse::Experimental::SPILUKAlgorithm;
-using KokkosSparse::Experimental::SPTRSVAlgorithm;
 }  // namespace
 
 Ilu0Preconditioner::Ilu0Preconditioner(const Kokkos::View<std::size_t*>& row_map, const Kokkos::View<int*>& entries)
@@ -30,19 +28,11 @@ Ilu0Preconditioner::Ilu0Preconditioner(const Kokkos::View<std::size_t*>& row_map
   lower_values_ = Kokkos::View<double*>("rouleau::Ilu0Preconditioner::lower_values", spiluk->get_nnzL());
   upper_values_ = Kokkos::View<double*>("rouleau::Ilu0Preconditioner::upper_values", spiluk->get_nnzU());
   intermediate_ = Kokkos::View<double*>("rouleau::Ilu0Preconditioner::intermediate", num_rows_);
-  right_hand_side_ = Kokkos::View<double*>("rouleau::Ilu0Preconditioner::right_hand_side", num_rows_);
-
-  lower_handle_.create_sptrsv_handle(SPTRSVAlgorithm::SEQLVLSCHD_TP1, num_rows_, true);
-  upper_handle_.create_sptrsv_handle(SPTRSVAlgorithm::SEQLVLSCHD_TP1, num_rows_, false);
-  KokkosSparse::Experimental::sptrsv_symbolic(&lower_handle_, lower_row_map_, lower_entries_);
-  KokkosSparse::Experimental::sptrsv_symbolic(&upper_handle_, upper_row_map_, upper_entries_);
+  lower_solver_ = std::make_unique<TriangularSolver>(lower_row_map_, lower_entries_, TriangularPart::lower);
+  upper_solver_ = std::make_unique<TriangularSolver>(upper_row_map_, upper_entries_, TriangularPart::upper);
 }
 
-Ilu0Preconditioner::~Ilu0Preconditioner() {
-  factor_handle_.destroy_spiluk_handle();
-  lower_handle_.destroy_sptrsv_handle();
-  upper_handle_.destroy_sptrsv_handle();
-}
+Ilu0Preconditioner::~Ilu0Preconditioner() { factor_handle_.destroy_spiluk_handle(); }
 
 void Ilu0Preconditioner::factor(const Kokkos::View<double*>& values) {
   ProfilingRegion region("rouleau::Ilu0Preconditioner::numeric");
@@ -53,12 +43,9 @@ void Ilu0Preconditioner::factor(const Kokkos::View<double*>& values) {
 }
 
 void Ilu0Preconditioner::apply(const Kokkos::View<const double*>& r, const Kokkos::View<double*>& z) const {
-  // L y = r, U z = y (sptrsv takes a non-const right-hand side).
-  Kokkos::deep_copy(right_hand_side_, r);
-  KokkosSparse::Experimental::sptrsv_solve(&lower_handle_, lower_row_map_, lower_entries_, lower_values_,
-                                           right_hand_side_, intermediate_);
-  KokkosSparse::Experimental::sptrsv_solve(&upper_handle_, upper_row_map_, upper_entries_, upper_values_,
-                                           intermediate_, z);
+  // L y = r, U z = y.
+  lower_solver_->solve(lower_values_, r, intermediate_);
+  upper_solver_->solve(upper_values_, intermediate_, z);
 }
 
 }  // namespace rouleau

@@ -1,12 +1,15 @@
 #pragma once
 // Incomplete LU factorization without fill, ILU(0), of an assembled CRS matrix, through
-// KokkosKernels (spiluk for the factors, level-scheduled sptrsv for the two triangular
-// solves). M = L U with the sparsity of A; M⁻¹ r solves L y = r, then U z = y.
+// KokkosKernels' spiluk, and the two triangular solves by rouleau's level-scheduled
+// TriangularSolver (solver/triangular_solver.hpp says why not KokkosKernels' sptrsv).
+// M = L U with the sparsity of A; M⁻¹ r solves L y = r, then U z = y.
 #include <Kokkos_Core.hpp>
 #include <KokkosKernels_Handle.hpp>
 #include <cstddef>
+#include <memory>
 
 #include "solver/linear_operator.hpp"
+#include "solver/triangular_solver.hpp"
 
 namespace rouleau {
 
@@ -31,8 +34,9 @@ class Ilu0Preconditioner final : public Preconditioner {
   int num_rows_;
   Kokkos::View<std::size_t*> row_map_, lower_row_map_, upper_row_map_;
   Kokkos::View<int*> entries_, lower_entries_, upper_entries_;
-  Kokkos::View<double*> lower_values_, upper_values_, intermediate_, right_hand_side_;
-  mutable Handle factor_handle_, lower_handle_, upper_handle_;
+  Kokkos::View<double*> lower_values_, upper_values_, intermediate_;
+  std::unique_ptr<TriangularSolver> lower_solver_, upper_solver_;
+  mutable Handle factor_handle_;
 };
 
 }  // namespace rouleau

@@ -95,6 +95,7 @@ void expect_identical_cases(const CaseConfig& a, const CaseConfig& b) {
   EXPECT_EQ(a.output.write_fields, b.output.write_fields);
   EXPECT_EQ(a.output.fields_every_steps, b.output.fields_every_steps);
   EXPECT_EQ(a.output.diagnostics_every_steps, b.output.diagnostics_every_steps);
+  EXPECT_EQ(a.output.cell_gaps_max_cells, b.output.cell_gaps_max_cells);
   EXPECT_EQ(a.checkpoint.every_steps, b.checkpoint.every_steps);
   EXPECT_EQ(a.checkpoint.every_minutes, b.checkpoint.every_minutes);
   EXPECT_EQ(a.checkpoint.kept, b.checkpoint.kept);
@@ -513,8 +514,9 @@ TEST(ConfigCells, CellsTakeTheirKindCentreAndOrientation) {
 }
 
 TEST(ConfigCoupling, StableStepIsViscosityTimesElementOverMembraneModulus) {
-  // One capsule (G_s = 4.2 pN/μm) in good_case's fluid: Δt ≤ C μ h_f / G_s with h_f the
-  // smallest element edge; a step above it loads only when the case allows it.
+  // One capsule (G_s = 4.2 pN/μm) in good_case's fluid: Δt ≤ C μ h_f / G_eff with h_f the
+  // smallest element edge and G_eff = (4/3) G_s (the stability map's margin); a step above
+  // it loads only when the case allows it.
   const std::vector<std::string> one_capsule{"cells=[{kind=\"capsule\", center_um=[20, 0, 10]}]",
                                              "coupling.stable_step_factor=0.5", "time.dt_s=1e-6"};
   const CaseConfig config = rouleau::load_case(good_case, one_capsule);
@@ -524,7 +526,9 @@ TEST(ConfigCoupling, StableStepIsViscosityTimesElementOverMembraneModulus) {
     h_f = std::min(h_f, rouleau::smallest_graded_interval(config.domain.lower[d], config.domain.upper[d],
                                                           config.domain.elements[d], config.domain.wall_grading[d]));
   const CellKindConfig& capsule = kind_of(config, "capsule");
-  const double expected = 0.5 * config.fluid.viscosity * h_f / (capsule.shear_modulus * capsule.shell_thickness);
+  const double margin = 4.0 / 3.0;
+  const double expected =
+      0.5 * config.fluid.viscosity * h_f / (margin * capsule.shear_modulus * capsule.shell_thickness);
   std::printf("stable step %.4g s (h_f %.4g um, G_s %.4g pN/um)\n", derived.stable_dt, h_f,
               capsule.shear_modulus * capsule.shell_thickness);
   EXPECT_NEAR(derived.stable_dt, expected, 1e-15 * expected);
@@ -541,13 +545,13 @@ TEST(ConfigCoupling, StableStepIsViscosityTimesElementOverMembraneModulus) {
   EXPECT_EQ(load_error(good_case, with_step(1.1 * expected, false)).key(), "time.dt_s");
   EXPECT_NO_THROW(rouleau::load_case(good_case, with_step(1.1 * expected, true)));
   // strain hardening (C3 = r G) and a global area modulus k_A stiffen it:
-  // G_eff = G_s (1 + 30 r) + k_A κ h_f / R, κ = 0.014 for a sphere
+  // G_eff = (4/3) [G_s (1 + 30 r) + k_A κ h_f / R], κ = 0.014 for a sphere
   std::vector<std::string> stiffer = one_capsule;
   stiffer.insert(stiffer.end(), {"cell_kinds.capsule.strain_hardening_ratio=0.05",
                                  "cell_kinds.capsule.area_modulus_pN_um=1000"});
   const CaseConfig hardened = rouleau::load_case(good_case, stiffer);
-  const double effective = capsule.shear_modulus * capsule.shell_thickness * (1.0 + 30.0 * 0.05) +
-                           1000.0 * 0.014 * h_f / (0.5 * capsule.diameter);
+  const double effective = margin * (capsule.shear_modulus * capsule.shell_thickness * (1.0 + 30.0 * 0.05) +
+                                    1000.0 * 0.014 * h_f / (0.5 * capsule.diameter));
   EXPECT_NEAR(rouleau::derive_quantities(hardened).stable_dt, 0.5 * config.fluid.viscosity * h_f / effective,
               1e-15 * expected);
   // no cells, or a steady solve: no coupling step to bound
@@ -573,7 +577,7 @@ TEST(ConfigCoupling, MorseStiffnessBoundsTheStepOfInteractingCells) {
   const rouleau::DerivedQuantities derived = rouleau::derive_quantities(config);
   std::printf("stable step with Morse x5: %.4g s (G_Morse %.4g pN/um at h_f %.3g um): %s\n", derived.stable_dt,
               morse_modulus, h_f, derived.stable_dt_reason.c_str());
-  const double expected = config.fluid.viscosity * h_f / morse_modulus;
+  const double expected = config.coupling.stable_step_factor * config.fluid.viscosity * h_f / morse_modulus;
   EXPECT_NEAR(derived.stable_dt, expected, 1e-14 * expected);
   EXPECT_NE(derived.stable_dt_reason.find("Morse"), std::string::npos);
   std::vector<std::string> sickles = two_capsules;
@@ -583,7 +587,8 @@ TEST(ConfigCoupling, MorseStiffnessBoundsTheStepOfInteractingCells) {
   std::vector<std::string> interaction_off = two_capsules;
   interaction_off[1] = "interaction.enabled=false";
   const CellKindConfig& capsule = kind_of(config, "capsule");
-  const double membrane_step = config.fluid.viscosity * h_f / (capsule.shear_modulus * capsule.shell_thickness);
+  const double membrane_step = config.coupling.stable_step_factor * config.fluid.viscosity * h_f /
+                               (4.0 / 3.0 * capsule.shear_modulus * capsule.shell_thickness);
   EXPECT_NEAR(rouleau::derive_quantities(rouleau::load_case(good_case, interaction_off)).stable_dt, membrane_step,
               1e-14 * membrane_step);
 }

@@ -616,11 +616,13 @@ void read_scales(const TableReader& root, ScalesConfig& scales) {
 }
 
 void read_output(const TableReader& root, OutputConfig& output) {
-  const TableReader section = root.table("output", {"fields", "fields_every_steps", "diagnostics_every_steps"});
+  const TableReader section =
+      root.table("output", {"fields", "fields_every_steps", "diagnostics_every_steps", "cell_gaps_max_cells"});
   const Range step_count = Range::at_least(1);
   assign(output.write_fields, section.boolean("fields"));
   assign(output.fields_every_steps, section.integer("fields_every_steps", step_count));
   assign(output.diagnostics_every_steps, section.integer("diagnostics_every_steps", step_count));
+  assign(output.cell_gaps_max_cells, section.integer("cell_gaps_max_cells", Range::at_least(0)));
 }
 
 void read_checkpoint(const TableReader& root, CheckpointConfig& checkpoint) {

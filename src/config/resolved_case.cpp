@@ -219,6 +219,7 @@ std::string resolved_case_toml(const CaseConfig& config, const DerivedQuantities
   toml_file.key("fields", config.output.write_fields);
   toml_file.key("fields_every_steps", config.output.fields_every_steps);
   toml_file.key("diagnostics_every_steps", config.output.diagnostics_every_steps);
+  toml_file.key("cell_gaps_max_cells", config.output.cell_gaps_max_cells);
 
   toml_file.table("checkpoint", "besides those at the start, at the end and on a signal; 0 = off");
   toml_file.key("every_steps", config.checkpoint.every_steps);

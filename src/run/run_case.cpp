@@ -141,6 +141,10 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
             << solver.fluid_operator().num_unknowns() << " unknowns; "
             << Kokkos::DefaultExecutionSpace::name() << " on " << Kokkos::DefaultHostExecutionSpace().concurrency()
             << " host threads\n";
+  const int cell_count = static_cast<int>(config.cells.size());
+  if (cell_count > config.output.cell_gaps_max_cells && cell_count > 1)
+    std::cerr << "cell gaps: not in the diagnostics (" << cell_count << " cells, more than output.cell_gaps_max_cells = "
+              << config.output.cell_gaps_max_cells << ")\n";
   if (coupling && coupling->semi_implicit())
     std::cerr << "semi-implicit coupling: dt = " << config.time.dt << " s (the explicit stable step estimate, "
               << derived.stable_dt << " s, does not bind it)\n";

@@ -89,7 +89,8 @@ std::vector<double> FluidDiagnostics::row(const FluidSolver& solver, int step, c
 CellDiagnostics::CellDiagnostics(const CaseCells& cells, const CaseConfig& config) {
   if (cells.population)
     for (const CellMeasures& m : cells.population->measures()) initial_volumes_.push_back(m.volume);
-  if (cells.population && cells.population->num_cells() > 1)
+  if (cells.population && cells.population->num_cells() > 1 &&
+      cells.population->num_cells() <= config.output.cell_gaps_max_cells)
     gaps_ = std::make_unique<CellGaps>(*cells.population, config.interaction.morse.zero_force_length);
 }
 

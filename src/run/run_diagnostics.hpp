@@ -41,8 +41,9 @@ class FluidDiagnostics {
 };
 
 // Energies are computed at the current positions (one extra force evaluation per row).
-// With two cells or more, each pair's gap and contact area (cells/cell_gaps.hpp; contact:
-// closer than the Morse law's zero-force length r0).
+// With two cells or more (and at most output.cell_gaps_max_cells), each pair's gap and
+// contact area (cells/cell_gaps.hpp; contact: closer than the Morse law's zero-force
+// length r0).
 class CellDiagnostics {
  public:
   CellDiagnostics(const CaseCells& cells, const CaseConfig& config);

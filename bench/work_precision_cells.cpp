@@ -1,0 +1,71 @@
+// Work–precision of the immersed coupling (issue 8, item 1): a stiff sphere in simple
+// shear (tests/sphere_in_shear.hpp: filled neo-Hookean sphere, a = 2 μm, walls 16 radii
+// apart, 30 steps of 1.2e-5 s), whose rotation rate has an exact reference, the free
+// sphere's ω_z = −γ̇/2 (Jeffery 1922) with the two walls' correction (Goldman, Cox &
+// Brenner 1967), accurate to ~0.01 % at this wall distance. Two knobs: the fluid mesh
+// (n elements per side of the cube, a/h_f = n/16) and the sphere's mesh preset (coarse,
+// fine). Each point is a real run; its work is the wall time of building the simulation
+// (the sphere's mesh comes from the mesh cache, filled by an untimed warm-up run) and its
+// 30 steps on the Kokkos threads of this run; its error |ω/ω_ref − 1|.
+//
+//   work_precision_cells [--out FILE.csv] [--sizes 8,16,24,32]
+#include <Kokkos_Core.hpp>
+#include <cstdio>
+#include <unistd.h>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "sphere_in_shear.hpp"
+
+int main(int argc, char* argv[]) {
+  Kokkos::ScopeGuard kokkos(argc, argv);
+  std::string out = "work_precision_cells.csv";
+  std::vector<int> sizes{8, 16, 24, 32};
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--out" && i + 1 < argc) {
+      out = argv[++i];
+    } else if (arg == "--sizes" && i + 1 < argc) {
+      sizes.clear();
+      std::stringstream list(argv[++i]);
+      std::string item;
+      while (std::getline(list, item, ',')) sizes.push_back(std::stoi(item));
+    } else {
+      std::cerr << "work_precision_cells: unknown argument '" << arg << "' (--out FILE, --sizes 8,16)\n";
+      return 2;
+    }
+  }
+  const auto folder = std::filesystem::temp_directory_path() / ("rouleau_work_precision_cells_" + std::to_string(getpid()));
+  std::filesystem::create_directories(folder);
+  const double walls_apart = 16.0;
+  const int threads = Kokkos::DefaultExecutionSpace().concurrency();
+  std::ofstream csv(out + ".part");
+  csv << "family,mesh_preset,n,a_over_h,omega_z,reference,error,seconds,threads\n";
+  for (const char* preset : {"coarse", "fine"}) {
+    rouleau::testing::run_sphere_in_shear(walls_apart, 4, folder.string(), preset);  // warm-up: the mesh cache
+    for (int n : sizes) {
+      Kokkos::fence();
+      Kokkos::Timer timer;
+      const auto r = rouleau::testing::run_sphere_in_shear(walls_apart, n, folder.string(), preset);
+      Kokkos::fence();
+      const double seconds = timer.seconds();
+      csv << "sphere_rotation," << preset << ',' << n << ',' << r.a_over_h << ',' << r.omega << ',' << r.expected << ','
+          << r.error << ',' << seconds << ',' << threads << '\n';
+      std::printf("sphere rotation, %s sphere, n = %2d (a/h_f %.2f): error %.3e in %.2f s\n", preset, n, r.a_over_h,
+                  r.error, seconds);
+      std::fflush(stdout);
+    }
+  }
+  std::filesystem::remove_all(folder);
+  csv.close();
+  if (std::rename((out + ".part").c_str(), out.c_str()) != 0) {
+    std::cerr << "work_precision_cells: cannot rename " << out << ".part to " << out << "\n";
+    return 1;
+  }
+  std::printf("wrote %s (%d threads)\n", out.c_str(), threads);
+  return 0;
+}

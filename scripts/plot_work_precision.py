@@ -3,7 +3,8 @@
 and of pressure against wall time, log–log, one panel per equation set and error, one
 line per element type and preconditioner (points labelled with n, elements per side).
 Prints the Pareto front of each panel: the points no other point beats in both time and
-error, which are the settings worth defaulting to.
+error, which are the settings worth defaulting to. bench/work_precision_cells's CSV (a
+`family` column) gives one panel per family, one line per cell mesh preset.
 
     scripts/plot_work_precision.py bench/work_precision.csv [--out bench/work_precision.png]
 """
@@ -39,6 +40,9 @@ def main():
         rows = list(csv.DictReader(f))
     if not rows:
         sys.exit(f"plot_work_precision.py: {args.csv_file}: no rows")
+    out = args.out or os.path.splitext(args.csv_file)[0] + ".png"
+    if "family" in rows[0]:
+        return plot_cell_families(rows, out)
     for r in rows:
         for key in ("seconds", "velocity_error", "pressure_error"):
             r[key] = float(r[key])
@@ -77,7 +81,42 @@ def main():
                   ", ".join(f"{p['element']} {p['preconditioner']} n={p['n']} ({p['seconds']:.3g} s, {p[key]:.2e})"
                             for p in front))
     figure.tight_layout()
-    out = args.out or os.path.splitext(args.csv_file)[0] + ".png"
+    figure.savefig(out + ".part.png", dpi=110)
+    os.replace(out + ".part.png", out)
+    print(f"wrote {out}")
+
+
+TITLES = {"sphere_rotation": "stiff sphere in shear: rotation rate against Jeffery's, walls corrected"}
+
+
+def plot_cell_families(rows, out):
+    """One panel per family: the error against wall time, a line per mesh preset, points
+    labelled with n (fluid elements per side); prints each family's Pareto front."""
+    for r in rows:
+        r["seconds"], r["error"], r["n"] = float(r["seconds"]), float(r["error"]), int(r["n"])
+    families = sorted({r["family"] for r in rows})
+    threads = rows[0]["threads"]
+    figure, axes = plt.subplots(1, len(families), figsize=(6.5 * len(families), 4.8), squeeze=False)
+    for ax, family in zip(axes[0], families):
+        chosen = [r for r in rows if r["family"] == family]
+        for k, preset in enumerate(sorted({r["mesh_preset"] for r in chosen})):
+            points = sorted((r for r in chosen if r["mesh_preset"] == preset), key=lambda r: r["n"])
+            ax.loglog([p["seconds"] for p in points], [p["error"] for p in points], marker="os^v"[k % 4],
+                      color=f"C{k}", label=f"{preset} cell mesh")
+            for p in points:
+                ax.annotate(str(p["n"]), (p["seconds"], p["error"]), textcoords="offset points", xytext=(4, 3),
+                            fontsize=7, color=f"C{k}")
+        front = pareto_front(chosen, "error")
+        ax.plot([p["seconds"] for p in front], [p["error"] for p in front], color="0.6", linewidth=4, alpha=0.35,
+                zorder=0, label="Pareto front")
+        ax.set_title(TITLES.get(family, family), fontsize=10)
+        ax.set_xlabel(f"wall time, setup + run [s] ({threads} thread{'s' if threads != '1' else ''})")
+        ax.set_ylabel("relative error")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=8)
+        print(f"{family}: Pareto front " +
+              ", ".join(f"{p['mesh_preset']} n={p['n']} ({p['seconds']:.3g} s, {p['error']:.2e})" for p in front))
+    figure.tight_layout()
     figure.savefig(out + ".part.png", dpi=110)
     os.replace(out + ".part.png", out)
     print(f"wrote {out}")

@@ -1,4 +1,6 @@
-// Work–precision of the immersed coupling (issue 8, item 1): a stiff sphere in simple
+// Work–precision of the cells (issue 8, item 1), two families.
+//
+// 1. sphere_rotation, the immersed coupling: a stiff sphere in simple
 // shear (tests/sphere_in_shear.hpp: filled neo-Hookean sphere, a = 2 μm, walls 16 radii
 // apart, 30 steps of 1.2e-5 s), whose rotation rate has an exact reference, the free
 // sphere's ω_z = −γ̇/2 (Jeffery 1922) with the two walls' correction (Goldman, Cox &
@@ -8,8 +10,18 @@
 // (the sphere's mesh comes from the mesh cache, filled by an untimed warm-up run) and its
 // 30 steps on the Kokkos threads of this run; its error |ω/ω_ref − 1|.
 //
+// 2. rbc_stretch, the cell's solid alone: the optical-tweezers stretch of a red cell with
+// the Mills membrane at 193 pN (tests/mills_stretch.hpp, a static solve), against Mills et
+// al. 2004's mean axial diameter (15.26 μm; their error bar 12.95–17.65 μm). Knobs: the
+// cell mesh preset and the solver's tolerance (the largest nodal residual over the load,
+// 1e-3 … 1e-6). Work: the solve's wall time (the mesh made beforehand); error
+// |D_axial / D_Mills − 1| (n in the CSV: −log10 of the tolerance). The model, not the
+// resolution, sets this error's floor (9–10 %, inside their bar): the paper and fine meshes
+// agree to 0.1 %, and the coarse one is 1 % short of them.
+//
 //   work_precision_cells [--out FILE.csv] [--sizes 8,16,24,32]
 #include <Kokkos_Core.hpp>
+#include <cmath>
 #include <cstdio>
 #include <unistd.h>
 #include <filesystem>
@@ -19,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "mills_stretch.hpp"
 #include "sphere_in_shear.hpp"
 
 int main(int argc, char* argv[]) {
@@ -44,7 +57,8 @@ int main(int argc, char* argv[]) {
   const double walls_apart = 16.0;
   const int threads = Kokkos::DefaultExecutionSpace().concurrency();
   std::ofstream csv(out + ".part");
-  csv << "family,mesh_preset,n,a_over_h,omega_z,reference,error,seconds,threads\n";
+  // value and reference: ω_z and ω_ref [1/s] for the sphere, D_axial and Mills' [μm] for the stretch.
+  csv << "family,mesh_preset,n,a_over_h,value,reference,error,seconds,threads\n";
   for (const char* preset : {"coarse", "fine"}) {
     rouleau::testing::run_sphere_in_shear(walls_apart, 4, folder.string(), preset);  // warm-up: the mesh cache
     for (int n : sizes) {
@@ -61,6 +75,29 @@ int main(int argc, char* argv[]) {
     }
   }
   std::filesystem::remove_all(folder);
+  const double force = 192.688;  // [pN], Mills et al.'s largest
+  const rouleau::testing::MillsPoint& mills = rouleau::testing::mills_point_near(force);
+  for (const auto& [preset, resolution] : {std::pair{"coarse", rouleau::MeshResolution::coarse},
+                                           std::pair{"paper", rouleau::MeshResolution::paper},
+                                           std::pair{"fine", rouleau::MeshResolution::fine}}) {
+    rouleau::testing::normal_mesh(resolution);  // made before the clock starts
+    for (const int digits : {3, 4, 5, 6}) {
+      rouleau::StaticEquilibriumOptions options;
+      options.relative_tolerance = std::pow(10.0, -digits);
+      Kokkos::fence();
+      Kokkos::Timer timer;
+      const auto r = rouleau::testing::stretch(force, rouleau::testing::mills_membrane, options, resolution);
+      Kokkos::fence();
+      const double seconds = timer.seconds();
+      const double error = std::fabs(r.diameters.axial / mills.axial - 1.0);
+      csv << "rbc_stretch," << preset << ',' << digits << ",," << r.diameters.axial << ',' << mills.axial << ','
+          << error << ',' << seconds << ',' << threads << '\n';
+      std::printf("RBC stretch at %.0f pN, %s mesh, tolerance 1e-%d: axial %.4f um (Mills %.3f), error %.3e in %.2f s%s\n",
+                  force, preset, digits, r.diameters.axial, mills.axial, error, seconds,
+                  r.report.converged ? "" : "  NOT CONVERGED");
+      std::fflush(stdout);
+    }
+  }
   csv.close();
   if (std::rename((out + ".part").c_str(), out.c_str()) != 0) {
     std::cerr << "work_precision_cells: cannot rename " << out << ".part to " << out << "\n";

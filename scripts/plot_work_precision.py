@@ -86,7 +86,10 @@ def main():
     print(f"wrote {out}")
 
 
-TITLES = {"sphere_rotation": "stiff sphere in shear: rotation rate against Jeffery's, walls corrected"}
+TITLES = {"sphere_rotation": "stiff sphere in shear: rotation rate against Jeffery's, walls corrected\n"
+                             "(labels: n, fluid elements per side)",
+          "rbc_stretch": "RBC stretch at 193 pN, Mills membrane: axial diameter against Mills et al. 2004\n"
+                         "(labels: -log10 of the solver tolerance)"}
 
 
 def plot_cell_families(rows, out):

@@ -290,6 +290,7 @@ def main():
         sys.exit("scaling.py: no run finished")
     add_slopes(rows)
     part = args.out + ".part"
+    os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
     with open(part, "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         writer.writeheader()

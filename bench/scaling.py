@@ -64,6 +64,8 @@ import time
 
 import numpy as np
 
+from run_log import stage_times
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 FLUID_CASE = os.path.join(ROOT, "cases", "shear_flow", "case.toml")
 FLUID_TIME_STEP_S = 1e-5
@@ -79,7 +81,6 @@ CELL_BOX_ELEMENT_UM = 1.5
 CELL_SHEAR_RATE = 3.0
 CELL_TIME_STEP_S = 1e-3
 
-STAGE_LINE = re.compile(r"^\s{2}(\S.*?)\s{2,}([0-9.]+) s$")
 UNKNOWNS = re.compile(r"fluid mesh: .*?(\d+) unknowns")
 SETUP_STAGES = ("mesh", "fluid setup", "cell meshes", "coupling setup")
 PER_ROW_STAGES = ("cell diagnostics",)
@@ -176,21 +177,6 @@ def run_rouleau(rouleau, case_file, folder, threads, settings):
     return process.returncode, text, usage.ru_maxrss / 1024.0, wall
 
 
-def stage_totals(log):
-    """The 'time per stage:' table at the end of a run's log, as {stage: seconds}."""
-    times, inside = {}, False
-    for line in log.splitlines():
-        if line.startswith("time per stage:"):
-            inside = True
-            continue
-        if inside:
-            match = STAGE_LINE.match(line)
-            if not match:
-                break
-            times[match.group(1).strip()] = float(match.group(2))
-    return times
-
-
 def stage_column(stage):
     """The diagnostics column of a stage, as src/run/run_diagnostics.cpp names it."""
     return "time_" + re.sub(r"[^0-9a-z]", "_", stage.lower()) + "_s"
@@ -203,7 +189,7 @@ def measure(folder, log, steps):
     middle = next(r for r in rows if int(r["step"]) == steps // 2)
     last = rows[-1]
     measured = steps - steps // 2
-    totals = stage_totals(log)
+    totals = stage_times(log)
     gaps_per_row = sum(totals.get(s, 0.0) for s in PER_ROW_STAGES) / len(rows)
     # The window between the rows holds the middle row's diagnostics (its wall time is read first).
     window = float(last["wall_time_s"]) - float(middle["wall_time_s"])

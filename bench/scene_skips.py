@@ -29,9 +29,10 @@ import sys
 import tempfile
 import time
 
+from run_log import stage_times
+
 CASES = ["aggregation", "stack_shear", "twelve_cells", "contraction", "capillary"]
 TIME_STEP = re.compile(r"^dt_s\s*=\s*([0-9.eE+-]+)", re.M)
-STAGE_LINE = re.compile(r"^\s{2}(\S.*?)\s{2,}([0-9.]+) s$")
 
 
 def case_time_step(case_file):
@@ -40,21 +41,6 @@ def case_time_step(case_file):
     if not match:
         sys.exit(f"scene_skips.py: {case_file}: no time.dt_s")
     return float(match.group(1))
-
-
-def stage_times(log):
-    """The 'time per stage:' table at the end of a run's log, as {stage: seconds}."""
-    times, inside = {}, False
-    for line in log.splitlines():
-        if line.startswith("time per stage:"):
-            inside = True
-            continue
-        if inside:
-            match = STAGE_LINE.match(line)
-            if not match:
-                break
-            times[match.group(1).strip()] = float(match.group(2))
-    return times
 
 
 def last_diagnostics(folder):

@@ -1,0 +1,19 @@
+"""Reading a `rouleau run` log, for the bench scripts."""
+import re
+
+STAGE_LINE = re.compile(r"^\s{2}(\S.*?)\s{2,}([0-9.]+) s$")
+
+
+def stage_times(log):
+    """The 'time per stage:' table at the end of a run's log, as {stage: seconds}."""
+    times, inside = {}, False
+    for line in log.splitlines():
+        if line.startswith("time per stage:"):
+            inside = True
+            continue
+        if inside:
+            match = STAGE_LINE.match(line)
+            if not match:
+                break
+            times[match.group(1).strip()] = float(match.group(2))
+    return times

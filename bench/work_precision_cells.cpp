@@ -1,4 +1,4 @@
-// Work–precision of the cells (issue 8, item 1), two families.
+// Work–precision of the cells (issue 8, item 1), three families.
 //
 // 1. sphere_rotation, the immersed coupling: a stiff sphere in simple
 // shear (tests/sphere_in_shear.hpp: filled neo-Hookean sphere, a = 2 μm, walls 16 radii
@@ -10,7 +10,14 @@
 // (the sphere's mesh comes from the mesh cache, filled by an untimed warm-up run) and its
 // 30 steps on the Kokkos threads of this run; its error |ω/ω_ref − 1|.
 //
-// 2. rbc_stretch, the cell's solid alone: the optical-tweezers stretch of a red cell with
+// 2. capsule_taylor, the coupling with a deforming membrane: the thin capsule of
+// cases/capsule_shear (tests/capsule_in_shear.hpp) at Ca = 0.05 to t = 0.027 s, its steady
+// Taylor deformation against the published D = 0.27 (Ramanujan & Pozrikidis 1998, Doddi &
+// Bagchi 2008). Knob: the fluid mesh, a/h_f = 2.7 … 4.6 (n: elements across the box's x),
+// at 0.9 of the explicit stable step of each mesh. (a/h_f = 5.5, the case's own, takes
+// about 10 minutes: the long tier.)
+//
+// 3. rbc_stretch, the cell's solid alone: the optical-tweezers stretch of a red cell with
 // the Mills membrane at 193 pN (tests/mills_stretch.hpp, a static solve), against Mills et
 // al. 2004's mean axial diameter (15.26 μm; their error bar 12.95–17.65 μm). Knobs: the
 // cell mesh preset and the solver's tolerance (the largest nodal residual over the load,
@@ -21,6 +28,7 @@
 //
 //   work_precision_cells [--out FILE.csv] [--sizes 8,16,24,32]
 #include <Kokkos_Core.hpp>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <unistd.h>
@@ -31,6 +39,8 @@
 #include <string>
 #include <vector>
 
+#include "capsule_in_shear.hpp"
+#include "config/derived.hpp"
 #include "mills_stretch.hpp"
 #include "sphere_in_shear.hpp"
 
@@ -57,7 +67,8 @@ int main(int argc, char* argv[]) {
   const double walls_apart = 16.0;
   const int threads = Kokkos::DefaultExecutionSpace().concurrency();
   std::ofstream csv(out + ".part");
-  // value and reference: ω_z and ω_ref [1/s] for the sphere, D_axial and Mills' [μm] for the stretch.
+  // value and reference: ω_z and ω_ref [1/s] for the sphere, D and the published D for the
+  // capsule, D_axial and Mills' [μm] for the stretch.
   csv << "family,mesh_preset,n,a_over_h,value,reference,error,seconds,threads\n";
   for (const char* preset : {"coarse", "fine"}) {
     rouleau::testing::run_sphere_in_shear(walls_apart, 4, folder.string(), preset);  // warm-up: the mesh cache
@@ -75,6 +86,26 @@ int main(int argc, char* argv[]) {
     }
   }
   std::filesystem::remove_all(folder);
+  const std::string capsule_case = std::string(ROULEAU_SOURCE_DIR) + "/cases/capsule_shear/case.toml";
+  for (const auto& elements : {std::array<int, 3>{18, 23, 18}, std::array<int, 3>{24, 30, 24},
+                               std::array<int, 3>{30, 38, 30}}) {
+    const std::string mesh = "domain.elements=[" + std::to_string(elements[0]) + "," + std::to_string(elements[1]) +
+                             "," + std::to_string(elements[2]) + "]";
+    const double stable = rouleau::derive_quantities(rouleau::load_case(capsule_case, {mesh})).stable_dt;
+    char step[64];
+    std::snprintf(step, sizeof step, "time.dt_s=%.6g", 0.9 * stable);
+    Kokkos::fence();
+    Kokkos::Timer timer;
+    const auto r = rouleau::testing::run_capsule(0.05, {mesh, step, "time.end_s=0.027"});
+    Kokkos::fence();
+    const double seconds = timer.seconds();
+    const double published = 0.27;
+    csv << "capsule_taylor,default," << elements[0] << ',' << r.a_over_h << ',' << r.deformation << ',' << published
+        << ',' << std::fabs(r.deformation / published - 1.0) << ',' << seconds << ',' << threads << '\n';
+    std::printf("capsule Taylor deformation at Ca = 0.05, a/h_f %.2f: D = %.4f (published %.2f), error %.3e in %.1f s\n",
+                r.a_over_h, r.deformation, published, std::fabs(r.deformation / published - 1.0), seconds);
+    std::fflush(stdout);
+  }
   const double force = 192.688;  // [pN], Mills et al.'s largest
   const rouleau::testing::MillsPoint& mills = rouleau::testing::mills_point_near(force);
   for (const auto& [preset, resolution] : {std::pair{"coarse", rouleau::MeshResolution::coarse},

@@ -86,7 +86,9 @@ def main():
     print(f"wrote {out}")
 
 
-TITLES = {"sphere_rotation": "stiff sphere in shear: rotation rate against Jeffery's, walls corrected\n"
+TITLES = {"capsule_taylor": "capsule in shear, Ca = 0.05: Taylor deformation against the published 0.27\n"
+                            "(labels: n, fluid elements across x; a/h_f = 2.7, 3.6, 4.6)",
+          "sphere_rotation": "stiff sphere in shear: rotation rate against Jeffery's, walls corrected\n"
                              "(labels: n, fluid elements per side)",
           "rbc_stretch": "RBC stretch at 193 pN, Mills membrane: axial diameter against Mills et al. 2004\n"
                          "(labels: -log10 of the solver tolerance)"}

@@ -9,7 +9,7 @@
 
 #include <cstdio>
 
-#include "capsule_in_shear.hpp"
+#include "capsule_expectations.hpp"
 
 namespace {
 

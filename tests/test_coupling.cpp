@@ -16,7 +16,7 @@
 #include <random>
 #include <string>
 
-#include "capsule_in_shear.hpp"
+#include "capsule_expectations.hpp"
 #include "sphere_in_shear.hpp"
 #include "cells/cell_shape.hpp"
 #include "config/load_case.hpp"

@@ -158,6 +158,7 @@ def main():
         writer = csv.DictWriter(log, fieldnames=fields)
         writer.writeheader()
         writer.writerows(rows)
+        log.flush()  # the resumed rows are on disk before the first new run
         for family, label, case, overrides in families(args.quick):
             if all((family, label, scheme, factor) in done_keys
                    for scheme in ("explicit", "semi_implicit") for factor in factors):

@@ -10,10 +10,8 @@ namespace rouleau {
 
 GramSchmidt::GramSchmidt(long n, int max_columns)
     : partials_("rouleau::GramSchmidt::partials", GramSchmidtSweep::chunks(n), max_columns + 1),
-      first_pass_("rouleau::GramSchmidt::first_pass", max_columns + 1),
-      second_pass_("rouleau::GramSchmidt::second_pass", max_columns + 1),
-      first_pass_host_(Kokkos::create_mirror_view(first_pass_)),
-      second_pass_host_(Kokkos::create_mirror_view(second_pass_)) {}
+      coefficients_("rouleau::GramSchmidt::coefficients", 2 * (max_columns + 1)),
+      coefficients_host_(Kokkos::create_mirror_view(coefficients_)) {}
 
 namespace {
 
@@ -38,21 +36,23 @@ double GramSchmidt::orthogonalize(const Kokkos::View<const double**, Kokkos::Lay
     throw std::logic_error("rouleau::GramSchmidt::orthogonalize: a basis of " + std::to_string(columns) +
                            " columns of length " + std::to_string(w.extent(0)) + " exceeds the workspace");
   const int chunks = GramSchmidtSweep::chunks(static_cast<long>(w.extent(0)));
-  GramSchmidtSweep sweep{V, w, first_pass_, partials_};
+  const int second = static_cast<int>(partials_.extent(1));  // where c2 starts in coefficients_
+  const auto first_pass = Kokkos::subview(coefficients_, Kokkos::make_pair(0, second));
+  const auto second_pass = Kokkos::subview(coefficients_, Kokkos::make_pair(second, 2 * second));
+  GramSchmidtSweep sweep{V, w, first_pass, partials_};
   // c1 = Vᵀw
   run_sweep<Project>(sweep, chunks, "rouleau::GramSchmidt::project");
-  sum_chunks(sweep, chunks, first_pass_, 0, columns);
+  sum_chunks(sweep, chunks, first_pass, 0, columns);
   // w ← w − V c1, c2 = Vᵀw
   run_sweep<SubtractAndProject>(sweep, chunks, "rouleau::GramSchmidt::subtract_and_project");
-  sum_chunks(sweep, chunks, second_pass_, 0, columns);
-  // w ← w − V c2, ‖w‖² into first_pass_(columns)
-  sweep.subtracted = second_pass_;
+  sum_chunks(sweep, chunks, second_pass, 0, columns);
+  // w ← w − V c2, ‖w‖² into first_pass(columns)
+  sweep.subtracted = second_pass;
   run_sweep<SubtractAndNorm>(sweep, chunks, "rouleau::GramSchmidt::subtract_and_norm");
-  sum_chunks(sweep, chunks, first_pass_, columns, columns + 1);
-  Kokkos::deep_copy(first_pass_host_, first_pass_);
-  Kokkos::deep_copy(second_pass_host_, second_pass_);
-  for (int j = 0; j < columns; ++j) h[j] = first_pass_host_(j) + second_pass_host_(j);
-  return std::sqrt(first_pass_host_(columns));
+  sum_chunks(sweep, chunks, first_pass, columns, columns + 1);
+  Kokkos::deep_copy(coefficients_host_, coefficients_);
+  for (int j = 0; j < columns; ++j) h[j] = coefficients_host_(j) + coefficients_host_(second + j);
+  return std::sqrt(coefficients_host_(columns));
 }
 
 }  // namespace rouleau

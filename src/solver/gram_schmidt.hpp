@@ -18,8 +18,10 @@ class GramSchmidt {
 
  private:
   Kokkos::View<double**, Kokkos::LayoutRight> partials_;  // (chunk, max_columns + 1)
-  Kokkos::View<double*> first_pass_, second_pass_;        // c1 (and ‖w‖² after it), c2
-  Kokkos::View<double*>::HostMirror first_pass_host_, second_pass_host_;
+  // Both passes' coefficients in one View, so that one copy brings them to the host:
+  // c1 (and ‖w‖² after it) in [0, max_columns + 1), c2 in [max_columns + 1, 2 max_columns + 2).
+  Kokkos::View<double*> coefficients_;
+  Kokkos::View<double*>::HostMirror coefficients_host_;
 };
 
 }  // namespace rouleau

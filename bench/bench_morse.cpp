@@ -12,6 +12,9 @@
 //        100 cells)
 //   BM_MorsePairsAndEnergy/cells      compute_forces_and_energy() with the production
 //                                     list (SurfaceInteraction's default), nodes
+//   BM_MorseForceChange/cells/list/quadrature
+//        SurfaceInteraction::force_change(): the exact stiffness action K δx of the
+//        semi-implicit coupling (kernels/morse_stiffness.hpp), after linearize()
 //   BM_NeighborListBuild/cells/list/quadrature
 //        rebuild(): broad phase, bins, sort, count, scan, fill
 //
@@ -243,6 +246,34 @@ void BM_MorsePairsAndEnergy(benchmark::State& state) {
   set_pair_counters(state, p, interaction);
 }
 
+// The interaction's stiffness action K δx (the semi-implicit coupling's inner loop): the
+// list's coefficients found once (linearize(), not timed), then force_change() of fixed
+// node moves: gather of the point moves, the pair stream, the scatter to the nodes.
+// Byte model: per pair within the cut-off (linearize() keeps those of the list's entries)
+// its column (4 bytes) and coefficients (16); per point its position and move read and
+// its change written (9 doubles); neighbour gathers assumed to hit the cache.
+void BM_MorseForceChange(benchmark::State& state) {
+  const int quadrature = static_cast<int>(state.range(2));
+  MorseProblem& p = problem(static_cast<int>(state.range(0)), quadrature);
+  const int half = static_cast<int>(state.range(1));
+  SurfaceInteraction& interaction = p.list(half);
+  interaction.linearize();
+  const int nodes = p.cells.num_nodes();
+  CellPopulation::NodeVectors moves("rouleau::bench::node_moves", nodes), changes("rouleau::bench::changes", nodes);
+  {
+    auto h = Kokkos::create_mirror_view(moves);
+    for (int n = 0; n < nodes; ++n)
+      for (int c = 0; c < 3; ++c) h(n, c) = std::sin(0.37 * n + c);
+    Kokkos::deep_copy(moves, h);
+  }
+  if (!time_without_rebuild(state, interaction, [&] { interaction.force_change(moves, changes); })) return;
+  state.SetLabel(std::string(half ? "half list, ScatterView" : "full list") + "; " + quadrature_name(quadrature));
+  set_pair_counters(state, p, interaction);
+  const double bytes = interaction.linearized_pairs() * (bytes_per_int + 2.0 * bytes_per_double) +
+                       interaction.num_points() * 9.0 * bytes_per_double;
+  state.counters["GB/s"] = benchmark::Counter(state.iterations() * bytes * 1e-9, benchmark::Counter::kIsRate);
+}
+
 void BM_NeighborListBuild(benchmark::State& state) {
   MorseProblem& p = problem(static_cast<int>(state.range(0)), static_cast<int>(state.range(2)));
   const int half = static_cast<int>(state.range(1));
@@ -292,6 +323,7 @@ void write_points(const std::string& path, int count, int quadrature) {
 
 BENCHMARK(BM_MorsePairs)->Apply(cells_lists_quadratures);
 BENCHMARK(BM_MorsePairsAndEnergy)->Apply(cell_counts);
+BENCHMARK(BM_MorseForceChange)->Apply(cells_lists_quadratures);
 BENCHMARK(BM_NeighborListBuild)->Apply(cells_lists_quadratures);
 
 int main(int argc, char** argv) {

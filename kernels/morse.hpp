@@ -67,6 +67,14 @@ struct MorsePotential {
   }
   // f_s(r) = −dφ_s/dr
   KOKKOS_INLINE_FUNCTION double force(const double r) const { return unshifted_force(r) - cutoff_force; }
+  // f_s(r), with its slope f_s'(r) = f'(r) = 2 De β² [e^{β(r0−r)} − 2 e^{2β(r0−r)}] [pN/μm⁵]
+  // in `slope` (= −φ''(r), the pair's stiffness along the line of centres), from one
+  // exponential.
+  KOKKOS_INLINE_FUNCTION double force_and_slope(const double r, double& slope) const {
+    const double e = exp(beta * (zero_force_length - r));
+    slope = 2.0 * well_depth * beta * beta * (e - 2.0 * e * e);
+    return 2.0 * well_depth * beta * (e * e - e) - cutoff_force;
+  }
 };
 
 }  // namespace rouleau

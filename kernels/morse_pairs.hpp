@@ -9,6 +9,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "kernels/interleaved_rows.hpp"
 #include "kernels/launch_tags.hpp"
 #include "kernels/surface_neighbors.hpp"
 
@@ -24,24 +25,7 @@ struct SurfacePairForceFunctor {
   Kokkos::View<const int*> neighbors;           // CSR columns: surface points
   Kokkos::View<double* [3]> point_forces;       // full list: F (point, 3) [pN], written
   Scatter scattered_forces;                     // half list: F (point, 3), accumulated
-  // The order of the rows (see row_of): the launch runs over loop_extent(num_points,
-  // row_stride) indices; row_stride 1 is the plain order.
-  int num_points = 0;
-  int row_stride = 1;
-
-  // Loop index i → row: with S = row_stride and M = ⌈N/S⌉ rows per residue class,
-  // row = (i mod M)·S + ⌊i/M⌋, so the indices run over rows 0, S, 2S, …, then 1, 1 + S, …
-  // (indices past N do nothing). A static partition gives each thread a contiguous block
-  // of indices, which now meets rows from the whole range: the half list's rows, long for
-  // the first cells and empty for the last, spread evenly over the threads, while each
-  // thread's rows, and so every sum, stay in the same order from run to run.
-  KOKKOS_INLINE_FUNCTION static int loop_extent(const int n, const int stride) {
-    return stride * ((n + stride - 1) / stride);
-  }
-  KOKKOS_INLINE_FUNCTION int row_of(const int i) const {
-    const int per_class = (num_points + row_stride - 1) / row_stride;
-    return (i % per_class) * row_stride + i / per_class;
-  }
+  InterleavedRows rows;                         // the order of the rows (interleaved_rows.hpp)
 
   // The forces of point i's pairs; returns their energy (each pair's whole energy for a
   // half list, half of it for a full list, so that the sums are the total).
@@ -81,12 +65,12 @@ struct SurfacePairForceFunctor {
   }
 
   KOKKOS_INLINE_FUNCTION void operator()(ForcesOnly, const int i) const {
-    const int row = row_of(i);
-    if (row < num_points) point_pairs<false>(row);
+    const int row = rows.row_of(i);
+    if (row < rows.num_points) point_pairs<false>(row);
   }
   KOKKOS_INLINE_FUNCTION void operator()(ForcesAndEnergy, const int i, double& energy) const {
-    const int row = row_of(i);
-    if (row < num_points) energy += point_pairs<true>(row);
+    const int row = rows.row_of(i);
+    if (row < rows.num_points) energy += point_pairs<true>(row);
   }
 };
 

@@ -200,13 +200,14 @@ TEST(Coupling, SkippedStagesChangeNothingButRoundOff) {
 TEST(Coupling, SemiImplicitStiffnessIsTheSymmetricHessianOfTheCellsEnergy) {
   // Two capsules 0.4 um apart, each node moved at random by up to 0.02 um (a stressed
   // state), the Morse law in range. The stiffness operator of the semi-implicit coupling,
-  // Ŝ u = −S K (Δt U I u) / (P L²) with K = ∂f/∂x by one-sided differences
-  // (coupling/cell_stiffness.hpp), must be, for random fluid velocities u, w:
+  // Ŝ u = −S K (Δt U I u) / (P L²) with K = ∂f/∂x, its elastic part by one-sided
+  // differences and its Morse part exact (coupling/cell_stiffness.hpp), must be, for random
+  // fluid velocities u, w:
   //   symmetric:  ⟨w, Ŝ u⟩ = ⟨u, Ŝ w⟩ (S = Iᵀ, K a Hessian);
   //   linear:     Ŝ (2u + 3w) = 2 Ŝ u + 3 Ŝ w;
   //   the energy's curvature: P L² Δt U ⟨u, Ŝ u⟩ = −⟨δx, K δx⟩ = d²E/ds² along δx = Δt U I u,
   //   E the elastic plus interaction energy, by a central second difference of E.
-  // The differences' truncation error is about h/ℓ ≈ 1e-5 (h = 1e-6 um, ℓ ≈ 0.16 um):
+  // The elastic difference's truncation error is about h/ℓ ≈ 3e-6 (h = 1e-6 um, ℓ ≈ 0.3 um):
   // each is held to 1e-4. The second difference of E takes node displacements of 0.01 um:
   // its truncation error then falls as ε² (3e-5 here; 2e-4 at 0.03 um) while below about
   // 3e-3 um the round-off of E (2 pN um) takes over (3e-3 at 1e-3 um, 7e-2 at 1e-4 um);
@@ -237,9 +238,9 @@ TEST(Coupling, SemiImplicitStiffnessIsTheSymmetricHessianOfTheCellsEnergy) {
   rouleau::CellStiffness stiffness(
       rkpm, population.positions(),
       [&](const NodeVectors& out) {
-        rouleau::position_dependent_forces(population, &interaction, nullptr, scratch_forces, out);
+        rouleau::differenced_forces(population, nullptr, scratch_forces, out);
       },
-      scales);
+      &interaction, scales);
   const double dt = 2e-4;
   stiffness.linearize(dt);
 

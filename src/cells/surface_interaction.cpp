@@ -10,12 +10,55 @@
 #include <type_traits>
 
 #include "kernels/morse_pairs.hpp"
+#include "kernels/morse_stiffness.hpp"
 #include "kernels/scatter_sum.hpp"
 #include "run/instantiate.hpp"
 #include "run/profiling_region.hpp"
 #include "util/view_transfer.hpp"
 
 namespace rouleau {
+
+namespace {
+// points(p) = Σ_k s_pk nodes(n_pk): node vectors at the surface points
+template <class ExecSpace, class PointVectors>
+void nodes_to_points(const PointVectors& nodes, const Kokkos::View<int* [3]>& point_nodes,
+                     const Kokkos::View<double* [3]>& point_shape, const PointVectors& points) {
+  Kokkos::parallel_for(
+      "rouleau::SurfaceInteraction::nodes_to_points", Kokkos::RangePolicy<ExecSpace>(0, points.extent(0)),
+      KOKKOS_LAMBDA(const int p) {
+        for (int c = 0; c < 3; ++c)
+          points(p, c) = point_shape(p, 0) * nodes(point_nodes(p, 0), c) +
+                         point_shape(p, 1) * nodes(point_nodes(p, 1), c) + point_shape(p, 2) * nodes(point_nodes(p, 2), c);
+      });
+}
+
+// nodes(n) = Σ_{p, k: n_pk = n} s_pk points(p): point forces on to the nodes
+template <class ExecSpace, class PointVectors, class Scatter>
+void points_to_nodes(const PointVectors& points, const Kokkos::View<int* [3]>& point_nodes,
+                     const Kokkos::View<double* [3]>& point_shape, Scatter& scatter, const PointVectors& nodes) {
+  scatter.reset();
+  Kokkos::parallel_for(
+      "rouleau::SurfaceInteraction::points_to_nodes", Kokkos::RangePolicy<ExecSpace>(0, points.extent(0)),
+      KOKKOS_LAMBDA(const int p) {
+        auto access = scatter.access();
+        for (int k = 0; k < 3; ++k)
+          if (point_shape(p, k) != 0.0)
+            for (int c = 0; c < 3; ++c) access(point_nodes(p, k), c) += point_shape(p, k) * points(p, c);
+      });
+  gather_into(nodes, scatter);
+}
+
+// On host threads the half list's rows run in blocks of 64, interleaved with stride 64
+// (InterleavedRows) over a static partition: balanced threads, and the same sums in the
+// same order on every run and restart with a given thread count (issue 9; dynamic
+// scheduling balanced them too but regrouped the sums run to run). On a GPU each row is a
+// thread anyway: the plain order keeps neighbouring rows together.
+template <class ExecSpace>
+InterleavedRows half_list_rows(const int num_points) {
+  constexpr bool on_host = Kokkos::SpaceAccessibility<Kokkos::HostSpace, typename ExecSpace::memory_space>::accessible;
+  return {num_points, on_host ? 64 : 1, on_host ? 64 : 1};
+}
+}  // namespace
 
 template <class ExecSpace>
 BasicSurfaceInteraction<ExecSpace>::BasicSurfaceInteraction(const Population& cells,
@@ -116,17 +159,7 @@ BasicSurfaceInteraction<ExecSpace>::BasicSurfaceInteraction(const Population& ce
 template <class ExecSpace>
 void BasicSurfaceInteraction<ExecSpace>::gather_point_positions() {
   // x_p = Σ_k s_pk x_{n_pk}
-  auto positions = cells_.positions();
-  auto nodes = point_nodes_;
-  auto shape = point_shape_;
-  auto point_positions = point_positions_;
-  Kokkos::parallel_for(
-      "rouleau::SurfaceInteraction::gather_point_positions", Kokkos::RangePolicy<ExecSpace>(0, num_points()),
-      KOKKOS_LAMBDA(const int p) {
-        for (int c = 0; c < 3; ++c)
-          point_positions(p, c) = shape(p, 0) * positions(nodes(p, 0), c) + shape(p, 1) * positions(nodes(p, 1), c) +
-                                  shape(p, 2) * positions(nodes(p, 2), c);
-      });
+  nodes_to_points<ExecSpace>(cells_.positions(), point_nodes_, point_shape_, point_positions_);
 }
 
 template <class ExecSpace>
@@ -342,23 +375,17 @@ double BasicSurfaceInteraction<ExecSpace>::run_pair_kernel(const char* label) {
   if (half_list_) {
     force_scatter_.reset();
     // A half list keeps the pairs j > i of points numbered cell by cell, so the first
-    // cells' rows hold most of the pairs. On the host the rows run interleaved (stride 64,
-    // SurfacePairForceFunctor::row_of) over a static partition: balanced threads, and the
-    // same sums in the same order on every run and restart with a given thread count
-    // (issue 9; dynamic scheduling balanced them too but regrouped the sums run to run).
-    // On a GPU each row is a thread anyway: the plain order keeps neighbouring rows together.
-    constexpr bool on_host = Kokkos::SpaceAccessibility<Kokkos::HostSpace, typename ExecSpace::memory_space>::accessible;
-    const int stride = on_host ? 64 : 1;
+    // cells' rows hold most of the pairs: they run interleaved on host threads.
+    const InterleavedRows rows = half_list_rows<ExecSpace>(num_points());
     SurfacePairForceFunctor<HalfList, MorsePotential, Scatter> pairs{point_positions_, point_weight_, point_kind_,
                                                                      potentials_,     neighbor_offsets_, neighbors_,
-                                                                     forces_,         force_scatter_,  num_points(),
-                                                                     stride};
-    launch(pairs, Kokkos::RangePolicy<ExecSpace, Tag>(0, pairs.loop_extent(num_points(), stride)));
+                                                                     forces_,         force_scatter_,  rows};
+    launch(pairs, Kokkos::RangePolicy<ExecSpace, Tag>(0, rows.extent()));
     gather_into(forces_, force_scatter_);
   } else {
     launch(SurfacePairForceFunctor<FullList, MorsePotential, Scatter>{point_positions_, point_weight_, point_kind_,
                                                                       potentials_, neighbor_offsets_, neighbors_,
-                                                                      forces_, force_scatter_, num_points(), 1},
+                                                                      forces_, force_scatter_, {num_points(), 1}},
            Kokkos::RangePolicy<ExecSpace, Tag>(0, num_points()));
   }
   return energy;
@@ -377,20 +404,76 @@ double BasicSurfaceInteraction<ExecSpace>::compute_forces_and_energy() {
 template <class ExecSpace>
 void BasicSurfaceInteraction<ExecSpace>::copy_forces_to_nodes(const PointVectors& node_forces) const {
   // f_n = Σ_{p, k: n_pk = n} s_pk F_p
-  node_force_scatter_.reset();
-  auto scatter = node_force_scatter_;
-  auto nodes = point_nodes_;
-  auto shape = point_shape_;
-  auto forces = forces_;
-  Kokkos::parallel_for(
-      "rouleau::SurfaceInteraction::copy_forces_to_nodes", Kokkos::RangePolicy<ExecSpace>(0, num_points()),
-      KOKKOS_LAMBDA(const int p) {
-        auto access = scatter.access();
-        for (int k = 0; k < 3; ++k)
-          if (shape(p, k) != 0.0)
-            for (int c = 0; c < 3; ++c) access(nodes(p, k), c) += shape(p, k) * forces(p, c);
-      });
-  gather_into(node_forces, node_force_scatter_);
+  points_to_nodes<ExecSpace>(forces_, point_nodes_, point_shape_, node_force_scatter_, node_forces);
+}
+
+template <class ExecSpace>
+void BasicSurfaceInteraction<ExecSpace>::linearize() {
+  gather_point_positions();
+  if (list_is_stale()) rebuild();
+  ProfilingRegion region("rouleau::SurfaceInteraction::linearize");
+  const int n_points = num_points();
+  if (linearized_positions_.extent(0) == 0) {
+    linearized_positions_ = PointVectors("rouleau::SurfaceInteraction::linearized_positions", n_points);
+    point_displacements_ = PointVectors("rouleau::SurfaceInteraction::point_displacements", n_points);
+    point_force_changes_ = PointVectors("rouleau::SurfaceInteraction::point_force_changes", n_points);
+    pair_offsets_ = Kokkos::View<int*>("rouleau::SurfaceInteraction::pair_offsets", n_points + 1);
+    if (half_list_) change_scatter_ = Scatter("rouleau::SurfaceInteraction::change_scatter", n_points);
+  }
+  Kokkos::deep_copy(linearized_positions_, point_positions_);
+  // The pairs within the cut-off: count, scan, fill with their coefficients.
+  using Stiffness = SurfacePairStiffnessFunctor<MorsePotential>;
+  Stiffness stiffness{linearized_positions_, point_weight_,  point_kind_,     potentials_,      neighbor_offsets_,
+                      neighbors_,            pair_offsets_, pair_neighbors_, pair_coefficients_};
+  Kokkos::parallel_for("rouleau::SurfaceInteraction::count_pairs_in_range",
+                       Kokkos::RangePolicy<ExecSpace, CountPairsInRange>(0, n_points), stiffness);
+  auto offsets = pair_offsets_;
+  int pairs = 0;
+  Kokkos::parallel_scan(
+      "rouleau::SurfaceInteraction::pair_offsets", Kokkos::RangePolicy<ExecSpace>(0, n_points + 1),
+      KOKKOS_LAMBDA(const int i, int& sum, const bool final) {
+        const int count = i < n_points ? offsets(i) : 0;
+        if (final) offsets(i) = sum;
+        sum += count;
+      },
+      pairs);
+  if (static_cast<int>(pair_neighbors_.extent(0)) < pairs) {
+    pair_neighbors_ = Kokkos::View<int*>("rouleau::SurfaceInteraction::pair_neighbors", pairs + pairs / 5);
+    pair_coefficients_ = Kokkos::View<double* [2]>("rouleau::SurfaceInteraction::pair_coefficients", pairs + pairs / 5);
+  }
+  stiffness.pair_neighbors = pair_neighbors_;
+  stiffness.pair_coefficients = pair_coefficients_;
+  Kokkos::parallel_for("rouleau::SurfaceInteraction::pair_stiffness",
+                       Kokkos::RangePolicy<ExecSpace, FillPairsInRange>(0, n_points), stiffness);
+  linearized_pairs_ = pairs;
+  linearized_list_ = rebuilds_;
+}
+
+template <class ExecSpace>
+void BasicSurfaceInteraction<ExecSpace>::force_change(const PointVectors& node_displacements,
+                                                      const PointVectors& node_force_changes) const {
+  if (linearized_list_ < 0 || linearized_list_ != rebuilds_)
+    throw std::logic_error("rouleau::SurfaceInteraction::force_change: linearize() first (again after a list rebuild)");
+  ProfilingRegion region("rouleau::SurfaceInteraction::force_change");
+  // δx_p = Σ_k s_pk δx_{n_pk}, then δF per point, then δf_n = Σ s_pk δF_p
+  nodes_to_points<ExecSpace>(node_displacements, point_nodes_, point_shape_, point_displacements_);
+  if (half_list_) {
+    change_scatter_.reset();
+    const InterleavedRows rows = half_list_rows<ExecSpace>(num_points());
+    Kokkos::parallel_for("rouleau::SurfaceInteraction::pair_force_changes", Kokkos::RangePolicy<ExecSpace>(0, rows.extent()),
+                         SurfacePairForceChangeFunctor<HalfList, Scatter>{linearized_positions_, point_displacements_,
+                                                                          pair_offsets_, pair_neighbors_,
+                                                                          pair_coefficients_, point_force_changes_,
+                                                                          change_scatter_, rows});
+    gather_into(point_force_changes_, change_scatter_);
+  } else {
+    Kokkos::parallel_for("rouleau::SurfaceInteraction::pair_force_changes", Kokkos::RangePolicy<ExecSpace>(0, num_points()),
+                         SurfacePairForceChangeFunctor<FullList, Scatter>{linearized_positions_, point_displacements_,
+                                                                          pair_offsets_, pair_neighbors_,
+                                                                          pair_coefficients_, point_force_changes_,
+                                                                          change_scatter_, {num_points(), 1}});
+  }
+  points_to_nodes<ExecSpace>(point_force_changes_, point_nodes_, point_shape_, node_force_scatter_, node_force_changes);
 }
 
 template <class ExecSpace>

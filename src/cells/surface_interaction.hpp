@@ -54,6 +54,17 @@ class BasicSurfaceInteraction {
   // node_forces(n) = the interaction force on node n of the population (zero off the
   // outer surfaces), from the last compute_forces().
   void copy_forces_to_nodes(const PointVectors& node_forces) const;
+  // The interaction's stiffness K = ∂F/∂x about the current positions, for the
+  // semi-implicit coupling (kernels/morse_stiffness.hpp): gathers the points, rebuilds the
+  // list when it is stale, and finds the coefficients of every list pair (one exponential
+  // per pair, as a force evaluation costs).
+  void linearize();
+  // node_force_changes(n) = (K δx)_n [pN] for the node moves δx = node_displacements [μm],
+  // exactly (the pairs' Hessian blocks, no difference), about the positions of the last
+  // linearize(); zero off the outer surfaces. Costs a stream over the list, no exponential.
+  void force_change(const PointVectors& node_displacements, const PointVectors& node_force_changes) const;
+  // The pairs within the cut-off at the last linearize() (the list entries less the skin's).
+  int linearized_pairs() const { return linearized_pairs_; }
   // The list: CSR rows per surface point (columns are surface points).
   const Kokkos::View<int*>& neighbor_offsets() const { return neighbor_offsets_; }
   const Kokkos::View<int*>& neighbors() const { return neighbors_; }
@@ -105,6 +116,14 @@ class BasicSurfaceInteraction {
                                                     typename ExecSpace::device_type>;
   Scatter force_scatter_;
   mutable Scatter node_force_scatter_;  // point forces summed into the nodes
+  // The linearization: the pairs within the cut-off (CSR) with their (a, b), the points'
+  // positions then, and the list it came from (force_change() refuses a list rebuilt since).
+  Kokkos::View<int*> pair_offsets_, pair_neighbors_;
+  Kokkos::View<double* [2]> pair_coefficients_;
+  PointVectors linearized_positions_;
+  int linearized_list_ = -1, linearized_pairs_ = 0;
+  mutable PointVectors point_displacements_, point_force_changes_;
+  mutable Scatter change_scatter_;
 };
 
 using SurfaceInteraction = BasicSurfaceInteraction<Kokkos::DefaultExecutionSpace>;

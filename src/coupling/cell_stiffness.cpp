@@ -28,15 +28,10 @@ void add_node_vectors(const NodeVectors& sum, const NodeVectors& part) {
       });
 }
 
-void position_dependent_forces(CellPopulation& population, SurfaceInteraction* interaction,
-                               const WallRepulsion* wall, const NodeVectors& scratch, const NodeVectors& out) {
+void differenced_forces(CellPopulation& population, const WallRepulsion* wall, const NodeVectors& scratch,
+                        const NodeVectors& out) {
   population.compute_internal_forces();
   Kokkos::deep_copy(out, population.internal_forces());
-  if (interaction) {
-    interaction->compute_forces();
-    interaction->copy_forces_to_nodes(scratch);
-    add_node_vectors(out, scratch);
-  }
   if (wall) {
     wall->compute_forces(population.positions(), population.surface_area_weights(), scratch);
     add_node_vectors(out, scratch);
@@ -44,14 +39,15 @@ void position_dependent_forces(CellPopulation& population, SurfaceInteraction* i
 }
 
 CellStiffness::CellStiffness(const RkpmCoupler& rkpm, const NodeVectors& positions, ForceEvaluation forces,
-                             const FluidScales& scales)
-    : rkpm_(rkpm), positions_(positions), forces_(std::move(forces)), scales_(scales) {
+                             SurfaceInteraction* interaction, const FluidScales& scales)
+    : rkpm_(rkpm), positions_(positions), forces_(std::move(forces)), interaction_(interaction), scales_(scales) {
   const int nodes = positions.extent(0);
   base_positions_ = NodeVectors("rouleau::CellStiffness::base_positions", nodes);
   displacement_ = NodeVectors("rouleau::CellStiffness::displacement", nodes);
   base_forces_ = NodeVectors("rouleau::CellStiffness::base_forces", nodes);
   displaced_forces_ = NodeVectors("rouleau::CellStiffness::displaced_forces", nodes);
   change_ = NodeVectors("rouleau::CellStiffness::change", nodes);
+  if (interaction_) interaction_change_ = NodeVectors("rouleau::CellStiffness::interaction_change", nodes);
 }
 
 void CellStiffness::linearize(double dt) {
@@ -59,6 +55,7 @@ void CellStiffness::linearize(double dt) {
   Kokkos::deep_copy(base_positions_, positions_);
   forces_(base_forces_);
   ++evaluations_;
+  if (interaction_) interaction_->linearize();
 }
 
 void CellStiffness::force_change(const Kokkos::View<const double*>& x, const NodeVectors& change) const {
@@ -97,6 +94,11 @@ void CellStiffness::force_change(const Kokkos::View<const double*>& x, const Nod
       KOKKOS_LAMBDA(const int n) {
         for (int d = 0; d < 3; ++d) change(n, d) = inverse_step * (displaced(n, d) - base(n, d));
       });
+  // + K_interaction δx, exact
+  if (interaction_) {
+    interaction_->force_change(displacement_, interaction_change_);
+    add_node_vectors(change, interaction_change_);
+  }
 }
 
 void CellStiffness::apply(const Kokkos::View<const double*>& x, const Kokkos::View<double*>& y) const {

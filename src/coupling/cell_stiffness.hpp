@@ -11,12 +11,17 @@
 // their Hessian: the added operator is symmetric positive semidefinite in the energy norm
 // and damps what made the explicit step unstable, as backward Euler does.
 //
-// K acts without being formed: a one-sided difference of the forces along δx = Δt U I û,
+// K acts without being formed, in two parts, K = K_elastic + K_interaction:
+// - the elastic and wall forces by a one-sided difference along δx = Δt U I û,
 //     K δx ≈ [f(x^n + σ δx) − f(x^n)] / σ,   σ = h / max_I |δx_I|,
-// with f(x^n) evaluated once per step and h = 1e-6 μm. Its truncation error is about h/ℓ
-// ≈ 1e-5 of K δx for the shortest length ℓ of the forces (the Morse range 1/β ≈ 0.16 μm,
-// the cells' elements ≈ 0.3 μm), its round-off about ε |f| / (h |K|) ≲ 1e-9. Each action
-// costs one evaluation of the forces, one interpolation and one spread.
+//   with f(x^n) evaluated once per step and h = 1e-6 μm. Its truncation error is about
+//   h/ℓ ≈ 3e-6 of K δx for the shortest length ℓ of the forces (the cells' elements
+//   ≈ 0.3 μm), its round-off about ε |f| / (h |K|) ≲ 1e-9;
+// - the Morse interaction exactly, from each pair's Hessian block found once per step
+//   (kernels/morse_stiffness.hpp). Differencing it too cost one exponential per pair per
+//   action: with 64 cells in contact, 85 % of the fluid solve's time.
+// Each action costs one evaluation of the elastic (and wall) forces, one stream over the
+// Morse pairs, one interpolation and one spread.
 // In scaled residual units (forces / (P L²)) the action on the scaled state û is
 //     Ŝ û = −S K (Δt U I û) / (P L²).
 #include <Kokkos_Core.hpp>
@@ -34,28 +39,28 @@ namespace rouleau {
 // sum(n, d) += part(n, d) over the cell nodes.
 void add_node_vectors(const CellPopulation::NodeVectors& sum, const CellPopulation::NodeVectors& part);
 
-// out = the forces on the cell nodes that depend on their positions alone, at the current
-// positions [pN]: elastic (with the global constraints), interaction (when `interaction`)
-// and wall repulsion (when `wall`); `scratch` holds each part on its way. These are
-// −∂E/∂x of the cells' energy, the forces whose stiffness CellStiffness differences.
-void position_dependent_forces(CellPopulation& population, SurfaceInteraction* interaction,
-                               const WallRepulsion* wall, const CellPopulation::NodeVectors& scratch,
-                               const CellPopulation::NodeVectors& out);
+// out = the elastic forces on the cell nodes (with the global constraints) and the wall
+// repulsion (when `wall`) at the current positions [pN]; `scratch` holds the wall's part
+// on its way. These are −∂E/∂x of the cells' energy less the interaction's, the forces
+// whose stiffness CellStiffness differences.
+void differenced_forces(CellPopulation& population, const WallRepulsion* wall, const CellPopulation::NodeVectors& scratch,
+                        const CellPopulation::NodeVectors& out);
 
 class CellStiffness final : public LinearOperator {
  public:
   using NodeVectors = Kokkos::View<double* [3]>;
   // forces(out): the position-dependent forces on the cell nodes [pN] at `positions`
-  // (elastic, interaction, wall), written to out.
+  // that the operator differences (elastic, wall; not the interaction's), written to out.
   using ForceEvaluation = std::function<void(const NodeVectors& out)>;
 
   // `positions` are the cell nodes' positions that `forces` reads; apply() moves them and
-  // puts them back. `rkpm` holds the supports at x^n. All must outlive the operator.
+  // puts them back. `rkpm` holds the supports at x^n. `interaction` (or null) adds its
+  // exact stiffness. All must outlive the operator.
   CellStiffness(const RkpmCoupler& rkpm, const NodeVectors& positions, ForceEvaluation forces,
-                const FluidScales& scales);
+                SurfaceInteraction* interaction, const FluidScales& scales);
 
-  // Linearizes about the current positions x^n (evaluates f(x^n)) for a fluid solve over
-  // the step Δt [s].
+  // Linearizes about the current positions x^n (evaluates the differenced forces at x^n
+  // and the interaction's pair stiffness) for a fluid solve over the step Δt [s].
   void linearize(double dt);
   // The difference step h [μm] (the largest node displacement of a difference).
   static constexpr double difference_step = 1e-6;
@@ -66,16 +71,18 @@ class CellStiffness final : public LinearOperator {
   // step when the fluid's scaled state is x (apply() spreads −force_change / (P L²)).
   void force_change(const Kokkos::View<const double*>& x, const NodeVectors& force_change) const;
 
-  // Force evaluations made so far (one per action and one per linearization).
+  // Evaluations of the differenced forces made so far (one per action and one per
+  // linearization).
   long evaluations() const { return evaluations_; }
 
  private:
   const RkpmCoupler& rkpm_;
   NodeVectors positions_;
   ForceEvaluation forces_;
+  SurfaceInteraction* interaction_;
   FluidScales scales_;
   double dt_ = 0.0;
-  NodeVectors base_positions_, base_forces_, displacement_, displaced_forces_, change_;
+  NodeVectors base_positions_, base_forces_, displacement_, displaced_forces_, change_, interaction_change_;
   mutable long evaluations_ = 0;
 };
 

@@ -97,9 +97,9 @@ ImmersedCoupling::ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, c
     stiffness_ = std::make_unique<CellStiffness>(
         rkpm_, population_.positions(),
         [this](const NodeVectors& out) {
-          position_dependent_forces(population_, interaction_, wall_.get(), stiffness_scratch_, out);
+          differenced_forces(population_, wall_.get(), stiffness_scratch_, out);
         },
-        fluid.scales());
+        interaction_, fluid.scales());
   }
   // Without skips the RKPM correction runs everywhere (it changes nothing but round-off
   // where the plain window reproduces linear fields).

@@ -1,0 +1,22 @@
+#pragma once
+// A rank's part of the fluid mesh (issue 10): the elements it owns as a FluidMesh of their
+// own, on which every element kernel (FluidOperator) runs unchanged; the shared nodes'
+// sums then meet through a NodeHalo.
+#include "mesh/fluid_mesh.hpp"
+#include "parallel/element_partition.hpp"
+
+namespace rouleau {
+
+// The partition of `mesh` for `rank` of `ranks`: the block partition of a structured box
+// (block_element_owners). Other meshes (Gmsh vessels) need a graph partition, not there
+// yet: std::invalid_argument.
+ElementPartition partition_fluid_mesh(const FluidMesh& mesh, int rank, int ranks);
+
+// The rank's elements as a mesh: dof nodes numbered as in `partition` (owned first, then
+// copies), geometric nodes those of its elements in ascending global order, the boundary
+// faces all of whose nodes it holds. Periodic identification is carried by the dof
+// numbering; `periodic` and `structured_elements` are cleared (the element path runs; the
+// uniform-box stencil needs the whole box), `lower`/`upper` stay the global box.
+FluidMesh make_local_mesh(const FluidMesh& mesh, const ElementPartition& partition);
+
+}  // namespace rouleau

@@ -1,0 +1,53 @@
+#pragma once
+// The exchange of shared dof nodes' values between ranks (issue 10), for node-interleaved
+// vectors of `components` entries per node (4 for the fluid's u, v, w, p) on the local
+// dof nodes of an ElementPartition (parallel/element_partition.hpp).
+//
+// update_copies():   every copy takes its owner's value (before an operator reads them);
+// sum_into_owners(): the owner adds the copies' partial sums to its own, in ascending rank
+//                    order, and the total goes back to the copies (after an element loop).
+// dot():             Σ x·y over the owned entries of all ranks (each unknown counted once).
+// Values are packed on the device, staged through host buffers for MPI, and unpacked on
+// the device; in a build without MPI (or on one rank) there is nothing to exchange.
+#include <Kokkos_Core.hpp>
+#include <vector>
+
+#include "parallel/communicator.hpp"
+#include "parallel/element_partition.hpp"
+
+namespace rouleau {
+
+class NodeHalo {
+ public:
+  using Vector = Kokkos::View<double*>;
+  using ConstVector = Kokkos::View<const double*>;
+
+  NodeHalo(const Communicator& communicator, const ElementPartition& partition, int components);
+
+  void update_copies(const Vector& values) const;
+  void sum_into_owners(const Vector& values) const;
+  double dot(const ConstVector& x, const ConstVector& y) const;
+
+  int num_owned_entries() const { return owned_entries_; }
+  // Values sent per update_copies() (summed over the neighbours) — the halo's size.
+  long long values_per_update() const;
+
+ private:
+  struct Link {
+    int rank;
+    Kokkos::View<int*> owned_shared, copies;      // local dof nodes (device)
+    Vector owned_buffer, copy_buffer;             // staging, components per node
+  };
+  // owners → copies: the copies take the owners' values; copies → owners: the owners add
+  // the copies' values (partial sums) to theirs.
+  enum class Direction { owners_to_copies, copies_to_owners };
+  void exchange(Direction direction, const Vector& values) const;
+  Communicator communicator_;
+  int components_;
+  int owned_entries_;
+  std::vector<Link> links_;
+  std::vector<int> ranks_;
+  mutable std::vector<std::vector<double>> send_, recv_;  // host staging per link
+};
+
+}  // namespace rouleau

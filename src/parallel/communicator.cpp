@@ -1,0 +1,84 @@
+#include "parallel/communicator.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#if ROULEAU_HAS_MPI
+#include <mpi.h>
+#endif
+
+namespace rouleau {
+
+#if ROULEAU_HAS_MPI
+namespace {
+void check(int status, const char* call) {
+  if (status != MPI_SUCCESS) throw std::runtime_error(std::string("rouleau::Communicator: ") + call + " failed");
+}
+}  // namespace
+
+bool Communicator::has_mpi() { return true; }
+
+Communicator Communicator::world() {
+  int initialized = 0;
+  MPI_Initialized(&initialized);
+  if (!initialized) throw std::logic_error("rouleau::Communicator::world: MPI is not initialized");
+  int rank = 0, size = 1;
+  check(MPI_Comm_rank(MPI_COMM_WORLD, &rank), "MPI_Comm_rank");
+  check(MPI_Comm_size(MPI_COMM_WORLD, &size), "MPI_Comm_size");
+  return Communicator(rank, size);
+}
+
+double Communicator::sum(double value) const {
+  double total = 0.0;
+  check(MPI_Allreduce(&value, &total, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
+  return total;
+}
+
+long long Communicator::sum(long long value) const {
+  long long total = 0;
+  check(MPI_Allreduce(&value, &total, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
+  return total;
+}
+
+double Communicator::max(double value) const {
+  double largest = 0.0;
+  check(MPI_Allreduce(&value, &largest, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
+  return largest;
+}
+
+void Communicator::exchange(const std::vector<int>& ranks, const std::vector<std::vector<double>>& send,
+                            std::vector<std::vector<double>>& recv) const {
+  const std::size_t n = ranks.size();
+  if (send.size() != n || recv.size() != n)
+    throw std::invalid_argument("rouleau::Communicator::exchange: one send and one receive buffer per rank");
+  std::vector<MPI_Request> requests(2 * n, MPI_REQUEST_NULL);
+  constexpr int tag = 7;
+  for (std::size_t k = 0; k < n; ++k)
+    check(MPI_Irecv(recv[k].data(), static_cast<int>(recv[k].size()), MPI_DOUBLE, ranks[k], tag, MPI_COMM_WORLD,
+                    &requests[k]),
+          "MPI_Irecv");
+  for (std::size_t k = 0; k < n; ++k)
+    check(MPI_Isend(send[k].data(), static_cast<int>(send[k].size()), MPI_DOUBLE, ranks[k], tag, MPI_COMM_WORLD,
+                    &requests[n + k]),
+          "MPI_Isend");
+  check(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE), "MPI_Waitall");
+}
+
+void Communicator::barrier() const { check(MPI_Barrier(MPI_COMM_WORLD), "MPI_Barrier"); }
+
+#else  // one rank, no MPI
+
+bool Communicator::has_mpi() { return false; }
+Communicator Communicator::world() { return Communicator(0, 1); }
+double Communicator::sum(double value) const { return value; }
+long long Communicator::sum(long long value) const { return value; }
+double Communicator::max(double value) const { return value; }
+void Communicator::exchange(const std::vector<int>& ranks, const std::vector<std::vector<double>>&,
+                            std::vector<std::vector<double>>&) const {
+  if (!ranks.empty()) throw std::logic_error("rouleau::Communicator::exchange: no other rank in a build without MPI");
+}
+void Communicator::barrier() const {}
+
+#endif
+
+}  // namespace rouleau

@@ -1,0 +1,38 @@
+#pragma once
+// The ranks of a run and what they say to each other (issue 10): MPI_COMM_WORLD when the
+// build has MPI (ROULEAU_HAS_MPI, CMake option ROULEAU_MPI), otherwise one rank on its own.
+// Host-only: no Kokkos; the buffers are host memory (device data is staged by the caller,
+// distributed/node_halo.hpp).
+#include <vector>
+
+namespace rouleau {
+
+class Communicator {
+ public:
+  // All ranks of the run (MPI_COMM_WORLD; MPI must be initialized), or the single rank of
+  // a build without MPI.
+  static Communicator world();
+  // Whether this build talks MPI at all.
+  static bool has_mpi();
+
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+
+  // The sums and maximum over all ranks (MPI_Allreduce); on one rank, the value.
+  double sum(double value) const;
+  long long sum(long long value) const;
+  double max(double value) const;
+
+  // Point-to-point, all at once: send[k] goes to ranks[k], and recv[k] (sized by the
+  // caller to what ranks[k] sends) is filled from ranks[k]. Returns when all are done.
+  void exchange(const std::vector<int>& ranks, const std::vector<std::vector<double>>& send,
+                std::vector<std::vector<double>>& recv) const;
+
+  void barrier() const;
+
+ private:
+  Communicator(int rank, int size) : rank_(rank), size_(size) {}
+  int rank_ = 0, size_ = 1;
+};
+
+}  // namespace rouleau

@@ -1,0 +1,146 @@
+// The distributed fluid operator on 2 (or more) MPI ranks (issue 10): the shared nodes'
+// exchange (NodeHalo) and the rank-local operators give the single-rank answer to
+// round-off. Every rank also builds the whole mesh and its operator, the reference.
+// Run by ctest as `mpiexec -n 2 mpi_halo` (oversubscribed where the machine has fewer cores).
+#include <gtest/gtest.h>
+
+#include <Kokkos_Core.hpp>
+#include <Kokkos_Random.hpp>
+#include <KokkosBlas1_dot.hpp>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "distributed/local_mesh.hpp"
+#include "distributed/node_halo.hpp"
+#include "fluid/fluid_operator.hpp"
+#include "parallel/communicator.hpp"
+
+namespace rouleau {
+namespace {
+
+using HostVector = Kokkos::View<double*, Kokkos::HostSpace>;
+
+// The shear box of the paper's scenes, small and graded in y: periodic in x and z.
+FluidMesh shear_box() { return make_box_mesh({0, -5, 0}, {12, 5, 6}, {8, 4, 6}, {1.0, 1.3, 1.0}, {true, false, true}); }
+
+struct Distributed {
+  Communicator world = Communicator::world();
+  FluidMesh mesh = shear_box();
+  ElementPartition partition = partition_fluid_mesh(mesh, world.rank(), world.size());
+  FluidMesh local_mesh = make_local_mesh(mesh, partition);
+  NodeHalo halo{world, partition, 4};
+
+  // The rank's part of a global vector; `copies_too` false leaves the copies at −1e300
+  // (what an exchange must overwrite).
+  Vector local_part(const HostVector& global, bool copies_too = true) const {
+    Vector local("local", 4 * partition.num_local_nodes());
+    auto h = Kokkos::create_mirror_view(local);
+    for (int l = 0; l < partition.num_local_nodes(); ++l)
+      for (int c = 0; c < 4; ++c)
+        h(4 * l + c) = copies_too || l < partition.num_owned_nodes ? global(4 * partition.global_node[l] + c) : -1e300;
+    Kokkos::deep_copy(local, h);
+    return local;
+  }
+  // The largest |local − global| over all local entries, and over all ranks.
+  double largest_difference(const Vector& local, const HostVector& global) const {
+    auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), local);
+    double largest = 0.0;
+    for (int l = 0; l < partition.num_local_nodes(); ++l)
+      for (int c = 0; c < 4; ++c)
+        largest = std::fmax(largest, std::fabs(h(4 * l + c) - global(4 * partition.global_node[l] + c)));
+    return world.max(largest);
+  }
+};
+
+HostVector random_vector(int n, unsigned seed) {
+  Vector v("random", n);
+  Kokkos::Random_XorShift64_Pool<> pool(seed);  // the same on every rank
+  Kokkos::fill_random(v, pool, -1.0, 1.0);
+  return Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), v);
+}
+
+TEST(NodeHalo, EveryCopyTakesItsOwnersValue) {
+  Distributed d;
+  HostVector ids("ids", d.mesh.num_unknowns());
+  for (int i = 0; i < d.mesh.num_unknowns(); ++i) ids(i) = i;
+  const Vector local = d.local_part(ids, false);
+  d.halo.update_copies(local);
+  EXPECT_EQ(d.largest_difference(local, ids), 0.0);
+  if (d.world.rank() == 0)
+    std::printf("%d ranks: %d of %d dof nodes owned on rank 0, %lld values per update\n", d.world.size(),
+                d.partition.num_owned_nodes, d.mesh.num_dof_nodes, d.halo.values_per_update());
+  EXPECT_EQ(d.world.sum(static_cast<long long>(d.partition.num_owned_nodes)), d.mesh.num_dof_nodes);
+}
+
+TEST(NodeHalo, SumIntoOwnersCountsEveryElementOfANode) {
+  // Each rank counts its elements at each of its nodes; summed at the owners (and sent
+  // back to the copies) that is every node's element count in the whole mesh.
+  Distributed d;
+  auto global_connectivity = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), d.mesh.element_dof_nodes);
+  HostVector valence("valence", d.mesh.num_unknowns());
+  for (int e = 0; e < d.mesh.num_elements; ++e)
+    for (int a = 0; a < d.mesh.nodes_per_element; ++a)
+      for (int c = 0; c < 4; ++c) valence(4 * global_connectivity(e, a) + c) += 1.0;
+  auto local_connectivity = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), d.local_mesh.element_dof_nodes);
+  Vector counts("counts", 4 * d.partition.num_local_nodes());
+  auto h = Kokkos::create_mirror_view(counts);
+  for (int e = 0; e < d.local_mesh.num_elements; ++e)
+    for (int a = 0; a < d.local_mesh.nodes_per_element; ++a)
+      for (int c = 0; c < 4; ++c) h(4 * local_connectivity(e, a) + c) += 1.0;
+  Kokkos::deep_copy(counts, h);
+  d.halo.sum_into_owners(counts);
+  EXPECT_EQ(d.largest_difference(counts, valence), 0.0);
+}
+
+TEST(NodeHalo, DistributedOperatorsGiveTheSingleRankAnswer) {
+  // y = Σ_e K_e x on each rank's elements, summed into the owners, against the global
+  // operator: the Stokes action and the Navier–Stokes Jacobian action (the state's copies
+  // filled by update_copies), to 1e-13 of the largest entry; the distributed dot product
+  // against the global one.
+  Distributed d;
+  const int n = d.mesh.num_unknowns();
+  const HostVector state = random_vector(n, 11), direction = random_vector(n, 12);
+  FluidCoefficients c;
+  c.reynolds = 2.0;
+  c.mass_coefficient = 1.5 / 0.1;
+  c.inverse_dt = 1.0 / 0.1;
+  for (const int convection : {0, 1}) {
+    c.convection = convection;
+    FluidOperator global(d.mesh, 1.0), local(d.local_mesh, 1.0);
+    global.allow_stencil(false);
+    global.set_coefficients(c);
+    local.set_coefficients(c);
+    Vector global_state("global_state", n), global_direction("global_direction", n), expected("expected", n);
+    Kokkos::deep_copy(global_state, state);
+    Kokkos::deep_copy(global_direction, direction);
+    const Vector local_state = d.local_part(state, false), local_direction = d.local_part(direction, false);
+    d.halo.update_copies(local_state);
+    d.halo.update_copies(local_direction);
+    Vector action("action", local_state.extent(0));
+    if (convection) {
+      global.jacobian_action(global_state, global_direction, expected);
+      local.jacobian_action(local_state, local_direction, action);
+    } else {
+      global.linear_action(global_direction, expected);
+      local.linear_action(local_direction, action);
+    }
+    d.halo.sum_into_owners(action);
+    const auto expected_host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), expected);
+    double largest = 0.0;
+    for (int i = 0; i < n; ++i) largest = std::fmax(largest, std::fabs(expected_host(i)));
+    const double difference = d.largest_difference(action, expected_host);
+    const double dot = d.halo.dot(action, local_direction);
+    const double expected_dot = KokkosBlas::dot(expected, global_direction);
+    if (d.world.rank() == 0)
+      std::printf("%s on %d ranks: largest difference from one rank %.2e (of entries up to %.3g); <y, x> %.17g vs "
+                  "%.17g\n",
+                  convection ? "Navier-Stokes Jacobian action" : "Stokes action", d.world.size(), difference, largest,
+                  dot, expected_dot);
+    EXPECT_LT(difference, 1e-13 * largest);
+    EXPECT_NEAR(dot, expected_dot, 1e-12 * std::fabs(expected_dot));
+  }
+}
+
+}  // namespace
+}  // namespace rouleau

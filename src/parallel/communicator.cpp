@@ -40,6 +40,10 @@ long long Communicator::sum(long long value) const {
   return total;
 }
 
+void Communicator::sum(double* values, int count) const {
+  check(MPI_Allreduce(MPI_IN_PLACE, values, count, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
+}
+
 double Communicator::max(double value) const {
   double largest = 0.0;
   check(MPI_Allreduce(&value, &largest, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
@@ -73,6 +77,7 @@ Communicator Communicator::world() { return Communicator(0, 1); }
 double Communicator::sum(double value) const { return value; }
 long long Communicator::sum(long long value) const { return value; }
 double Communicator::max(double value) const { return value; }
+void Communicator::sum(double*, int) const {}
 void Communicator::exchange(const std::vector<int>& ranks, const std::vector<std::vector<double>>&,
                             std::vector<std::vector<double>>&) const {
   if (!ranks.empty()) throw std::logic_error("rouleau::Communicator::exchange: no other rank in a build without MPI");

@@ -22,6 +22,8 @@ class Communicator {
   double sum(double value) const;
   long long sum(long long value) const;
   double max(double value) const;
+  // values[i] ← Σ_ranks values[i], i < count, in place (one MPI_Allreduce).
+  void sum(double* values, int count) const;
 
   // Point-to-point, all at once: send[k] goes to ranks[k], and recv[k] (sized by the
   // caller to what ranks[k] sends) is filled from ranks[k]. Returns when all are done.

@@ -1,6 +1,7 @@
 #include "solver/gmres.hpp"
 
 #include <KokkosBlas1_axpby.hpp>
+#include <KokkosBlas1_dot.hpp>
 #include <KokkosBlas1_nrm2.hpp>
 #include <KokkosBlas1_scal.hpp>
 #include <KokkosBlas2_gemv.hpp>
@@ -11,25 +12,31 @@
 
 namespace rouleau {
 
-Gmres::Gmres(int n, const GmresSettings& settings)
+Gmres::Gmres(int n, const GmresSettings& settings, const Communicator* communicator)
     : settings_(settings),
+      communicator_(communicator && communicator->size() > 1 ? communicator : nullptr),
       basis_("rouleau::Gmres::basis", n, settings.restart + 1),
-      gram_schmidt_(n, settings.restart + 1),
+      gram_schmidt_(n, settings.restart + 1, communicator_),
       work_("rouleau::Gmres::work", n),
       preconditioned_("rouleau::Gmres::preconditioned", n),
       correction_("rouleau::Gmres::correction", n),
       projection_("rouleau::Gmres::projection", settings.restart + 1) {}
+
+double Gmres::norm(const Kokkos::View<const double*>& v) const {
+  if (!communicator_) return KokkosBlas::nrm2(v);
+  return std::sqrt(communicator_->sum(KokkosBlas::dot(v, v)));
+}
 
 GmresResult Gmres::solve(const LinearOperator& A, const Preconditioner& M, const Kokkos::View<const double*>& b,
                          const Kokkos::View<double*>& x, double relative_tolerance) {
   ProfilingRegion region("rouleau::Gmres::solve");
   const int m = settings_.restart;
   GmresResult result;
-  const double b_norm = KokkosBlas::nrm2(b);
+  const double b_norm = norm(b);
   auto residual_of = [&](const Kokkos::View<double*>& r) {  // r = b − A x
     A.apply(x, r);
     KokkosBlas::axpby(1.0, b, -1.0, r);
-    return KokkosBlas::nrm2(r);
+    return norm(r);
   };
   double beta = residual_of(work_);
   result.initial_residual = beta;

@@ -10,6 +10,7 @@
 // squares problem is solved on the host with Givens rotations.
 #include <Kokkos_Core.hpp>
 
+#include "parallel/communicator.hpp"
 #include "solver/gram_schmidt.hpp"
 #include "solver/linear_operator.hpp"
 
@@ -31,7 +32,10 @@ struct GmresResult {
 
 class Gmres {
  public:
-  Gmres(int n, const GmresSettings& settings);
+  // With a communicator of more than one rank, n is this rank's share of the unknowns (its
+  // owned entries), A and M act on those shares, and every norm and product is summed over
+  // the ranks; the iterates are those of one rank up to round-off.
+  Gmres(int n, const GmresSettings& settings, const Communicator* communicator = nullptr);
   // x holds the initial guess on entry and the solution on exit. `relative_tolerance`
   // overrides the settings' one for this solve when positive (inexact Newton).
   GmresResult solve(const LinearOperator& A, const Preconditioner& M, const Kokkos::View<const double*>& b,
@@ -39,7 +43,10 @@ class Gmres {
   const GmresSettings& settings() const { return settings_; }
 
  private:
+  // ‖v‖ over all ranks
+  double norm(const Kokkos::View<const double*>& v) const;
   GmresSettings settings_;
+  const Communicator* communicator_;
   Kokkos::View<double**, Kokkos::LayoutLeft> basis_;  // V: n × (m+1)
   GramSchmidt gram_schmidt_;
   Kokkos::View<double*> work_, preconditioned_, correction_;

@@ -1,0 +1,64 @@
+#pragma once
+// The fluid's Stokes operator and its block-Jacobi preconditioner on the owned unknowns of
+// all ranks (issue 10), for the distributed GMRES (solver/gmres.hpp with a Communicator).
+//
+// A vector here is a rank's owned entries (4 per owned dof node, the prefix of its local
+// vectors). The action: copy into a local vector, fill the copies (update_copies), sum the
+// rank's elements (FluidOperator::linear_action on the rank's mesh, which carries no
+// Dirichlet rows), add the shared nodes' partial sums at their owners, and set the
+// Dirichlet rows to the identity, y_d = x_d — as the single-rank operator does.
+#include <Kokkos_Core.hpp>
+#include <vector>
+
+#include "distributed/node_halo.hpp"
+#include "fluid/fluid_operator.hpp"
+#include "parallel/element_partition.hpp"
+#include "solver/block_jacobi.hpp"
+#include "solver/linear_operator.hpp"
+
+namespace rouleau {
+
+// The local unknown indices of the global unknowns (4·dof node + component) that this
+// rank owns, in the order given (the others are left out).
+std::vector<int> owned_local_unknowns(const ElementPartition& partition, const std::vector<int>& global_unknowns);
+
+class DistributedStokesOperator final : public LinearOperator {
+ public:
+  // `local`: the operator on the rank's mesh (make_local_mesh), without Dirichlet rows;
+  // `dirichlet`: the owned constrained unknowns (local indices). All must outlive this.
+  DistributedStokesOperator(const FluidOperator& local, const NodeHalo& halo, const ElementPartition& partition,
+                            const std::vector<int>& dirichlet);
+  void apply(const Kokkos::View<const double*>& x, const Kokkos::View<double*>& y) const override;
+  int num_owned_unknowns() const { return owned_; }
+  // The owned entries of a local vector and back.
+  void owned_part(const Kokkos::View<const double*>& local, const Kokkos::View<double*>& owned) const;
+
+ private:
+  const FluidOperator& local_;
+  const NodeHalo& halo_;
+  int owned_;
+  Kokkos::View<int*> dirichlet_;
+  Vector local_x_, local_y_;
+};
+
+// Point-block Jacobi across ranks: each owned node's 4×4 diagonal block of the Jacobian,
+// the rank's element sums added at the owner (a NodeHalo of 16 components), Dirichlet
+// rows the identity's, inverted node by node.
+class DistributedBlockJacobi final : public Preconditioner {
+ public:
+  DistributedBlockJacobi(const Communicator& communicator, const ElementPartition& partition,
+                         const std::vector<int>& dirichlet);
+  // The blocks of `local` at the rank's local `state`; returns the singular blocks over all ranks.
+  long long factor(const FluidOperator& local, const Kokkos::View<const double*>& state);
+  void apply(const Kokkos::View<const double*>& r, const Kokkos::View<double*>& z) const override;
+
+ private:
+  const Communicator& communicator_;
+  int owned_nodes_;
+  NodeHalo block_halo_;
+  Kokkos::View<int*> dirichlet_;
+  Vector local_blocks_;
+  BlockJacobi jacobi_;
+};
+
+}  // namespace rouleau

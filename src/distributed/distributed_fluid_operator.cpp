@@ -1,20 +1,14 @@
 #include "distributed/distributed_fluid_operator.hpp"
 
 #include <string>
+
+#include "util/view_transfer.hpp"
 #include <unordered_map>
 
 namespace rouleau {
 
 namespace {
 using ExecSpace = Kokkos::DefaultExecutionSpace;
-
-Kokkos::View<int*> device_list(const std::vector<int>& values, const std::string& label) {
-  Kokkos::View<int*> view(label, values.size());
-  auto host = Kokkos::create_mirror_view(view);
-  for (std::size_t i = 0; i < values.size(); ++i) host(i) = values[i];
-  Kokkos::deep_copy(view, host);
-  return view;
-}
 
 // y_d = x_d on the constrained unknowns
 void identity_rows(const Kokkos::View<int*>& dofs, const Kokkos::View<const double*>& x, const Kokkos::View<double*>& y) {
@@ -51,7 +45,7 @@ DistributedStokesOperator::DistributedStokesOperator(const FluidOperator& local,
     : local_(local),
       halo_(halo),
       owned_(4 * partition.num_owned_nodes),
-      dirichlet_(device_list(dirichlet, "rouleau::DistributedStokesOperator::dirichlet")),
+      dirichlet_(device_copy(dirichlet, "rouleau::DistributedStokesOperator::dirichlet")),
       local_x_("rouleau::DistributedStokesOperator::local_x", 4 * partition.num_local_nodes()),
       local_y_("rouleau::DistributedStokesOperator::local_y", 4 * partition.num_local_nodes()) {}
 
@@ -75,7 +69,7 @@ DistributedBlockJacobi::DistributedBlockJacobi(const Communicator& communicator,
     : communicator_(communicator),
       owned_nodes_(partition.num_owned_nodes),
       block_halo_(communicator, partition, 16),
-      dirichlet_(device_list(dirichlet, "rouleau::DistributedBlockJacobi::dirichlet")),
+      dirichlet_(device_copy(dirichlet, "rouleau::DistributedBlockJacobi::dirichlet")),
       local_blocks_("rouleau::DistributedBlockJacobi::local_blocks", 16 * partition.num_local_nodes()),
       jacobi_(partition.num_owned_nodes) {}
 

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "util/view_transfer.hpp"
+
 namespace rouleau {
 
 namespace {
@@ -32,14 +34,6 @@ void scatter_nodes(const Kokkos::View<int*>& nodes, const int components, const 
       });
 }
 
-Kokkos::View<int*> device_indices(const std::vector<int>& indices, const std::string& label) {
-  Kokkos::View<int*> view(label, indices.size());
-  auto host = Kokkos::create_mirror_view(view);
-  for (std::size_t i = 0; i < indices.size(); ++i) host(i) = indices[i];
-  Kokkos::deep_copy(view, host);
-  return view;
-}
-
 // host vector ← device buffer, and back
 void to_host(const Vector& buffer, std::vector<double>& host) {
   Kokkos::View<double*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged> target(host.data(), host.size());
@@ -60,8 +54,8 @@ NodeHalo::NodeHalo(const Communicator& communicator, const ElementPartition& par
   for (const NeighborExchange& neighbor : partition.neighbors) {
     Link link;
     link.rank = neighbor.rank;
-    link.owned_shared = device_indices(neighbor.owned_shared, "rouleau::NodeHalo::owned_shared");
-    link.copies = device_indices(neighbor.copies, "rouleau::NodeHalo::copies");
+    link.owned_shared = device_copy(neighbor.owned_shared, "rouleau::NodeHalo::owned_shared");
+    link.copies = device_copy(neighbor.copies, "rouleau::NodeHalo::copies");
     link.owned_buffer = Vector("rouleau::NodeHalo::owned_buffer", components * neighbor.owned_shared.size());
     link.copy_buffer = Vector("rouleau::NodeHalo::copy_buffer", components * neighbor.copies.size());
     links_.push_back(link);

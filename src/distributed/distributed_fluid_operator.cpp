@@ -59,7 +59,7 @@ void DistributedStokesOperator::apply(const Kokkos::View<const double*>& x, cons
   Kokkos::deep_copy(Kokkos::subview(local_x_, Kokkos::make_pair(0, owned_)), x);
   halo_.update_copies(local_x_);
   local_.linear_action(local_x_, local_y_);
-  halo_.sum_into_owners(local_y_);
+  halo_.add_copies_to_owners(local_y_);  // only the owned entries are read
   owned_part(local_y_, y);
   identity_rows(dirichlet_, x, y);
 }
@@ -75,7 +75,7 @@ DistributedBlockJacobi::DistributedBlockJacobi(const Communicator& communicator,
 
 long long DistributedBlockJacobi::factor(const FluidOperator& local, const Kokkos::View<const double*>& state) {
   local.diagonal_blocks(state, local_blocks_);
-  block_halo_.sum_into_owners(local_blocks_);
+  block_halo_.add_copies_to_owners(local_blocks_);
   identity_block_rows(dirichlet_, local_blocks_);
   const long long singular =
       jacobi_.factor(Kokkos::subview(local_blocks_, Kokkos::make_pair(0, 16 * owned_nodes_)));

@@ -5,8 +5,9 @@
 // A vector here is a rank's owned entries (4 per owned dof node, the prefix of its local
 // vectors). The action: copy into a local vector, fill the copies (update_copies), sum the
 // rank's elements (FluidOperator::linear_action on the rank's mesh, which carries no
-// Dirichlet rows), add the shared nodes' partial sums at their owners, and set the
-// Dirichlet rows to the identity, y_d = x_d — as the single-rank operator does.
+// Dirichlet rows), add the shared nodes' partial sums at their owners (one exchange each
+// way per action: the copies of y are not read), and set the Dirichlet rows to the
+// identity, y_d = x_d — as the single-rank operator does.
 #include <Kokkos_Core.hpp>
 #include <vector>
 

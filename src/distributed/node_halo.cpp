@@ -88,8 +88,10 @@ void NodeHalo::exchange(const Direction direction, const Vector& values) const {
 
 void NodeHalo::update_copies(const Vector& values) const { exchange(Direction::owners_to_copies, values); }
 
+void NodeHalo::add_copies_to_owners(const Vector& values) const { exchange(Direction::copies_to_owners, values); }
+
 void NodeHalo::sum_into_owners(const Vector& values) const {
-  exchange(Direction::copies_to_owners, values);
+  add_copies_to_owners(values);
   update_copies(values);
 }
 

@@ -4,8 +4,10 @@
 // dof nodes of an ElementPartition (parallel/element_partition.hpp).
 //
 // update_copies():   every copy takes its owner's value (before an operator reads them);
-// sum_into_owners(): the owner adds the copies' partial sums to its own, in ascending rank
-//                    order, and the total goes back to the copies (after an element loop).
+// add_copies_to_owners(): the owner adds the copies' partial sums to its own, in ascending
+//                    rank order (after an element loop, when only owned entries are read
+//                    next); the copies keep their partial sums;
+// sum_into_owners(): the same, and the totals go back to the copies.
 // dot():             Σ x·y over the owned entries of all ranks (each unknown counted once).
 // Values are packed on the device, staged through host buffers for MPI, and unpacked on
 // the device; in a build without MPI (or on one rank) there is nothing to exchange.
@@ -25,6 +27,7 @@ class NodeHalo {
   NodeHalo(const Communicator& communicator, const ElementPartition& partition, int components);
 
   void update_copies(const Vector& values) const;
+  void add_copies_to_owners(const Vector& values) const;
   void sum_into_owners(const Vector& values) const;
   double dot(const ConstVector& x, const ConstVector& y) const;
 

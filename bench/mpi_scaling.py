@@ -1,0 +1,150 @@
+#!/usr/bin/env python3
+"""Scaling across MPI ranks (issue 10, item 6): measured from 1 to 2 ranks here, modelled
+out to 1000.
+
+Measured (bench/mpi_scaling under mpiexec, the shear box with 1 um elements, Stokes limit,
+point-block Jacobi GMRES; every figure is the median over repeats of the slowest rank):
+  strong   one box of --strong elements: 1 rank x 1 thread, 1 rank x 2 threads (OpenMP),
+           2 ranks x 1 thread (MPI)
+  weak     --weak elements per rank: 1 rank, then 2 ranks on the box doubled in x
+Columns: the distributed Stokes action, its halo exchange alone (update_copies +
+add_copies_to_owners), one MPI_Allreduce of 61 doubles, and a GMRES(30) iteration.
+
+Model (per GMRES iteration, P ranks, a cube of elements split into P cubic blocks of
+s^3 elements, s = (E/P)^(1/3)):
+  compute    t_e E/P, t_e the measured time per element of one iteration on 1 rank x 1
+             thread (operator, preconditioner and vector work together);
+  halo       2 exchanges per action (copies, then owners) to 26 neighbours (6 faces of
+             (s+1)^2 nodes, 12 edges of s+1, 8 corners), 4 values of 8 bytes per node:
+             2 [26 alpha + 32 ((6 (s+1)^2 + 12 (s+1) + 8)) / beta];
+  reductions 3 MPI_Allreduce per iteration (CGS2) plus 1 norm: 4 x 2 log2(P) alpha.
+Network: a typical InfiniBand HDR100 fabric, alpha = 1.5 us latency, beta = 12 GB/s per
+rank. The time per element is this machine's core; a GPU rank would be 20-50x faster per
+element, which moves the point where communication dominates to larger blocks.
+
+    /usr/bin/python3 bench/mpi_scaling.py [--strong 48 24 24] [--weak 24 24 24]
+        [--out bench/mpi_scaling.csv]                 (figure beside it, .png)
+"""
+import argparse
+import csv
+import io
+import math
+import os
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+LATENCY_S = 1.5e-6
+BANDWIDTH_B_S = 12e9
+BYTES_PER_NODE = 4 * 8
+
+
+def run(binary, ranks, threads, elements, repeats):
+    env = dict(os.environ, OMP_NUM_THREADS=str(threads), OMP_PROC_BIND="false",
+               OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    command = ["mpiexec", "-n", str(ranks), "--oversubscribe", binary,
+               "--elements", *map(str, elements), "--repeats", str(repeats)]
+    out = subprocess.run(command, env=env, capture_output=True, text=True, check=True).stdout
+    lines = [l for l in out.splitlines() if l.startswith("ranks,") or l[:1].isdigit()]
+    return next(csv.DictReader(io.StringIO("\n".join(lines))))
+
+
+def model(elements, ranks, seconds_per_element):
+    side = (elements / ranks) ** (1 / 3)
+    compute = seconds_per_element * elements / ranks
+    if ranks == 1:
+        return compute, 0.0, 0.0
+    nodes = 6 * (side + 1) ** 2 + 12 * (side + 1) + 8
+    halo = 2 * (26 * LATENCY_S + BYTES_PER_NODE * nodes / BANDWIDTH_B_S)
+    reductions = 4 * 2 * math.log2(ranks) * LATENCY_S
+    return compute, halo, reductions
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--binary", default=os.path.join(ROOT, "build", "bench", "mpi_scaling"))
+    parser.add_argument("--strong", type=int, nargs=3, default=[48, 24, 24])
+    parser.add_argument("--weak", type=int, nargs=3, default=[24, 24, 24])
+    parser.add_argument("--repeats", type=int, default=20)
+    parser.add_argument("--out", default=os.path.join(ROOT, "bench", "mpi_scaling.csv"))
+    args = parser.parse_args()
+
+    rows = []
+    for ranks, threads in ((1, 1), (1, 2), (2, 1)):
+        rows.append(dict(study="strong", **run(args.binary, ranks, threads, args.strong, args.repeats)))
+    weak_2 = [2 * args.weak[0], args.weak[1], args.weak[2]]
+    rows.append(dict(study="weak", **run(args.binary, 1, 1, args.weak, args.repeats)))
+    rows.append(dict(study="weak", **run(args.binary, 2, 1, weak_2, args.repeats)))
+
+    base = rows[0]
+    seconds_per_element = float(base["iteration_s"]) / float(base["elements_per_rank"])
+    for row in rows:
+        row["speedup_vs_1_rank_1_thread"] = ""
+    for row in rows[:3]:
+        row["speedup_vs_1_rank_1_thread"] = f"{float(base['iteration_s']) / float(row['iteration_s']):.3f}"
+    rows[4]["speedup_vs_1_rank_1_thread"] = f"{float(rows[3]['iteration_s']) / float(rows[4]['iteration_s']):.3f}"
+
+    print(f"{'study':7} {'ranks':>5} {'thr':>3} {'unknowns':>9} {'action ms':>9} {'exchange ms':>11} "
+          f"{'allreduce us':>12} {'iteration ms':>12} {'speed-up':>8}")
+    for r in rows:
+        print(f"{r['study']:7} {r['ranks']:>5} {r['threads']:>3} {r['unknowns']:>9} "
+              f"{1e3 * float(r['action_s']):9.3f} {1e3 * float(r['exchange_s']):11.3f} "
+              f"{1e6 * float(r['allreduce_s']):12.2f} {1e3 * float(r['iteration_s']):12.3f} "
+              f"{r['speedup_vs_1_rank_1_thread']:>8}")
+
+    # The model: strong scaling of a 10^7-unknown box (2.5e6 elements), weak scaling at the
+    # measured weak block per rank, out to 1000 ranks.
+    model_rows = []
+    strong_elements = 2.5e6
+    weak_elements = args.weak[0] * args.weak[1] * args.weak[2]
+    for ranks in (1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1000):
+        for study, elements in (("model strong 1e7 unknowns", strong_elements),
+                                ("model weak", weak_elements * ranks)):
+            compute, halo, reductions = model(elements, ranks, seconds_per_element)
+            total = compute + halo + reductions
+            model_rows.append(dict(study=study, ranks=ranks, elements=int(elements), compute_s=compute, halo_s=halo,
+                                   reductions_s=reductions, iteration_s=total,
+                                   communication_fraction=(halo + reductions) / total))
+    print(f"\nmodel ({seconds_per_element * 1e9:.0f} ns per element per iteration, alpha {LATENCY_S * 1e6} us, "
+          f"beta {BANDWIDTH_B_S / 1e9} GB/s)")
+    for m in model_rows:
+        if m["ranks"] in (1, 8, 64, 512, 1000):
+            print(f"  {m['study']:26} P={m['ranks']:5d}: iteration {1e3 * m['iteration_s']:9.3f} ms, "
+                  f"communication {100 * m['communication_fraction']:5.1f} %")
+
+    measured_fields = list(rows[0].keys())
+    model_fields = list(model_rows[0].keys())
+    with open(args.out + ".tmp", "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=measured_fields + [k for k in model_fields if k not in measured_fields])
+        writer.writeheader()
+        for r in rows + model_rows:
+            writer.writerow(r)
+    os.replace(args.out + ".tmp", args.out)
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    for ax, study, title in ((axes[0], "model strong 1e7 unknowns", "strong: 10^7 unknowns"),
+                             (axes[1], "model weak", f"weak: {weak_elements} elements per rank")):
+        ms = [m for m in model_rows if m["study"] == study]
+        ranks = [m["ranks"] for m in ms]
+        ax.loglog(ranks, [m["iteration_s"] for m in ms], "k-", label="model: total")
+        ax.loglog(ranks, [m["compute_s"] for m in ms], "b--", label="compute")
+        ax.loglog(ranks[1:], [m["halo_s"] + m["reductions_s"] for m in ms[1:]], "r:", label="communication")
+        ax.set_xlabel("ranks")
+        ax.set_ylabel("s per GMRES iteration")
+        ax.set_title(title)
+        ax.grid(True, which="both", alpha=0.3)
+    measured_weak = rows[3:5]
+    axes[1].loglog([int(r["ranks"]) for r in measured_weak], [float(r["iteration_s"]) for r in measured_weak], "ko",
+                   label="measured here")
+    for ax in axes:
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.splitext(args.out)[0] + ".png", dpi=120)
+    print(f"wrote {args.out} and {os.path.splitext(args.out)[0]}.png")
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -42,7 +42,9 @@ BYTES_PER_NODE = 4 * 8
 def run(binary, ranks, threads, elements, repeats):
     env = dict(os.environ, OMP_NUM_THREADS=str(threads), OMP_PROC_BIND="false",
                OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    command = ["mpiexec", "-n", str(ranks), "--oversubscribe", binary,
+    # OpenMPI binds each of up to 2 ranks to one core: a rank with more threads must not be.
+    binding = ["--bind-to", "none"] if threads > 1 else []
+    command = ["mpiexec", "-n", str(ranks), "--oversubscribe", *binding, binary,
                "--elements", *map(str, elements), "--repeats", str(repeats)]
     out = subprocess.run(command, env=env, capture_output=True, text=True, check=True).stdout
     lines = [l for l in out.splitlines() if l.startswith("ranks,") or l[:1].isdigit()]

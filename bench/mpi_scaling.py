@@ -19,8 +19,9 @@ s^3 elements, s = (E/P)^(1/3)):
              2 [26 alpha + 32 ((6 (s+1)^2 + 12 (s+1) + 8)) / beta];
   reductions 3 MPI_Allreduce per iteration (CGS2) plus 1 norm: 4 x 2 log2(P) alpha.
 Network: a typical InfiniBand HDR100 fabric, alpha = 1.5 us latency, beta = 12 GB/s per
-rank. The time per element is this machine's core; a GPU rank would be 20-50x faster per
-element, which moves the point where communication dominates to larger blocks.
+rank. The time per element is this machine's core; the model also gives the same ranks as
+GPUs 30x faster per element (GPU_SPEEDUP; the staging of halo buffers through the host is
+not counted), where communication takes over at far larger blocks.
 
     /usr/bin/python3 bench/mpi_scaling.py [--strong 48 24 24] [--weak 24 24 24]
         [--out bench/mpi_scaling.csv]                 (figure beside it, .png)
@@ -37,6 +38,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 LATENCY_S = 1.5e-6
 BANDWIDTH_B_S = 12e9
 BYTES_PER_NODE = 4 * 8
+GPU_SPEEDUP = 30.0
 
 
 def run(binary, ranks, threads, elements, repeats):
@@ -104,15 +106,20 @@ def main():
                                 ("model weak", weak_elements * ranks)):
             compute, halo, reductions = model(elements, ranks, seconds_per_element)
             total = compute + halo + reductions
+            # the same ranks as GPUs, GPU_SPEEDUP times faster per element, same network
+            gpu_total = compute / GPU_SPEEDUP + halo + reductions
             model_rows.append(dict(study=study, ranks=ranks, elements=int(elements), compute_s=compute, halo_s=halo,
                                    reductions_s=reductions, iteration_s=total,
-                                   communication_fraction=(halo + reductions) / total))
+                                   communication_fraction=(halo + reductions) / total,
+                                   gpu_iteration_s=gpu_total,
+                                   gpu_communication_fraction=(halo + reductions) / gpu_total))
     print(f"\nmodel ({seconds_per_element * 1e9:.0f} ns per element per iteration, alpha {LATENCY_S * 1e6} us, "
           f"beta {BANDWIDTH_B_S / 1e9} GB/s)")
     for m in model_rows:
         if m["ranks"] in (1, 8, 64, 512, 1000):
             print(f"  {m['study']:26} P={m['ranks']:5d}: iteration {1e3 * m['iteration_s']:9.3f} ms, "
-                  f"communication {100 * m['communication_fraction']:5.1f} %")
+                  f"communication {100 * m['communication_fraction']:5.1f} %; as GPU ranks "
+                  f"{1e3 * m['gpu_iteration_s']:8.3f} ms, communication {100 * m['gpu_communication_fraction']:5.1f} %")
 
     measured_fields = list(rows[0].keys())
     model_fields = list(model_rows[0].keys())

@@ -8,17 +8,17 @@
 namespace rouleau {
 
 ElementPartition partition_fluid_mesh(const FluidMesh& mesh, int rank, int ranks) {
-  const auto& n = mesh.structured_elements;
-  if (n[0] * n[1] * n[2] != mesh.num_elements)
-    throw std::invalid_argument(
-        "rouleau::partition_fluid_mesh: only structured boxes are partitioned so far (a mesh of " +
-        std::to_string(mesh.num_elements) + " unstructured elements needs a graph partition)");
   auto connectivity = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.element_dof_nodes);
   std::vector<int> element_dof_nodes(static_cast<std::size_t>(mesh.num_elements) * mesh.nodes_per_element);
   for (int e = 0; e < mesh.num_elements; ++e)
     for (int a = 0; a < mesh.nodes_per_element; ++a) element_dof_nodes[e * mesh.nodes_per_element + a] = connectivity(e, a);
-  return make_element_partition(rank, ranks, block_element_owners(n, ranks), element_dof_nodes,
-                                mesh.nodes_per_element, mesh.num_dof_nodes);
+  const auto& n = mesh.structured_elements;
+  const bool structured = n[0] * n[1] * n[2] == mesh.num_elements && mesh.num_elements > 0;
+  const int face_nodes = mesh.element_type == FluidElementType::hexahedron8 ? 4 : 3;
+  const std::vector<int> owners =
+      structured ? block_element_owners(n, ranks)
+                 : graph_element_owners(element_dof_nodes, mesh.nodes_per_element, mesh.num_dof_nodes, face_nodes, ranks);
+  return make_element_partition(rank, ranks, owners, element_dof_nodes, mesh.nodes_per_element, mesh.num_dof_nodes);
 }
 
 FluidMesh make_local_mesh(const FluidMesh& mesh, const ElementPartition& partition) {

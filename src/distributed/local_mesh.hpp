@@ -8,8 +8,8 @@
 namespace rouleau {
 
 // The partition of `mesh` for `rank` of `ranks`: the block partition of a structured box
-// (block_element_owners). Other meshes (Gmsh vessels) need a graph partition, not there
-// yet: std::invalid_argument.
+// (block_element_owners), a METIS partition of any other mesh (graph_element_owners:
+// Gmsh vessels, tetrahedra).
 ElementPartition partition_fluid_mesh(const FluidMesh& mesh, int rank, int ranks);
 
 // The rank's elements as a mesh: dof nodes numbered as in `partition` (owned first, then

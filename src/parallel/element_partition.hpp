@@ -34,6 +34,16 @@ std::array<int, 3> block_grid(const std::array<int, 3>& elements, int ranks);
 // block (b_x, b_y, b_z) on rank b_x + p_x (b_y + p_y b_z).
 std::vector<int> block_element_owners(const std::array<int, 3>& elements, int ranks);
 
+// The owner of every element of an unstructured mesh (Gmsh vessels): a k-way partition of
+// the elements' dual graph (elements adjacent when they share a face: `face_nodes` nodes,
+// 3 for tetrahedra, 4 for hexahedra) by METIS, with a fixed seed, so every rank computes
+// the same partition from the same mesh. Parts are balanced to 3 % of E/ranks. Throws
+// std::runtime_error in a build without METIS (ROULEAU_HAS_METIS).
+std::vector<int> graph_element_owners(const std::vector<int>& element_dof_nodes, int nodes_per_element,
+                                      int num_dof_nodes, int face_nodes, int ranks);
+// Whether this build can partition unstructured meshes.
+bool has_graph_partitioner();
+
 // The nodes shared with one other rank.
 struct NeighborExchange {
   int rank = 0;                   // the other rank

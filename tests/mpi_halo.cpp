@@ -1,6 +1,7 @@
 // The distributed fluid operator on 2 (or more) MPI ranks (issue 10): the shared nodes'
 // exchange (NodeHalo) and the rank-local operators give the single-rank answer to
 // round-off. Every rank also builds the whole mesh and its operator, the reference.
+// Also the gather of whole vectors on one rank for output and checkpoints (RootGather).
 // Run by ctest as `mpiexec -n 2 mpi_halo` (oversubscribed where the machine has fewer cores).
 #include <gtest/gtest.h>
 
@@ -14,6 +15,7 @@
 
 #include "distributed/local_mesh.hpp"
 #include "distributed/node_halo.hpp"
+#include "distributed/root_gather.hpp"
 #include "fluid/fluid_operator.hpp"
 #include "parallel/communicator.hpp"
 
@@ -147,6 +149,26 @@ TEST(NodeHalo, DistributedOperatorsGiveTheSingleRankAnswer) {
     EXPECT_NEAR(dot, expected_dot, 1e-12 * std::fabs(expected_dot));
   }
   }
+}
+
+TEST(RootGather, OneGlobalVectorForAnyRankCountAndBack) {
+  // Gathered on rank 0, every rank's owned entries make the global vector bit for bit (the
+  // file a checkpoint or an output step writes); scattered back, each rank gets its owned
+  // entries, and update_copies completes them: a restart on another rank count.
+  Distributed d;
+  const HostVector global = random_vector(d.mesh.num_unknowns(), 21);
+  const RootGather root(d.world, d.partition, 4);
+  const std::vector<double> gathered = root.gather(d.local_part(global, false));
+  if (root.is_root()) {
+    ASSERT_EQ(gathered.size(), static_cast<std::size_t>(d.mesh.num_unknowns()));
+    for (int i = 0; i < d.mesh.num_unknowns(); ++i) ASSERT_EQ(gathered[i], global(i)) << i;
+  } else {
+    EXPECT_TRUE(gathered.empty());
+  }
+  Vector back("back", 4 * d.partition.num_local_nodes());
+  root.scatter(gathered, back);
+  d.halo.update_copies(back);
+  EXPECT_EQ(d.largest_difference(back, global), 0.0);
 }
 
 }  // namespace

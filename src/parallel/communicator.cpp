@@ -70,6 +70,46 @@ void Communicator::exchange(const std::vector<int>& ranks, const std::vector<std
 
 void Communicator::barrier() const { check(MPI_Barrier(MPI_COMM_WORLD), "MPI_Barrier"); }
 
+namespace {
+// MPI_Gatherv of `mine` (type T as `type`) onto root, rank after rank.
+template <class T>
+std::vector<T> gather_on_root(const std::vector<T>& mine, int root, int rank, int size, MPI_Datatype type) {
+  const int count = static_cast<int>(mine.size());
+  std::vector<int> counts(rank == root ? size : 0), offsets;
+  check(MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, root, MPI_COMM_WORLD), "MPI_Gather");
+  std::vector<T> all;
+  if (rank == root) {
+    offsets.assign(size, 0);
+    for (int r = 1; r < size; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+    all.resize(static_cast<std::size_t>(offsets[size - 1]) + counts[size - 1]);
+  }
+  check(MPI_Gatherv(mine.data(), count, type, all.data(), counts.data(), offsets.data(), type, root, MPI_COMM_WORLD),
+        "MPI_Gatherv");
+  return all;
+}
+}  // namespace
+
+std::vector<double> Communicator::gather(const std::vector<double>& mine, int root) const {
+  return gather_on_root(mine, root, rank_, size_, MPI_DOUBLE);
+}
+
+std::vector<int> Communicator::gather(const std::vector<int>& mine, int root) const {
+  return gather_on_root(mine, root, rank_, size_, MPI_INT);
+}
+
+std::vector<double> Communicator::scatter(const std::vector<double>& all, const std::vector<int>& counts,
+                                          int root) const {
+  if (static_cast<int>(counts.size()) != size_)
+    throw std::invalid_argument("rouleau::Communicator::scatter: one count per rank");
+  std::vector<int> offsets(size_, 0);
+  for (int r = 1; r < size_; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+  std::vector<double> mine(counts[rank_]);
+  check(MPI_Scatterv(all.data(), counts.data(), offsets.data(), MPI_DOUBLE, mine.data(), counts[rank_], MPI_DOUBLE,
+                     root, MPI_COMM_WORLD),
+        "MPI_Scatterv");
+  return mine;
+}
+
 #else  // one rank, no MPI
 
 bool Communicator::has_mpi() { return false; }
@@ -83,6 +123,11 @@ void Communicator::exchange(const std::vector<int>& ranks, const std::vector<std
   if (!ranks.empty()) throw std::logic_error("rouleau::Communicator::exchange: no other rank in a build without MPI");
 }
 void Communicator::barrier() const {}
+std::vector<double> Communicator::gather(const std::vector<double>& mine, int) const { return mine; }
+std::vector<int> Communicator::gather(const std::vector<int>& mine, int) const { return mine; }
+std::vector<double> Communicator::scatter(const std::vector<double>& all, const std::vector<int>&, int) const {
+  return all;
+}
 
 #endif
 

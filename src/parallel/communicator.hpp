@@ -30,6 +30,13 @@ class Communicator {
   void exchange(const std::vector<int>& ranks, const std::vector<std::vector<double>>& send,
                 std::vector<std::vector<double>>& recv) const;
 
+  // Gathers every rank's `mine` on `root`, rank after rank (MPI_Gatherv); empty elsewhere.
+  std::vector<double> gather(const std::vector<double>& mine, int root) const;
+  std::vector<int> gather(const std::vector<int>& mine, int root) const;
+  // The reverse: rank r receives its `counts[r]` entries of `all` (read on `root` only;
+  // counts on every rank).
+  std::vector<double> scatter(const std::vector<double>& all, const std::vector<int>& counts, int root) const;
+
   void barrier() const;
 
  private:

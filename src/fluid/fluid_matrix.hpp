@@ -34,6 +34,10 @@ void flatten_node_lists(std::vector<std::vector<int>>& lists, std::vector<int>& 
 // node itself among them).
 FluidMatrixGraph make_block_matrix_graph(const std::vector<int>& node_offsets, const std::vector<int>& node_neighbors);
 
+// Rows `rows` of the matrix (values on `graph`) become the identity's rows: the Dirichlet
+// rows of an assembled Jacobian.
+void set_identity_rows(const FluidMatrixGraph& graph, const Kokkos::View<int*>& rows, const Kokkos::View<double*>& values);
+
 // The strength graph for aggregation: weight 1/|x_a − x_b|² for every pair of dof nodes
 // that share an element, the distance taken within the element (so a periodic boundary
 // joins the nodes across it), the largest over the elements they share.

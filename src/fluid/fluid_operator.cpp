@@ -297,15 +297,7 @@ void BasicFluidOperator<ExecSpace>::assemble_jacobian(const ConstVector& state, 
                            f);
   });
   // A constrained row is the identity row.
-  auto dofs = dirichlet_dofs_;
-  auto row_map = graph.row_map;
-  auto entries = graph.entries;
-  Kokkos::parallel_for(
-      "rouleau::FluidOperator::dirichlet_crs_rows", Kokkos::RangePolicy<ExecSpace>(0, dofs.extent(0)),
-      KOKKOS_LAMBDA(const int k) {
-        const int row = dofs(k);
-        for (std::size_t p = row_map(row); p < row_map(row + 1); ++p) values(p) = entries(p) == row ? 1.0 : 0.0;
-      });
+  set_identity_rows(graph, dirichlet_dofs_, values);
 }
 
 // Greedy colouring in element order: each element takes the first colour none of its

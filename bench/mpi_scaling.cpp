@@ -3,7 +3,7 @@
 // Stokes limit, the element path on every rank) the pieces of a GMRES iteration across
 // ranks and writes one CSV row (rank 0):
 //   action_s      one distributed Stokes action: update_copies, the rank's elements,
-//                 sum_into_owners, Dirichlet rows (median of --repeats)
+//                 add_copies_to_owners, Dirichlet rows (median of --repeats)
 //   exchange_s    update_copies + add_copies_to_owners alone (the halo's share of an action)
 //   allreduce_s   one MPI_Allreduce of 61 doubles (a CGS2 pass over a GMRES(60) basis)
 //   iteration_s   a GMRES(30) iteration with point-block Jacobi: 30 iterations, timed
@@ -124,7 +124,8 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  MPI_Init(&argc, &argv);
+  int provided = 0;  // OpenMP threads beside MPI; only the main thread calls MPI
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
   int status = 0;
   {
     Kokkos::ScopeGuard kokkos(argc, argv);

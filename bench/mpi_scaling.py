@@ -17,7 +17,8 @@ s^3 elements, s = (E/P)^(1/3)):
   halo       2 exchanges per action (copies, then owners) to 26 neighbours (6 faces of
              (s+1)^2 nodes, 12 edges of s+1, 8 corners), 4 values of 8 bytes per node:
              2 [26 alpha + 32 ((6 (s+1)^2 + 12 (s+1) + 8)) / beta];
-  reductions 3 MPI_Allreduce per iteration (CGS2) plus 1 norm: 4 x 2 log2(P) alpha.
+  reductions 3 MPI_Allreduce per iteration (CGS2; the norm comes with the last):
+             3 x 2 log2(P) alpha.
 Network: a typical InfiniBand HDR100 fabric, alpha = 1.5 us latency, beta = 12 GB/s per
 rank. The time per element is this machine's core; the model also gives the same ranks as
 GPUs 30x faster per element (GPU_SPEEDUP; the staging of halo buffers through the host is
@@ -60,7 +61,7 @@ def model(elements, ranks, seconds_per_element):
         return compute, 0.0, 0.0
     nodes = 6 * (side + 1) ** 2 + 12 * (side + 1) + 8
     halo = 2 * (26 * LATENCY_S + BYTES_PER_NODE * nodes / BANDWIDTH_B_S)
-    reductions = 4 * 2 * math.log2(ranks) * LATENCY_S
+    reductions = 3 * 2 * math.log2(ranks) * LATENCY_S
     return compute, halo, reductions
 
 

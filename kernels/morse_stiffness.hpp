@@ -39,7 +39,7 @@ struct SurfacePairStiffnessFunctor {
   Kokkos::View<int*> pair_neighbors;                // in range: CSR columns, written
   Kokkos::View<double* [2]> pair_coefficients;      // (pair, [a pN/μm, b pN/μm³]), written
 
-  // Calls in_range(k, j, d, r²) for each list entry k = (i, j) with r < r_c.
+  // Calls in_range(j, potential, r²) for each list entry (i, j) with r < r_c.
   template <class InRange>
   KOKKOS_INLINE_FUNCTION void for_each_pair_in_range(const int i, const InRange& in_range) const {
     const double x[3] = {point_positions(i, 0), point_positions(i, 1), point_positions(i, 2)};

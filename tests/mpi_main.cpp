@@ -6,7 +6,8 @@
 #include <Kokkos_Core.hpp>
 
 int main(int argc, char** argv) {
-  MPI_Init(&argc, &argv);
+  int provided = 0;  // OpenMP threads beside MPI; only the main thread calls MPI
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
   int result = 0;
   {
     Kokkos::ScopeGuard kokkos(argc, argv);

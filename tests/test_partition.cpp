@@ -1,6 +1,6 @@
 // The fluid mesh split across ranks (issue 10), checked in one process by building every
-// rank's partition: the block grid cuts the fewest faces; every element and every dof node
-// has exactly one owner; the shared-node lists of two ranks match entry for entry; and the
+// rank's partition: the block grid cuts the fewest faces; every element, every dof node
+// and every boundary face has exactly one owner; the shared-node lists of two ranks match entry for entry; and the
 // rank-local operators, their element sums added at the owners, give the whole mesh's
 // Stokes and Navier–Stokes actions to round-off (the MPI run of the same: mpi_halo.cpp);
 // for the box's block partition and for a METIS partition of its tetrahedra.
@@ -127,6 +127,12 @@ TEST(ElementPartition, OwnsEveryElementAndNodeOnceAndSharesConsistently) {
     }
     for (const int c : element_owners) ASSERT_EQ(c, 1);
     for (const int c : node_owners) ASSERT_EQ(c, 1);
+    // every boundary face on exactly one rank's mesh (a traction or a flux counted once)
+    for (std::size_t side = 0; side < mesh.boundaries.size(); ++side) {
+      std::size_t faces = 0;
+      for (const ElementPartition& p : parts) faces += make_local_mesh(mesh, p).boundaries[side].faces.size();
+      EXPECT_EQ(faces, mesh.boundaries[side].faces.size()) << mesh.boundaries[side].name << ", " << ranks << " ranks";
+    }
     // balanced: blocks as even as whole planes of elements allow (at most Π ⌈n_d/p_d⌉);
     // METIS within its 3 % (+1 element)
     std::size_t fewest = mesh.num_elements, most = 0;

@@ -55,7 +55,8 @@ void points_to_nodes(const PointVectors& points, const Kokkos::View<int* [3]>& p
 // thread anyway: the plain order keeps neighbouring rows together.
 template <class ExecSpace>
 InterleavedRows half_list_rows(const int num_points) {
-  constexpr bool on_host = Kokkos::SpaceAccessibility<Kokkos::HostSpace, typename ExecSpace::memory_space>::accessible;
+  // host threads: the execution space runs on the host (not a GPU with host-visible memory)
+  constexpr bool on_host = Kokkos::SpaceAccessibility<ExecSpace, Kokkos::HostSpace>::accessible;
   return {num_points, on_host ? 64 : 1, on_host ? 64 : 1};
 }
 }  // namespace
@@ -446,14 +447,13 @@ void BasicSurfaceInteraction<ExecSpace>::linearize() {
   Kokkos::parallel_for("rouleau::SurfaceInteraction::pair_stiffness",
                        Kokkos::RangePolicy<ExecSpace, FillPairsInRange>(0, n_points), stiffness);
   linearized_pairs_ = pairs;
-  linearized_list_ = rebuilds_;
+  linearized_ = true;
 }
 
 template <class ExecSpace>
 void BasicSurfaceInteraction<ExecSpace>::force_change(const PointVectors& node_displacements,
                                                       const PointVectors& node_force_changes) const {
-  if (linearized_list_ < 0 || linearized_list_ != rebuilds_)
-    throw std::logic_error("rouleau::SurfaceInteraction::force_change: linearize() first (again after a list rebuild)");
+  if (!linearized_) throw std::logic_error("rouleau::SurfaceInteraction::force_change: linearize() first");
   ProfilingRegion region("rouleau::SurfaceInteraction::force_change");
   // δx_p = Σ_k s_pk δx_{n_pk}, then δF per point, then δf_n = Σ s_pk δF_p
   nodes_to_points<ExecSpace>(node_displacements, point_nodes_, point_shape_, point_displacements_);
@@ -496,6 +496,7 @@ void BasicSurfaceInteraction<ExecSpace>::restore_state(const CheckpointData& dat
     built_ = false;
   }
   rebuilds_ = rebuilds;
+  linearized_ = false;  // the pairs in range belong to positions before the restore
   gather_point_positions();
 }
 

@@ -61,7 +61,8 @@ class BasicSurfaceInteraction {
   void linearize();
   // node_force_changes(n) = (K δx)_n [pN] for the node moves δx = node_displacements [μm],
   // exactly (the pairs' Hessian blocks, no difference), about the positions of the last
-  // linearize(); zero off the outer surfaces. Costs a stream over the list, no exponential.
+  // linearize() (even if the list was rebuilt since); zero off the outer surfaces. Costs a
+  // stream over the pairs in range, no exponential.
   void force_change(const PointVectors& node_displacements, const PointVectors& node_force_changes) const;
   // The pairs within the cut-off at the last linearize() (the list entries less the skin's).
   int linearized_pairs() const { return linearized_pairs_; }
@@ -116,12 +117,14 @@ class BasicSurfaceInteraction {
                                                     typename ExecSpace::device_type>;
   Scatter force_scatter_;
   mutable Scatter node_force_scatter_;  // point forces summed into the nodes
-  // The linearization: the pairs within the cut-off (CSR) with their (a, b), the points'
-  // positions then, and the list it came from (force_change() refuses a list rebuilt since).
+  // The linearization: the pairs within the cut-off (CSR, its own: a later list rebuild
+  // leaves it whole) with their (a, b), and the points' positions then; none before the
+  // first linearize() and after restore_state().
   Kokkos::View<int*> pair_offsets_, pair_neighbors_;
   Kokkos::View<double* [2]> pair_coefficients_;
   PointVectors linearized_positions_;
-  int linearized_list_ = -1, linearized_pairs_ = 0;
+  bool linearized_ = false;
+  int linearized_pairs_ = 0;
   mutable PointVectors point_displacements_, point_force_changes_;
   mutable Scatter change_scatter_;
 };

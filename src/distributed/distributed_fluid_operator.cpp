@@ -1,5 +1,6 @@
 #include "distributed/distributed_fluid_operator.hpp"
 
+#include <stdexcept>
 #include <string>
 
 #include "util/view_transfer.hpp"
@@ -28,6 +29,13 @@ void identity_block_rows(const Kokkos::View<int*>& dofs, const Vector& blocks) {
 }
 }  // namespace
 
+void require_rank_local_operator(const FluidOperator& local, const char* who) {
+  if (local.coefficients().viscous_reconstruction)
+    throw std::invalid_argument(std::string("rouleau::") + who +
+                                ": the viscous reconstruction is not distributed yet (its projected gradient at a "
+                                "shared node needs the other ranks' elements)");
+}
+
 std::vector<int> owned_local_unknowns(const ElementPartition& partition, const std::vector<int>& global_unknowns) {
   std::unordered_map<int, int> local_node;
   for (int l = 0; l < partition.num_owned_nodes; ++l) local_node[partition.global_node[l]] = l;
@@ -55,6 +63,7 @@ void DistributedStokesOperator::owned_part(const Kokkos::View<const double*>& lo
 }
 
 void DistributedStokesOperator::apply(const Kokkos::View<const double*>& x, const Kokkos::View<double*>& y) const {
+  require_rank_local_operator(local_, "DistributedStokesOperator");
   // y = Σ_ranks Σ_e K_e x, then y_d = x_d
   Kokkos::deep_copy(Kokkos::subview(local_x_, Kokkos::make_pair(0, owned_)), x);
   halo_.update_copies(local_x_);
@@ -74,6 +83,7 @@ DistributedBlockJacobi::DistributedBlockJacobi(const Communicator& communicator,
       jacobi_(partition.num_owned_nodes) {}
 
 long long DistributedBlockJacobi::factor(const FluidOperator& local, const Kokkos::View<const double*>& state) {
+  require_rank_local_operator(local, "DistributedBlockJacobi");
   local.diagonal_blocks(state, local_blocks_);
   block_halo_.add_copies_to_owners(local_blocks_);
   identity_block_rows(dirichlet_, local_blocks_);

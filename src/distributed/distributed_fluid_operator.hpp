@@ -8,6 +8,11 @@
 // Dirichlet rows), add the shared nodes' partial sums at their owners (one exchange each
 // way per action: the copies of y are not read), and set the Dirichlet rows to the
 // identity, y_d = x_d — as the single-rank operator does.
+//
+// Not yet across ranks: the viscous reconstruction (FluidCoefficients::viscous_reconstruction,
+// on in the fluid solver), whose projected gradient and lumped mass at a shared node need
+// the other ranks' elements too. The operators and preconditioners here refuse a local
+// operator with it on (std::invalid_argument) rather than give a wrong answer.
 #include <Kokkos_Core.hpp>
 #include <vector>
 
@@ -18,6 +23,10 @@
 #include "solver/linear_operator.hpp"
 
 namespace rouleau {
+
+// Throws std::invalid_argument when `local` needs what the rank alone cannot compute (the
+// viscous reconstruction's projected gradient); `who` names the caller.
+void require_rank_local_operator(const FluidOperator& local, const char* who);
 
 // The local unknown indices of the global unknowns (4·dof node + component) that this
 // rank owns, in the order given (the others are left out).
@@ -54,7 +63,7 @@ class DistributedBlockJacobi final : public Preconditioner {
   void apply(const Kokkos::View<const double*>& r, const Kokkos::View<double*>& z) const override;
 
  private:
-  const Communicator& communicator_;
+  Communicator communicator_;
   int owned_nodes_;
   NodeHalo block_halo_;
   Kokkos::View<int*> dirichlet_;

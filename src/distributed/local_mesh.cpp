@@ -67,14 +67,30 @@ FluidMesh make_local_mesh(const FluidMesh& mesh, const ElementPartition& partiti
   Kokkos::deep_copy(local.element_nodes, element_nodes);
   Kokkos::deep_copy(local.element_dof_nodes, element_dof_nodes);
 
+  // A boundary face belongs to the one element that holds all its nodes: the rank keeps
+  // the faces of its own elements (a face whose nodes are all shared may lie on another
+  // rank's element; counted twice, it would double a traction load or a flux).
+  std::vector<std::vector<int>> elements_at(mesh.num_nodes);  // geometric node → the rank's elements
+  for (const int e : partition.elements)
+    for (int a = 0; a < npe; ++a) elements_at[nodes(e, a)].push_back(e);
+  const auto of_own_element = [&](const std::array<int, 4>& face) {
+    for (const int e : elements_at[face[0]]) {
+      bool holds_all = true;
+      for (const int g : face) {
+        bool in_element = false;
+        for (int a = 0; a < npe; ++a) in_element = in_element || nodes(e, a) == g;
+        holds_all = holds_all && in_element;
+      }
+      if (holds_all) return true;
+    }
+    return false;
+  };
   for (const BoundaryFaces& side : mesh.boundaries) {
     BoundaryFaces part = side;
     part.faces.clear();
     part.nodes.clear();
     for (const auto& face : side.faces) {
-      bool on_rank = true;
-      for (const int g : face) on_rank = on_rank && held[g];
-      if (!on_rank) continue;
+      if (!held[face[0]] || !of_own_element(face)) continue;
       part.faces.push_back({local_geometric[face[0]], local_geometric[face[1]], local_geometric[face[2]],
                             local_geometric[face[3]]});
     }

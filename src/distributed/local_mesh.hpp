@@ -14,9 +14,10 @@ ElementPartition partition_fluid_mesh(const FluidMesh& mesh, int rank, int ranks
 
 // The rank's elements as a mesh: dof nodes numbered as in `partition` (owned first, then
 // copies), geometric nodes those of its elements in ascending global order, the boundary
-// faces all of whose nodes it holds. Periodic identification is carried by the dof
-// numbering; `periodic` and `structured_elements` are cleared (the element path runs; the
-// uniform-box stencil needs the whole box), `lower`/`upper` stay the global box.
+// faces of its elements (each face on exactly one rank; a side's `nodes` list every node of
+// the side the rank holds). Periodic identification is carried by the dof numbering;
+// `periodic` and `structured_elements` are cleared (the element path runs; the uniform-box
+// stencil needs the whole box), `lower`/`upper` stay the global box.
 FluidMesh make_local_mesh(const FluidMesh& mesh, const ElementPartition& partition);
 
 }  // namespace rouleau

@@ -18,9 +18,12 @@ RootGather::RootGather(const Communicator& communicator, const ElementPartition&
   count[communicator.rank()] = owned_entries_;
   communicator.sum(count.data(), communicator.size());
   for (const double c : count) entries_per_rank_.push_back(static_cast<int>(c));
-  if (is_root() && static_cast<int>(owner_global_nodes_.size()) != global_nodes_)
-    throw std::logic_error("rouleau::RootGather: the ranks own " + std::to_string(owner_global_nodes_.size()) +
-                           " nodes of " + std::to_string(global_nodes_));
+  // Checked on every rank (a throw on the root alone would leave the others waiting in the
+  // next collective): the ranks own every global node once.
+  const long long owned_in_all = communicator.sum(static_cast<long long>(partition.num_owned_nodes));
+  if (owned_in_all != global_nodes_)
+    throw std::logic_error("rouleau::RootGather: the ranks own " + std::to_string(owned_in_all) + " nodes of " +
+                           std::to_string(global_nodes_) + " (a node no element touches has no owner)");
 }
 
 std::vector<double> RootGather::gather(const Kokkos::View<const double*>& local) const {
@@ -38,10 +41,13 @@ std::vector<double> RootGather::gather(const Kokkos::View<const double*>& local)
 
 void RootGather::scatter(const std::vector<double>& global, const Kokkos::View<double*>& local) const {
   std::vector<double> ordered;
+  // the root's size check, on every rank (no rank may be left in MPI_Scatterv)
+  const double wrong_size =
+      communicator_.sum(is_root() && global.size() != static_cast<std::size_t>(components_) * global_nodes_ ? 1.0 : 0.0);
+  if (wrong_size > 0.0)
+    throw std::invalid_argument("rouleau::RootGather::scatter: the root's global vector does not hold " +
+                                std::to_string(components_ * global_nodes_) + " entries");
   if (is_root()) {
-    if (global.size() != static_cast<std::size_t>(components_) * global_nodes_)
-      throw std::invalid_argument("rouleau::RootGather::scatter: a global vector of " + std::to_string(global.size()) +
-                                  " entries, expected " + std::to_string(components_ * global_nodes_));
     ordered.resize(global.size());
     for (std::size_t k = 0; k < owner_global_nodes_.size(); ++k)
       for (int c = 0; c < components_; ++c)

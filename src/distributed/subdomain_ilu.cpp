@@ -1,5 +1,6 @@
 #include "distributed/subdomain_ilu.hpp"
 
+#include "distributed/distributed_fluid_operator.hpp"
 #include "util/view_transfer.hpp"
 
 namespace rouleau {
@@ -99,6 +100,7 @@ SubdomainIlu::SubdomainIlu(const Communicator& communicator, const ElementPartit
 SubdomainIlu::~SubdomainIlu() = default;
 
 void SubdomainIlu::factor(const FluidOperator& local, const Kokkos::View<const double*>& state) {
+  require_rank_local_operator(local, "SubdomainIlu");
   local.assemble_jacobian(state, local_graph_, local_values_);
   // the owned nodes' diagonal blocks, with the other ranks' elements added at the owner
   copy_diagonal_blocks(BlockCopy::matrix_to_blocks, diagonal_block_, local_graph_.row_map, local_values_,

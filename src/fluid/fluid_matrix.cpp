@@ -61,16 +61,6 @@ FluidMatrixGraph build_fluid_matrix_graph(const FluidMesh& mesh) {
   return make_block_matrix_graph(offsets, flat);
 }
 
-void set_identity_rows(const FluidMatrixGraph& graph, const Kokkos::View<int*>& rows, const Kokkos::View<double*>& values) {
-  auto row_map = graph.row_map;
-  auto entries = graph.entries;
-  Kokkos::parallel_for(
-      "rouleau::set_identity_rows", Kokkos::RangePolicy<>(0, rows.extent(0)), KOKKOS_LAMBDA(const int k) {
-        const int row = rows(k);
-        for (std::size_t p = row_map(row); p < row_map(row + 1); ++p) values(p) = entries(p) == row ? 1.0 : 0.0;
-      });
-}
-
 WeightedGraph fluid_node_strength(const FluidMesh& mesh) {
   auto dof_nodes = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.element_dof_nodes);
   auto geometric = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.element_nodes);

@@ -35,8 +35,17 @@ void flatten_node_lists(std::vector<std::vector<int>>& lists, std::vector<int>& 
 FluidMatrixGraph make_block_matrix_graph(const std::vector<int>& node_offsets, const std::vector<int>& node_neighbors);
 
 // Rows `rows` of the matrix (values on `graph`) become the identity's rows: the Dirichlet
-// rows of an assembled Jacobian.
-void set_identity_rows(const FluidMatrixGraph& graph, const Kokkos::View<int*>& rows, const Kokkos::View<double*>& values);
+// rows of an assembled Jacobian. Runs on ExecSpace.
+template <class ExecSpace = Kokkos::DefaultExecutionSpace>
+void set_identity_rows(const FluidMatrixGraph& graph, const Kokkos::View<int*>& rows, const Kokkos::View<double*>& values) {
+  auto row_map = graph.row_map;
+  auto entries = graph.entries;
+  Kokkos::parallel_for(
+      "rouleau::set_identity_rows", Kokkos::RangePolicy<ExecSpace>(0, rows.extent(0)), KOKKOS_LAMBDA(const int k) {
+        const int row = rows(k);
+        for (std::size_t p = row_map(row); p < row_map(row + 1); ++p) values(p) = entries(p) == row ? 1.0 : 0.0;
+      });
+}
 
 // The strength graph for aggregation: weight 1/|x_a − x_b|² for every pair of dof nodes
 // that share an element, the distance taken within the element (so a periodic boundary

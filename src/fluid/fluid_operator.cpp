@@ -297,7 +297,7 @@ void BasicFluidOperator<ExecSpace>::assemble_jacobian(const ConstVector& state, 
                            f);
   });
   // A constrained row is the identity row.
-  set_identity_rows(graph, dirichlet_dofs_, values);
+  set_identity_rows<ExecSpace>(graph, dirichlet_dofs_, values);
 }
 
 // Greedy colouring in element order: each element takes the first colour none of its

@@ -29,7 +29,8 @@ long long faces_cut(const std::array<int, 3>& n, const std::array<int, 3>& p) {
 
 TEST(BlockGrid, CutsTheFewestFaces) {
   // Against every factorization p_x p_y p_z = ranks that fits the box.
-  for (const std::array<int, 3> n : {std::array<int, 3>{8, 4, 4}, {40, 20, 20}, {3, 17, 5}, {64, 64, 64}})
+  const std::vector<std::array<int, 3>> boxes{{8, 4, 4}, {40, 20, 20}, {3, 17, 5}, {64, 64, 64}};
+  for (const std::array<int, 3>& n : boxes)
     for (int ranks = 1; ranks <= 24; ++ranks) {
       long long best = -1;
       for (int px = 1; px <= ranks; ++px)

@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <Kokkos_Core.hpp>
-#include <KokkosBlas1_dot.hpp>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -15,17 +14,20 @@
 
 #include "distributed/local_mesh.hpp"
 #include "distributed/node_halo.hpp"
+#include "distributed/node_sums.hpp"
 #include "distributed/root_gather.hpp"
 #include "fluid/fluid_operator.hpp"
 #include "parallel/communicator.hpp"
+#include "partitioned_meshes.hpp"
 
 namespace rouleau {
 namespace {
 
-using HostVector = Kokkos::View<double*, Kokkos::HostSpace>;
+using testing::partition_name;
+using testing::partitioned_meshes;
+using testing::shear_box;
 
-// The shear box of the paper's scenes, small and graded in y: periodic in x and z.
-FluidMesh shear_box() { return make_box_mesh({0, -5, 0}, {12, 5, 6}, {8, 4, 6}, {1.0, 1.3, 1.0}, {true, false, true}); }
+using HostVector = Kokkos::View<double*, Kokkos::HostSpace>;
 
 struct Distributed {
   explicit Distributed(FluidMesh mesh_ = shear_box()) : mesh(std::move(mesh_)) {}
@@ -67,6 +69,42 @@ HostVector random_vector(int n, unsigned seed) {
   return v;
 }
 
+// Re 2, a step of 0.1 (scaled), Navier–Stokes or Stokes, with or without the viscous
+// reconstruction.
+FluidCoefficients transient_coefficients(int convection, int viscous_reconstruction) {
+  FluidCoefficients c;
+  c.reynolds = 2.0;
+  c.mass_coefficient = 1.5 / 0.1;
+  c.inverse_dt = 1.0 / 0.1;
+  c.convection = convection;
+  c.viscous_reconstruction = viscous_reconstruction;
+  return c;
+}
+
+// The whole mesh's action on one rank: the Navier–Stokes Jacobian action at `state` along
+// `direction` (convection on) or the Stokes action (off), and its largest entry.
+struct WholeMeshAction {
+  HostVector values;
+  double largest = 0.0;
+};
+WholeMeshAction whole_mesh_action(const FluidMesh& mesh, const FluidCoefficients& c, const HostVector& state,
+                                  const HostVector& direction) {
+  const int n = mesh.num_unknowns();
+  FluidOperator global(mesh, 1.0);
+  global.allow_stencil(false);
+  global.set_coefficients(c);
+  Vector global_state("global_state", n), global_direction("global_direction", n), expected("expected", n);
+  Kokkos::deep_copy(global_state, state);
+  Kokkos::deep_copy(global_direction, direction);
+  if (c.convection)
+    global.jacobian_action(global_state, global_direction, expected);
+  else
+    global.linear_action(global_direction, expected);
+  WholeMeshAction result{Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), expected), 0.0};
+  for (int i = 0; i < n; ++i) result.largest = std::fmax(result.largest, std::fabs(result.values(i)));
+  return result;
+}
+
 TEST(NodeHalo, EveryCopyTakesItsOwnersValue) {
   Distributed d;
   HostVector ids("ids", d.mesh.num_unknowns());
@@ -105,52 +143,70 @@ TEST(NodeHalo, DistributedOperatorsGiveTheSingleRankAnswer) {
   // operator: the Stokes action and the Navier–Stokes Jacobian action (the state's copies
   // filled by update_copies), to 1e-13 of the largest entry; the distributed dot product
   // against the global one. On the box's blocks and on a METIS partition of its tetrahedra.
-  std::vector<FluidMesh> meshes{shear_box()};
-  if (has_graph_partitioner()) meshes.push_back(split_into_tetrahedra(meshes[0]));
-  for (const FluidMesh& mesh : meshes) {
+  for (const FluidMesh& mesh : partitioned_meshes()) {
   Distributed d(mesh);
   const int n = d.mesh.num_unknowns();
   const HostVector state = random_vector(n, 11), direction = random_vector(n, 12);
-  FluidCoefficients c;
-  c.reynolds = 2.0;
-  c.mass_coefficient = 1.5 / 0.1;
-  c.inverse_dt = 1.0 / 0.1;
   for (const int convection : {0, 1}) {
-    c.convection = convection;
-    FluidOperator global(d.mesh, 1.0), local(d.local_mesh, 1.0);
-    global.allow_stencil(false);
-    global.set_coefficients(c);
+    const FluidCoefficients c = transient_coefficients(convection, 0);
+    const WholeMeshAction expected = whole_mesh_action(d.mesh, c, state, direction);
+    FluidOperator local(d.local_mesh, 1.0);
     local.set_coefficients(c);
-    Vector global_state("global_state", n), global_direction("global_direction", n), expected("expected", n);
-    Kokkos::deep_copy(global_state, state);
-    Kokkos::deep_copy(global_direction, direction);
     const Vector local_state = d.local_part(state, false), local_direction = d.local_part(direction, false);
     d.halo.update_copies(local_state);
     d.halo.update_copies(local_direction);
     Vector action("action", local_state.extent(0));
-    if (convection) {
-      global.jacobian_action(global_state, global_direction, expected);
+    if (convection)
       local.jacobian_action(local_state, local_direction, action);
-    } else {
-      global.linear_action(global_direction, expected);
+    else
       local.linear_action(local_direction, action);
-    }
     d.halo.sum_into_owners(action);
-    const auto expected_host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), expected);
-    double largest = 0.0;
-    for (int i = 0; i < n; ++i) largest = std::fmax(largest, std::fabs(expected_host(i)));
-    const double difference = d.largest_difference(action, expected_host);
+    const double largest = expected.largest;
+    const double difference = d.largest_difference(action, expected.values);
     const double dot = d.halo.dot(action, local_direction);
-    const double expected_dot = KokkosBlas::dot(expected, global_direction);
+    double expected_dot = 0.0;
+    for (int i = 0; i < n; ++i) expected_dot += expected.values(i) * direction(i);
     if (d.world.rank() == 0)
       std::printf("%s, %s on %d ranks: largest difference from one rank %.2e (of entries up to %.3g); <y, x> %.17g "
                   "vs %.17g\n",
-                  mesh.element_type == FluidElementType::hexahedron8 ? "box (blocks)" : "tetrahedra (METIS)",
-                  convection ? "Navier-Stokes Jacobian action" : "Stokes action", d.world.size(), difference, largest,
+                  partition_name(mesh), convection ? "Navier-Stokes Jacobian action" : "Stokes action", d.world.size(),
+                  difference, largest,
                   dot, expected_dot);
     EXPECT_LT(difference, 1e-13 * largest);
     EXPECT_NEAR(dot, expected_dot, 1e-12 * std::fabs(expected_dot));
   }
+  }
+}
+
+TEST(NodeSums, MakeTheRankOperatorsWholeWithTheViscousReconstruction) {
+  // The Navier–Stokes Jacobian action with the viscous reconstruction (the projected
+  // gradient in the strong residual: a lumped L2 projection, whose element sums and mass at
+  // a shared node need the other ranks' elements), on the box's blocks and on a METIS
+  // partition of its tetrahedra. With the operator's node sums every local entry, owned or
+  // copy, is the global one to 1e-13 of the largest; without them the shared nodes are off.
+  for (const FluidMesh& mesh : partitioned_meshes()) {
+    Distributed d(mesh);
+    const int n = d.mesh.num_unknowns();
+    const HostVector state = random_vector(n, 31), direction = random_vector(n, 32);
+    const FluidCoefficients c = transient_coefficients(1, 1);
+    const WholeMeshAction expected = whole_mesh_action(d.mesh, c, state, direction);
+    double differences[2];
+    for (const bool summed : {false, true}) {
+      FluidOperator local(d.local_mesh, 1.0);
+      local.set_coefficients(c);
+      const NodeSums sums(d.world, d.partition);
+      if (summed) local.set_node_sums([&sums](const Vector& values, int components) { sums(values, components); });
+      Vector action("action", 4 * d.partition.num_local_nodes());
+      local.jacobian_action(d.local_part(state), d.local_part(direction), action);
+      if (!summed) d.halo.sum_into_owners(action);  // the action's own sums, but not the gradient's
+      differences[summed] = d.largest_difference(action, expected.values);
+    }
+    if (d.world.rank() == 0)
+      std::printf("%s, viscous reconstruction, %d ranks: largest difference from one rank %.2e with the node sums, "
+                  "%.2e without (entries up to %.3g)\n",
+                  partition_name(mesh), d.world.size(), differences[1], differences[0], expected.largest);
+    EXPECT_LT(differences[1], 1e-13 * expected.largest);
+    if (d.world.size() > 1) EXPECT_GT(differences[0], 1e-6 * expected.largest);
   }
 }
 

@@ -19,9 +19,14 @@
 #include "fluid/fluid_operator.hpp"
 #include "mesh/fluid_mesh.hpp"
 #include "parallel/element_partition.hpp"
+#include "partitioned_meshes.hpp"
 
 namespace rouleau {
 namespace {
+
+using testing::partition_name;
+using testing::partitioned_meshes;
+using testing::shear_box;
 
 long long faces_cut(const std::array<int, 3>& n, const std::array<int, 3>& p) {
   return (p[0] - 1) * 1LL * n[1] * n[2] + (p[1] - 1) * 1LL * n[0] * n[2] + (p[2] - 1) * 1LL * n[0] * n[1];
@@ -67,20 +72,6 @@ TEST(BlockElementOwners, EvenBlocks) {
     EXPECT_GT(*fewest, 0);
     EXPECT_LE(*most, slack);
   }
-}
-
-// The shear box of the paper's scenes, small and graded in y: periodic in x and z.
-FluidMesh shear_box() { return make_box_mesh({0, -5, 0}, {12, 5, 6}, {8, 4, 6}, {1.0, 1.3, 1.0}, {true, false, true}); }
-
-// The meshes partitioned: the box (block partition) and its tetrahedra (METIS, the path
-// of Gmsh vessels), when the build has METIS.
-std::vector<FluidMesh> partitioned_meshes() {
-  std::vector<FluidMesh> meshes{shear_box()};
-  if (has_graph_partitioner()) meshes.push_back(split_into_tetrahedra(meshes[0]));
-  return meshes;
-}
-const char* partition_name(const FluidMesh& mesh) {
-  return mesh.element_type == FluidElementType::hexahedron8 ? "box of hexahedra (blocks)" : "tetrahedra (METIS)";
 }
 
 std::vector<ElementPartition> all_partitions(const FluidMesh& mesh, int ranks) {

@@ -29,11 +29,11 @@ void identity_block_rows(const Kokkos::View<int*>& dofs, const Vector& blocks) {
 }
 }  // namespace
 
-void require_rank_local_operator(const FluidOperator& local, const char* who) {
-  if (local.coefficients().viscous_reconstruction)
+void require_node_sums(const FluidOperator& local, const char* who) {
+  if (!local.has_node_sums())
     throw std::invalid_argument(std::string("rouleau::") + who +
-                                ": the viscous reconstruction is not distributed yet (its projected gradient at a "
-                                "shared node needs the other ranks' elements)");
+                                ": the rank's operator does not complete its element sums across ranks "
+                                "(FluidOperator::set_node_sums with a NodeSums)");
 }
 
 std::vector<int> owned_local_unknowns(const ElementPartition& partition, const std::vector<int>& global_unknowns) {
@@ -55,7 +55,9 @@ DistributedStokesOperator::DistributedStokesOperator(const FluidOperator& local,
       owned_(4 * partition.num_owned_nodes),
       dirichlet_(device_copy(dirichlet, "rouleau::DistributedStokesOperator::dirichlet")),
       local_x_("rouleau::DistributedStokesOperator::local_x", 4 * partition.num_local_nodes()),
-      local_y_("rouleau::DistributedStokesOperator::local_y", 4 * partition.num_local_nodes()) {}
+      local_y_("rouleau::DistributedStokesOperator::local_y", 4 * partition.num_local_nodes()) {
+  require_node_sums(local, "DistributedStokesOperator");
+}
 
 void DistributedStokesOperator::owned_part(const Kokkos::View<const double*>& local,
                                            const Kokkos::View<double*>& owned) const {
@@ -63,12 +65,10 @@ void DistributedStokesOperator::owned_part(const Kokkos::View<const double*>& lo
 }
 
 void DistributedStokesOperator::apply(const Kokkos::View<const double*>& x, const Kokkos::View<double*>& y) const {
-  require_rank_local_operator(local_, "DistributedStokesOperator");
-  // y = Σ_ranks Σ_e K_e x, then y_d = x_d
+  // y = Σ_ranks Σ_e K_e x (the operator's node sums), then y_d = x_d
   Kokkos::deep_copy(Kokkos::subview(local_x_, Kokkos::make_pair(0, owned_)), x);
   halo_.update_copies(local_x_);
   local_.linear_action(local_x_, local_y_);
-  halo_.add_copies_to_owners(local_y_);  // only the owned entries are read
   owned_part(local_y_, y);
   identity_rows(dirichlet_, x, y);
 }
@@ -77,15 +77,13 @@ DistributedBlockJacobi::DistributedBlockJacobi(const Communicator& communicator,
                                                const std::vector<int>& dirichlet)
     : communicator_(communicator),
       owned_nodes_(partition.num_owned_nodes),
-      block_halo_(communicator, partition, 16),
       dirichlet_(device_copy(dirichlet, "rouleau::DistributedBlockJacobi::dirichlet")),
       local_blocks_("rouleau::DistributedBlockJacobi::local_blocks", 16 * partition.num_local_nodes()),
       jacobi_(partition.num_owned_nodes) {}
 
 long long DistributedBlockJacobi::factor(const FluidOperator& local, const Kokkos::View<const double*>& state) {
-  require_rank_local_operator(local, "DistributedBlockJacobi");
-  local.diagonal_blocks(state, local_blocks_);
-  block_halo_.add_copies_to_owners(local_blocks_);
+  require_node_sums(local, "DistributedBlockJacobi");
+  local.diagonal_blocks(state, local_blocks_);  // completed across ranks
   identity_block_rows(dirichlet_, local_blocks_);
   const long long singular =
       jacobi_.factor(Kokkos::subview(local_blocks_, Kokkos::make_pair(0, 16 * owned_nodes_)));

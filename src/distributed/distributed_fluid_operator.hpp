@@ -3,16 +3,13 @@
 // all ranks (issue 10), for the distributed GMRES (solver/gmres.hpp with a Communicator).
 //
 // A vector here is a rank's owned entries (4 per owned dof node, the prefix of its local
-// vectors). The action: copy into a local vector, fill the copies (update_copies), sum the
-// rank's elements (FluidOperator::linear_action on the rank's mesh, which carries no
-// Dirichlet rows), add the shared nodes' partial sums at their owners (one exchange each
-// way per action: the copies of y are not read), and set the Dirichlet rows to the
-// identity, y_d = x_d — as the single-rank operator does.
-//
-// Not yet across ranks: the viscous reconstruction (FluidCoefficients::viscous_reconstruction,
-// on in the fluid solver), whose projected gradient and lumped mass at a shared node need
-// the other ranks' elements too. The operators and preconditioners here refuse a local
-// operator with it on (std::invalid_argument) rather than give a wrong answer.
+// vectors). The rank's operator must complete its element sums across ranks
+// (FluidOperator::set_node_sums with a NodeSums): then its outputs hold the whole mesh's
+// values at every local node, the viscous reconstruction's projected gradient included.
+// The action: copy into a local vector, fill the copies (update_copies), apply the rank's
+// operator (FluidOperator::linear_action on the rank's mesh, which carries no Dirichlet
+// rows), keep the owned entries, and set the Dirichlet rows to the identity, y_d = x_d —
+// as the single-rank operator does.
 #include <Kokkos_Core.hpp>
 #include <vector>
 
@@ -24,9 +21,9 @@
 
 namespace rouleau {
 
-// Throws std::invalid_argument when `local` needs what the rank alone cannot compute (the
-// viscous reconstruction's projected gradient); `who` names the caller.
-void require_rank_local_operator(const FluidOperator& local, const char* who);
+// Throws std::invalid_argument when `local` does not complete its element sums across
+// ranks (FluidOperator::set_node_sums); `who` names the caller.
+void require_node_sums(const FluidOperator& local, const char* who);
 
 // The local unknown indices of the global unknowns (4·dof node + component) that this
 // rank owns, in the order given (the others are left out).
@@ -51,13 +48,14 @@ class DistributedStokesOperator final : public LinearOperator {
   Vector local_x_, local_y_;
 };
 
-// Point-block Jacobi across ranks: each owned node's 4×4 diagonal block of the Jacobian,
-// the rank's element sums added at the owner (a NodeHalo of 16 components), Dirichlet
-// rows the identity's, inverted node by node.
+// Point-block Jacobi across ranks: each owned node's 4×4 diagonal block of the Jacobian
+// (completed across ranks by the operator's node sums), Dirichlet rows the identity's,
+// inverted node by node.
 class DistributedBlockJacobi final : public Preconditioner {
  public:
   DistributedBlockJacobi(const Communicator& communicator, const ElementPartition& partition,
                          const std::vector<int>& dirichlet);
+  // `local` must complete its element sums across ranks (set_node_sums).
   // The blocks of `local` at the rank's local `state`; returns the singular blocks over all ranks.
   long long factor(const FluidOperator& local, const Kokkos::View<const double*>& state);
   void apply(const Kokkos::View<const double*>& r, const Kokkos::View<double*>& z) const override;
@@ -65,7 +63,6 @@ class DistributedBlockJacobi final : public Preconditioner {
  private:
   Communicator communicator_;
   int owned_nodes_;
-  NodeHalo block_halo_;
   Kokkos::View<int*> dirichlet_;
   Vector local_blocks_;
   BlockJacobi jacobi_;

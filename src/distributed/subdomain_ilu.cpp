@@ -100,7 +100,7 @@ SubdomainIlu::SubdomainIlu(const Communicator& communicator, const ElementPartit
 SubdomainIlu::~SubdomainIlu() = default;
 
 void SubdomainIlu::factor(const FluidOperator& local, const Kokkos::View<const double*>& state) {
-  require_rank_local_operator(local, "SubdomainIlu");
+  require_node_sums(local, "SubdomainIlu");  // for the projected gradient of the viscous reconstruction
   local.assemble_jacobian(state, local_graph_, local_values_);
   // the owned nodes' diagonal blocks, with the other ranks' elements added at the owner
   copy_diagonal_blocks(BlockCopy::matrix_to_blocks, diagonal_block_, local_graph_.row_map, local_values_,

@@ -29,7 +29,7 @@ class SubdomainIlu final : public Preconditioner {
                const std::vector<int>& dirichlet);
   ~SubdomainIlu() override;
   // The numeric factorization of the Jacobian of `local` (the rank's operator, without
-  // Dirichlet rows) at the rank's local `state`.
+  // Dirichlet rows, completing its element sums across ranks) at the rank's local `state`.
   void factor(const FluidOperator& local, const Kokkos::View<const double*>& state);
   // z = M⁻¹ r on the rank's owned entries.
   void apply(const Kokkos::View<const double*>& r, const Kokkos::View<double*>& z) const override;

@@ -3,6 +3,7 @@
 #include <Kokkos_ScatterView.hpp>
 #include <cstdint>
 #include <sstream>
+#include <utility>
 #include <stdexcept>
 
 #include "kernels/fluid_assembly.hpp"
@@ -146,6 +147,7 @@ void BasicFluidOperator<ExecSpace>::residual(const ConstVector& state, const Con
     }
     gather_into(result, scatter);
   });
+  complete_node_sums(result);
   subtract_nodal_load<ExecSpace>(nodal_load_, result);
   subtract_nodal_load<ExecSpace>(immersed_load_, result);
   if (constrained_rows) apply_dirichlet_rows<ExecSpace>(dirichlet_dofs_, dirichlet_values_, state, state, true, result);
@@ -336,6 +338,18 @@ void BasicFluidOperator<ExecSpace>::for_each_element(const char* label, const Fu
                                                      const Vector& target) const {
   Kokkos::parallel_for(label, Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
   gather_into(target, scatter);
+  complete_node_sums(target);
+}
+
+template <class ExecSpace>
+void BasicFluidOperator<ExecSpace>::complete_node_sums(const Vector& target) const {
+  if (node_sums_) node_sums_(target, static_cast<int>(target.extent(0)) / mesh_.num_dof_nodes);
+}
+
+template <class ExecSpace>
+void BasicFluidOperator<ExecSpace>::set_node_sums(NodeSums sums) {
+  node_sums_ = std::move(sums);
+  complete_node_sums(lumped_mass_);  // the lumped mass summed in the constructor, rank-local so far
 }
 
 // A persistent scatter buffer of `size` entries, zeroed: allocated on first use (or when

@@ -2,9 +2,9 @@
 // `mpiexec -n P`, it times on the shear box (periodic in x and z, moving walls in y,
 // Stokes limit, the element path on every rank) the pieces of a GMRES iteration across
 // ranks and writes one CSV row (rank 0):
-//   action_s      one distributed Stokes action: update_copies, the rank's elements,
-//                 add_copies_to_owners, Dirichlet rows (median of --repeats)
-//   exchange_s    update_copies + add_copies_to_owners alone (the halo's share of an action)
+//   action_s      one distributed Stokes action: update_copies, the rank's elements with
+//                 their node sums (sum_into_owners), Dirichlet rows (median of --repeats)
+//   exchange_s    update_copies + sum_into_owners alone (the halo's share of an action)
 //   allreduce_s   one MPI_Allreduce of 61 doubles (a CGS2 pass over a GMRES(60) basis)
 //   iteration_s   a GMRES(30) iteration with point-block Jacobi: 30 iterations, timed
 //   halo_values   values one rank sends per update_copies (largest over ranks)
@@ -25,6 +25,7 @@
 #include "distributed/distributed_fluid_operator.hpp"
 #include "distributed/local_mesh.hpp"
 #include "distributed/node_halo.hpp"
+#include "distributed/node_sums.hpp"
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/fluid_operator.hpp"
 #include "parallel/communicator.hpp"
@@ -80,6 +81,8 @@ int run(int argc, char** argv) {
   const ElementPartition partition = partition_fluid_mesh(mesh, world.rank(), world.size());
   FluidOperator local(make_local_mesh(mesh, partition), 1.0);
   local.set_coefficients(c);
+  const NodeSums sums(world, partition);
+  local.set_node_sums([&sums](const Vector& values, int components) { sums(values, components); });
   const NodeHalo halo(world, partition, 4);
   const std::vector<int> dirichlet = owned_local_unknowns(partition, bc.dirichlet_dofs);
   const DistributedStokesOperator A(local, halo, partition, dirichlet);
@@ -93,7 +96,7 @@ int run(int argc, char** argv) {
   const double action = median_time(world, repeats, [&] { A.apply(x, y); });
   const double exchange = median_time(world, repeats, [&] {
     halo.update_copies(local_vector);
-    halo.add_copies_to_owners(local_vector);
+    halo.sum_into_owners(local_vector);
   });
   std::vector<double> coefficients(61, 1.0);
   const double allreduce = median_time(world, repeats, [&] { world.sum(coefficients.data(), 61); });

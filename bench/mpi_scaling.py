@@ -8,15 +8,15 @@ point-block Jacobi GMRES; every figure is the median over repeats of the slowest
            2 ranks x 1 thread (MPI)
   weak     --weak elements per rank: 1 rank, then 2 ranks on the box doubled in x
 Columns: the distributed Stokes action, its halo exchange alone (update_copies +
-add_copies_to_owners), one MPI_Allreduce of 61 doubles, and a GMRES(30) iteration.
+sum_into_owners), one MPI_Allreduce of 61 doubles, and a GMRES(30) iteration.
 
 Model (per GMRES iteration, P ranks, a cube of elements split into P cubic blocks of
 s^3 elements, s = (E/P)^(1/3)):
   compute    t_e E/P, t_e the measured time per element of one iteration on 1 rank x 1
              thread (operator, preconditioner and vector work together);
-  halo       2 exchanges per action (copies, then owners) to 26 neighbours (6 faces of
-             (s+1)^2 nodes, 12 edges of s+1, 8 corners), 4 values of 8 bytes per node:
-             2 [26 alpha + 32 ((6 (s+1)^2 + 12 (s+1) + 8)) / beta];
+  halo       3 exchanges per action (copies; then the sums to the owners and back) to 26
+             neighbours (6 faces of (s+1)^2 nodes, 12 edges of s+1, 8 corners), 4 values of
+             8 bytes per node: 3 [26 alpha + 32 ((6 (s+1)^2 + 12 (s+1) + 8)) / beta];
   reductions 3 MPI_Allreduce per iteration (CGS2; the norm comes with the last):
              3 x 2 log2(P) alpha.
 Network: a typical InfiniBand HDR100 fabric, alpha = 1.5 us latency, beta = 12 GB/s per
@@ -60,7 +60,7 @@ def model(elements, ranks, seconds_per_element):
     if ranks == 1:
         return compute, 0.0, 0.0
     nodes = 6 * (side + 1) ** 2 + 12 * (side + 1) + 8
-    halo = 2 * (26 * LATENCY_S + BYTES_PER_NODE * nodes / BANDWIDTH_B_S)
+    halo = 3 * (26 * LATENCY_S + BYTES_PER_NODE * nodes / BANDWIDTH_B_S)
     reductions = 3 * 2 * math.log2(ranks) * LATENCY_S
     return compute, halo, reductions
 

@@ -15,14 +15,6 @@ std::size_t block_entry(const std::vector<int>& offsets, int node, int k, int i,
   return 16 * static_cast<std::size_t>(offsets[node]) + 4 * static_cast<std::size_t>(degree) * i + 4 * k + j;
 }
 
-Kokkos::View<std::size_t*> device_positions(const std::vector<std::size_t>& values, const std::string& label) {
-  Kokkos::View<std::size_t*> view(label, values.size());
-  auto host = Kokkos::create_mirror_view(view);
-  for (std::size_t i = 0; i < values.size(); ++i) host(i) = values[i];
-  Kokkos::deep_copy(view, host);
-  return view;
-}
-
 // Between a matrix's node diagonal blocks (where(n): the block's first entry, rows of
 // row_map's length) and a node-major array of 4×4 blocks: blocks ← matrix, or back.
 enum class BlockCopy { matrix_to_blocks, blocks_to_matrix };
@@ -79,18 +71,18 @@ SubdomainIlu::SubdomainIlu(const Communicator& communicator, const ElementPartit
       for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j)
           source[block_entry(owned_offsets, a, kk, i, j)] = block_entry(local_offsets, a, kept[a][kk], i, j);
-  owned_entry_source_ = device_positions(source, "rouleau::SubdomainIlu::owned_entry_source");
+  owned_entry_source_ = device_copy(source, "rouleau::SubdomainIlu::owned_entry_source");
   // Each local node's own block in the local graph.
   std::vector<std::size_t> diagonal(partition.num_local_nodes());
   for (int a = 0; a < partition.num_local_nodes(); ++a)
     for (int k = 0; k < local_offsets[a + 1] - local_offsets[a]; ++k)
       if (neighbors_view(local_offsets[a] + k) == a) diagonal[a] = block_entry(local_offsets, a, k, 0, 0);
-  diagonal_block_ = device_positions(diagonal, "rouleau::SubdomainIlu::diagonal_block");
+  diagonal_block_ = device_copy(diagonal, "rouleau::SubdomainIlu::diagonal_block");
   std::vector<std::size_t> owned_diagonal(owned_nodes_);
   for (int a = 0; a < owned_nodes_; ++a)
     for (int k = 0; k < owned_offsets[a + 1] - owned_offsets[a]; ++k)
       if (owned_neighbors[owned_offsets[a] + k] == a) owned_diagonal[a] = block_entry(owned_offsets, a, k, 0, 0);
-  owned_diagonal_block_ = device_positions(owned_diagonal, "rouleau::SubdomainIlu::owned_diagonal_block");
+  owned_diagonal_block_ = device_copy(owned_diagonal, "rouleau::SubdomainIlu::owned_diagonal_block");
   local_values_ = Vector("rouleau::SubdomainIlu::local_values", local_graph_.entries.extent(0));
   owned_values_ = Vector("rouleau::SubdomainIlu::owned_values", owned_graph_.entries.extent(0));
   local_blocks_ = Vector("rouleau::SubdomainIlu::local_blocks", 16 * partition.num_local_nodes());

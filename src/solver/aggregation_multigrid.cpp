@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "run/profiling_region.hpp"
+#include "util/view_transfer.hpp"
 #include "solver/ilu0_preconditioner.hpp"
 #include "host_algebra/sparse_direct_solver.hpp"
 
@@ -15,14 +16,6 @@ namespace {
 using IntView = Kokkos::View<int*>;
 using DoubleView = Kokkos::View<double*>;
 using ConstView = Kokkos::View<const double*>;
-
-IntView device_copy(const std::vector<int>& host, const std::string& label) {
-  IntView view("rouleau::AggregationMultigrid::" + label, host.size());
-  auto mirror = Kokkos::create_mirror_view(view);
-  for (std::size_t i = 0; i < host.size(); ++i) mirror(i) = host[i];
-  Kokkos::deep_copy(view, mirror);
-  return view;
-}
 
 // Position of entry (i, j) of the block at neighbour index n of row node A
 // (FluidMatrixGraph's layout).
@@ -82,7 +75,7 @@ AggregationMultigrid::AggregationMultigrid(const FluidMatrixGraph& fine_graph, c
     auto level = std::make_unique<Level>();
     const int nodes = static_cast<int>(offsets.size()) - 1;
     level->graph = graph;
-    level->block_row = device_copy(block_rows(offsets), "block_row");
+    level->block_row = device_copy(block_rows(offsets), "rouleau::AggregationMultigrid::block_row");
     const std::size_t rows = 4 * static_cast<std::size_t>(nodes);
     level->residual = DoubleView("rouleau::AggregationMultigrid::residual", rows);
     if (!levels_.empty()) {  // the finest level uses the fine values and apply()'s r and z
@@ -126,11 +119,11 @@ AggregationMultigrid::AggregationMultigrid(const FluidMatrixGraph& fine_graph, c
       std::vector<int> next(member_offsets.begin(), member_offsets.end() - 1);
       for (int a = 0; a < nodes; ++a) members[next[aggregate_of[a]]++] = a;
 
-      level->aggregate_of = device_copy(aggregate_of, "aggregate_of");
-      level->member_offsets = device_copy(member_offsets, "member_offsets");
-      level->members = device_copy(members, "members");
-      level->contribution_offsets = device_copy(count, "contribution_offsets");
-      level->contributions = device_copy(contributions, "contributions");
+      level->aggregate_of = device_copy(aggregate_of, "rouleau::AggregationMultigrid::aggregate_of");
+      level->member_offsets = device_copy(member_offsets, "rouleau::AggregationMultigrid::member_offsets");
+      level->members = device_copy(members, "rouleau::AggregationMultigrid::members");
+      level->contribution_offsets = device_copy(count, "rouleau::AggregationMultigrid::contribution_offsets");
+      level->contributions = device_copy(contributions, "rouleau::AggregationMultigrid::contributions");
       level->smoother = std::make_unique<Ilu0Preconditioner>(graph.row_map, graph.entries);
       levels_.push_back(std::move(level));
 

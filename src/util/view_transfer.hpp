@@ -46,8 +46,9 @@ void from_flat_vector(const std::vector<T>& values, const View& view, const std:
 }
 
 // A device copy of a host list (index lists, e.g. the nodes an exchange sends).
-inline Kokkos::View<int*> device_copy(const std::vector<int>& values, const std::string& label) {
-  Kokkos::View<int*> view(label, values.size());
+template <class T>
+Kokkos::View<T*> device_copy(const std::vector<T>& values, const std::string& label) {
+  Kokkos::View<T*> view(label, values.size());
   auto host = Kokkos::create_mirror_view(view);
   for (std::size_t i = 0; i < values.size(); ++i) host(i) = values[i];
   Kokkos::deep_copy(view, host);

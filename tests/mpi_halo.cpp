@@ -1,7 +1,8 @@
 // The distributed fluid operator on 2 (or more) MPI ranks (issue 10): the shared nodes'
 // exchange (NodeHalo) and the rank-local operators give the single-rank answer to
 // round-off. Every rank also builds the whole mesh and its operator, the reference.
-// Also the gather of whole vectors on one rank for output and checkpoints (RootGather).
+// Also the gather of whole vectors on one rank for output and checkpoints (RootGather), and
+// the replication of whole vectors on every rank for the cells (FluidDistribution).
 // Run by ctest as `mpiexec -n 2 mpi_halo` (oversubscribed where the machine has fewer cores).
 #include <gtest/gtest.h>
 
@@ -12,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "distributed/fluid_distribution.hpp"
 #include "distributed/local_mesh.hpp"
 #include "distributed/node_halo.hpp"
 #include "distributed/node_sums.hpp"
@@ -19,6 +21,7 @@
 #include "fluid/fluid_operator.hpp"
 #include "parallel/communicator.hpp"
 #include "partitioned_meshes.hpp"
+#include "util/view_transfer.hpp"
 
 namespace rouleau {
 namespace {
@@ -230,6 +233,47 @@ TEST(RootGather, OneGlobalVectorForAnyRankCountAndBack) {
   root.scatter(gathered, back);
   d.halo.update_copies(back);
   EXPECT_EQ(d.largest_difference(back, global), 0.0);
+}
+
+TEST(FluidDistribution, ReplicatedGlobalVectorsAreTheSameOnEveryRankAndLocalizeBack) {
+  // The whole vector from every rank's owned entries (copies left at −1e300: they must
+  // not count), the same bit for bit as the global one on every rank; its nodes alone
+  // (the cells' supports) leave every other entry as it was; localize() gives each rank
+  // its part, copies included.
+  for (const FluidMesh& mesh : partitioned_meshes()) {
+    SCOPED_TRACE(partition_name(mesh));
+    Distributed d(mesh);
+    const FluidDistribution distribution(d.world, d.mesh);
+    ASSERT_EQ(distribution.partition().global_node, d.partition.global_node);
+    const HostVector global = random_vector(d.mesh.num_unknowns(), 23);
+    const Vector local = d.local_part(global, false);
+    Vector replicated("replicated", d.mesh.num_unknowns());
+    distribution.replicate(local, replicated);
+    auto all = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), replicated);
+    int differing = 0;
+    for (int i = 0; i < d.mesh.num_unknowns(); ++i) differing += all(i) != global(i);
+    EXPECT_EQ(static_cast<int>(d.world.sum(static_cast<double>(differing))), 0);
+
+    std::vector<int> some_nodes;
+    for (int n = 1; n < d.mesh.num_dof_nodes; n += 3) some_nodes.push_back(n);
+    Vector partial("partial", d.mesh.num_unknowns());
+    Kokkos::deep_copy(partial, 7.0);
+    distribution.replicate(local, partial, device_copy(some_nodes, "some_nodes"));
+    auto part = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), partial);
+    int wrong = 0;
+    for (int n = 0; n < d.mesh.num_dof_nodes; ++n)
+      for (int c = 0; c < 4; ++c)
+        wrong += part(4 * n + c) != (n % 3 == 1 ? global(4 * n + c) : 7.0);
+    EXPECT_EQ(static_cast<int>(d.world.sum(static_cast<double>(wrong))), 0);
+
+    Vector back("back", 4 * d.partition.num_local_nodes());
+    distribution.localize(replicated, back);
+    EXPECT_EQ(d.largest_difference(back, global), 0.0);
+    const double owned_norm = distribution.norm(back);
+    double expected = 0.0;
+    for (int i = 0; i < d.mesh.num_unknowns(); ++i) expected += global(i) * global(i);
+    EXPECT_NEAR(owned_norm, std::sqrt(expected), 1e-12 * std::sqrt(expected));
+  }
 }
 
 }  // namespace

@@ -28,12 +28,13 @@ std::string file_contents(const std::string& path) {
   return contents.str();
 }
 
-// Runs `rouleau ARGUMENTS` with stdout and stderr captured separately.
-Outcome run_rouleau(const std::string& arguments) {
+// Runs `rouleau ARGUMENTS` with stdout and stderr captured separately; with a `launcher`
+// (an mpiexec command line), `LAUNCHER rouleau ARGUMENTS`.
+Outcome run_rouleau(const std::string& arguments, const std::string& launcher = "") {
   const auto folder = rouleau::testing::temporary_folder("run");
   const std::string out_path = (folder / "stdout").string(), err_path = (folder / "stderr").string();
-  const std::string command =
-      std::string(ROULEAU_EXECUTABLE) + " " + arguments + " >'" + out_path + "' 2>'" + err_path + "'";
+  const std::string command = (launcher.empty() ? std::string() : launcher + " ") + std::string(ROULEAU_EXECUTABLE) +
+                              " " + arguments + " >'" + out_path + "' 2>'" + err_path + "'";
   const int status = std::system(command.c_str());
   Outcome outcome;
   outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

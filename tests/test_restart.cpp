@@ -22,43 +22,10 @@
 
 #include "io/checkpoint_file.hpp"
 #include "io/diagnostics_reader.hpp"
+#include "reduced_aggregation.hpp"
 #include "run_rouleau.hpp"
 
 namespace {
-
-const std::string cases_dir = std::string(ROULEAU_SOURCE_DIR) + "/cases";
-
-// The reduced two-cell aggregation (semi-implicit, Morse on at five times the case's depth,
-// coarse cells on a 12x12x10 box), 8.5e-5 s steps, one diagnostics row per step.
-constexpr double aggregation_step_s = 8.5e-5;
-std::string end_after(int steps) {
-  char text[64];
-  std::snprintf(text, sizeof text, " --set time.end_s=%.17g", steps * aggregation_step_s);
-  return text;
-}
-std::vector<std::string> reduced_aggregation_arguments(const std::string& out, int threads, int steps) {
-  std::vector<std::string> arguments{"run", cases_dir + "/aggregation/case.toml", "--out", out, "--threads",
-                                     std::to_string(threads), "--no-progress"};
-  for (const char* setting : {"domain.elements=[12,12,10]", "cell_kinds.normal.resolution=coarse",
-                              "coupling.scheme=semi_implicit", "time.dt_s=8.5e-5", "output.diagnostics_every_steps=1",
-                              "interaction.strength_multiplier=25"}) {
-    arguments.push_back("--set");
-    arguments.push_back(setting);
-  }
-  arguments.push_back("--set");
-  arguments.push_back(end_after(steps).substr(7));
-  return arguments;
-}
-std::string reduced_aggregation(const std::string& out, int threads, int steps) {
-  std::string command;
-  for (const std::string& argument : reduced_aggregation_arguments(out, threads, steps)) command += argument + " ";
-  return command;
-}
-
-// Wall times (per stage and in all) differ between any two runs; every other number must not.
-bool is_wall_time(const std::string& name) {
-  return name == "run/stage_seconds" || name == "wall_time_s" || (name.find("time_") == 0 && name != "time_s");
-}
 
 // The checkpoints of step `step` of two runs hold the same state to the bit (wall times
 // apart), and their diagnostics have one row per step, identical but for wall times.
@@ -279,25 +246,7 @@ TEST(Restart, RestartOnAnotherThreadCountAgreesToRoundOff) {
   ASSERT_EQ(run_rouleau(reduced_aggregation(split, 1, 4)).exit_code, 0);
   const Outcome second = run_rouleau("run --restart " + split + " --threads 2 --no-progress" + end_after(8));
   ASSERT_EQ(second.exit_code, 0) << second.err;
-  const auto a = rouleau::read_checkpoint_file(rouleau::CheckpointStore(straight, 1).path_of(8));
-  const auto b = rouleau::read_checkpoint_file(rouleau::CheckpointStore(split, 1).path_of(8));
-  EXPECT_EQ(a.time, b.time);
-  bool any_difference = false;
-  for (const auto& [name, values] : a.reals) {
-    if (is_wall_time(name)) continue;
-    const std::vector<double>& other = b.reals.at(name);
-    ASSERT_EQ(values.size(), other.size()) << name;
-    // max |a − b| / max |a|
-    double largest = 0.0, difference = 0.0;
-    for (std::size_t i = 0; i < values.size(); ++i) {
-      largest = std::max(largest, std::fabs(values[i]));
-      difference = std::max(difference, std::fabs(values[i] - other[i]));
-    }
-    const double relative = largest > 0.0 ? difference / largest : difference;
-    std::printf("%-32s largest relative difference %.3e\n", name.c_str(), relative);
-    EXPECT_LT(relative, 1e-7) << name;
-    any_difference = any_difference || difference > 0.0;
-  }
+  const bool any_difference = expect_states_agree(straight, split, 8, 1e-7);
   std::printf("the states %s\n", any_difference ? "differ (as sums grouped differently must)" : "are identical");
 }
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <iostream>
 #include <random>
+#include <set>
 
 #include "coupling/rkpm_coupler.hpp"
 #include "mesh/fluid_mesh.hpp"
@@ -172,6 +173,29 @@ TEST(Rkpm, PartitionOfUnityAndAdjointness) {
   EXPECT_LT(worst_sum, 1e-13);
   EXPECT_LT(std::fabs(left - right), 1e-13 * magnitude);
   EXPECT_LT(total_difference, 1e-12);
+}
+
+TEST(Rkpm, SupportNodesAreEveryNodeOfTheRowsOnce) {
+  // Serial reference: the set of the CSR rows' nodes, ascending. Points gathered in one
+  // corner, so that most nodes are in no support.
+  const FluidMesh mesh = make_box_mesh({0, 0, 0}, {20, 10, 10}, {8, 6, 6}, {1, 2, 1}, {true, false, true});
+  RkpmCoupler coupler(mesh);
+  RkpmCoupler::PointVectors points("points", 50);
+  auto hp = Kokkos::create_mirror_view(points);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0.5, 4.0);
+  for (int p = 0; p < 50; ++p)
+    for (int c = 0; c < 3; ++c) hp(p, c) = u(rng);
+  Kokkos::deep_copy(points, hp);
+  coupler.update(points);
+  const auto offsets = host_copy(coupler.offsets());
+  const auto nodes = host_copy(coupler.nodes());
+  std::set<int> expected;
+  for (int k = 0; k < offsets(50); ++k) expected.insert(nodes(k));
+  const auto support = host_copy(coupler.support_nodes());
+  std::vector<int> found(support.data(), support.data() + support.extent(0));
+  EXPECT_EQ(found, std::vector<int>(expected.begin(), expected.end()));
+  EXPECT_LT(found.size(), static_cast<std::size_t>(mesh.num_dof_nodes) / 2) << "the points fill the box";
 }
 
 TEST(Rkpm, ReproducesLinearFieldsNextToTheCurvedWallOfAVessel) {

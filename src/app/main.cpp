@@ -7,6 +7,7 @@
 #include "cli/host_info.hpp"
 #include "config/derived.hpp"
 #include "config/load_case.hpp"
+#include "parallel/mpi_session.hpp"
 #include "run/kokkos_session.hpp"
 #include "run/run_case.hpp"
 #include "util/errors.hpp"
@@ -18,6 +19,8 @@ int run_command(const rouleau::CommandLine& command_line) {
   rouleau::RunOptions options = rouleau::run_options(command_line);
   const rouleau::CaseConfig config = rouleau::load_run_case(command_line, options.restart, std::cerr);
   rouleau::derive_quantities(config);
+  // MPI before Kokkos: under `mpirun -np N` the fluid is split across N ranks.
+  rouleau::MpiSession mpi;
   rouleau::KokkosSession kokkos("rouleau", command_line.threads);
   return rouleau::run_case(config, options);
 }

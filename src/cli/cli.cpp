@@ -9,6 +9,7 @@
 
 #include "config/derived.hpp"
 #include "config/load_case.hpp"
+#include "parallel/mpi_session.hpp"
 #include "rouleau_version.hpp"
 #include "util/errors.hpp"
 
@@ -183,17 +184,22 @@ std::string format_info_lines(const std::vector<std::pair<std::string, std::stri
 }
 
 int run_reporting_errors(const std::function<int()>& command, std::ostream& err) {
+  // On several ranks an error may have reached only some of them, and the others would
+  // wait for them forever: the first to report one stops all with its exit code.
+  auto report = [&err](ExitCode code, const std::string& line) {
+    let_the_first_rank_report();
+    err << "rouleau: " << line << std::endl;
+    stop_all_ranks(static_cast<int>(code));
+    return static_cast<int>(code);
+  };
   try {
     return command();
   } catch (const InputError& error) {
-    err << "rouleau: " << single_line(error.what()) << std::endl;
-    return static_cast<int>(ExitCode::bad_input);
+    return report(ExitCode::bad_input, single_line(error.what()));
   } catch (const DivergenceError& error) {
-    err << "rouleau: " << error.what() << std::endl;
-    return static_cast<int>(ExitCode::diverged);
+    return report(ExitCode::diverged, error.what());
   } catch (const std::exception& error) {
-    err << "rouleau: internal error: " << single_line(error.what()) << std::endl;
-    return static_cast<int>(ExitCode::internal_error);
+    return report(ExitCode::internal_error, "internal error: " + single_line(error.what()));
   }
 }
 

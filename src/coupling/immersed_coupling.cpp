@@ -62,18 +62,21 @@ ImmersedCoupling::ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, c
     : fluid_(fluid),
       population_(*cells.population),
       interaction_(cells.interaction.get()),
-      rkpm_(fluid.fluid_operator().mesh(), config.coupling.support_elements),
+      rkpm_(fluid.mesh(), config.coupling.support_elements),
       skip_unneeded_(config.scene.skip_unneeded_stages),
       gravity_(config.coupling.gravity) {
   const int nodes = population_.num_nodes();
   fsi_forces_ = NodeVectors("rouleau::ImmersedCoupling::fsi_forces", nodes);
   interpolated_ = NodeVectors("rouleau::ImmersedCoupling::interpolated", nodes);
   previous_velocities_ = NodeVectors("rouleau::ImmersedCoupling::previous_velocities", nodes);
-  fluid_load_ = Kokkos::View<double*>("rouleau::ImmersedCoupling::fluid_load", fluid.fluid_operator().num_unknowns());
+  fluid_load_ = Kokkos::View<double*>("rouleau::ImmersedCoupling::fluid_load", fluid.num_global_unknowns());
+  cell_carrier_ = Kokkos::View<double*>("rouleau::ImmersedCoupling::cell_carrier", fluid.num_global_unknowns());
   fluid_.set_immersed_forces_in_stabilization(config.coupling.forces_in_stabilization);
-  if (config.coupling.subscale_velocity)
+  if (config.coupling.subscale_velocity) {
     total_velocity_ =
         Kokkos::View<double*>("rouleau::ImmersedCoupling::total_velocity", fluid.fluid_operator().num_unknowns());
+    global_state_ = Kokkos::View<double*>("rouleau::ImmersedCoupling::global_state", fluid.num_global_unknowns());
+  }
   if (interaction_) interaction_forces_ = NodeVectors("rouleau::ImmersedCoupling::interaction_forces", nodes);
   if (config.vessel.enabled && config.vessel.wall_repulsion_pressure > 0.0) {
     wall_ = std::make_unique<WallRepulsion>(config.vessel.profile, config.vessel.wall_repulsion_pressure,
@@ -160,6 +163,8 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
     Kokkos::deep_copy(fluid_load_, 0.0);
     rkpm_.spread(fsi_forces_, fluid_load_, fluid_unknowns_per_node);
     fluid_.set_immersed_forces(fluid_load_);
+    // Across ranks the cells read the fluid at their supports alone.
+    if (fluid_.distribution()) fluid_.set_replicated_nodes(rkpm_.support_nodes());
   });
   report.corrected_points = rkpm_.corrected_points();
   // 3. the fluid
@@ -171,12 +176,19 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
   report.fluid = times.time(fluid_stage, [&] { return fluid_.advance(dt, scheme); });
   if (stiffness_) fluid_.set_immersed_stiffness(nullptr);
   if (!report.fluid.converged) return report;
-  // The velocity the cells move with: u_h, or u_h + u' (coupling.subscale_velocity).
-  Kokkos::View<const double*> cell_carrier = fluid_.state();
-  if (total_velocity_.extent(0) > 0) {
-    times.time(interpolate_stage, [&] { fluid_.total_velocity(total_velocity_); });
-    cell_carrier = total_velocity_;
-  }
+  // The velocity the cells move with: u_h, or u_h + u' (coupling.subscale_velocity), in
+  // the global numbering.
+  const Kokkos::View<const double*> cell_carrier = cell_carrier_;
+  const Kokkos::View<double*> global_state = total_velocity_.extent(0) > 0 ? global_state_ : cell_carrier_;
+  times.time(interpolate_stage, [&] {
+    if (total_velocity_.extent(0) > 0) {
+      fluid_.total_velocity(total_velocity_);
+      fluid_.gather_global(total_velocity_, cell_carrier_);
+      fluid_.gather_global(fluid_.state(), global_state_);
+    } else {
+      fluid_.gather_global(fluid_.state(), cell_carrier_);
+    }
+  });
   // The semi-implicit step's forces f^n + K Δt I u^{n+1}, spread as the fluid felt them.
   if (stiffness_)
     times.time(stiffness_stage, [&] {
@@ -203,7 +215,7 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
   report.largest_cell_speed = std::sqrt(largest_speed2);
   // The power of the step's forces, on the fluid's side and on the cells' (they agree:
   // interpolation and spreading are transposes of each other).
-  report.power_spread = dot(fluid_load_, fluid_.state()) * fluid_.scales().velocity;
+  report.power_spread = dot(fluid_load_, global_state) * fluid_.scales().velocity;
   report.power_interpolated = dot(fsi_forces_, population_.velocities());
   return report;
 }

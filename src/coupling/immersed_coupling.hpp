@@ -89,10 +89,15 @@ class ImmersedCoupling {
   NodeVectors previous_velocities_;        // v^{n−1}, for dv/dt
   NodeVectors interaction_forces_, wall_forces_, fsi_forces_;
   NodeVectors interpolated_;               // v̂_I, the scaled fluid velocity at the nodes
+  // The cells see the whole fluid in the global numbering (on every rank, when the fluid
+  // is split across ranks and the cells are on each of them).
   Kokkos::View<double*> fluid_load_;       // the spread forces on the fluid's unknowns [pN]
   // With coupling.subscale_velocity: the fluid's whole velocity u_h + u' (scaled, like the
-  // fluid's state), which the cells move with; empty otherwise (they move with u_h).
+  // fluid's state, the rank's local vector), which the cells move with; empty otherwise
+  // (they move with u_h).
   Kokkos::View<double*> total_velocity_;
+  Kokkos::View<double*> cell_carrier_;     // what the cells move with, global (scaled)
+  Kokkos::View<double*> global_state_;     // the fluid's state, global, when it is not that
   std::unique_ptr<CellStiffness> stiffness_;  // the semi-implicit coupling's K, or null
   NodeVectors stiffness_scratch_;           // interaction or wall forces while K is differenced
   NodeVectors force_change_;                // K Δt I u^{n+1} [pN] of the semi-implicit step

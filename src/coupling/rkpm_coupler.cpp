@@ -212,6 +212,31 @@ void BasicRkpmCoupler<ExecSpace>::update(const PointVectors& points) {
 }
 
 template <class ExecSpace>
+Kokkos::View<int*> BasicRkpmCoupler<ExecSpace>::support_nodes() const {
+  Kokkos::View<int*> in_support("rouleau::RkpmCoupler::in_support", num_dof_nodes_);
+  auto offsets = offsets_;
+  auto nodes = nodes_;
+  int entries = 0;
+  Kokkos::deep_copy(entries, Kokkos::subview(offsets_, num_points_));
+  Kokkos::parallel_for(
+      "rouleau::RkpmCoupler::mark_supports", Kokkos::RangePolicy<ExecSpace>(0, entries),
+      KOKKOS_LAMBDA(const int k) { in_support(nodes(k)) = 1; });
+  // The marked nodes, compacted in order: position = the number marked before.
+  int count = 0;
+  Kokkos::parallel_reduce(
+      "rouleau::RkpmCoupler::count_supports", Kokkos::RangePolicy<ExecSpace>(0, num_dof_nodes_),
+      KOKKOS_LAMBDA(const int n, int& sum) { sum += in_support(n); }, count);
+  Kokkos::View<int*> support("rouleau::RkpmCoupler::support_nodes", count);
+  Kokkos::parallel_scan(
+      "rouleau::RkpmCoupler::compact_supports", Kokkos::RangePolicy<ExecSpace>(0, num_dof_nodes_),
+      KOKKOS_LAMBDA(const int n, int& before, const bool final) {
+        if (final && in_support(n)) support(before) = n;
+        before += in_support(n);
+      });
+  return support;
+}
+
+template <class ExecSpace>
 void BasicRkpmCoupler<ExecSpace>::interpolate(const Kokkos::View<const double*>& nodal, int stride,
                                               const PointVectors& values) const {
   ProfilingRegion region("rouleau::RkpmCoupler::interpolate");

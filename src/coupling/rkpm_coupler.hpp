@@ -56,6 +56,9 @@ class BasicRkpmCoupler {
   const Kokkos::View<int*>& offsets() const { return offsets_; }
   const Kokkos::View<int*>& nodes() const { return nodes_; }
   const Kokkos::View<double*>& shape_functions() const { return shape_functions_; }
+  // The dof nodes in any point's support at the last update, ascending, each once: the
+  // only fluid values interpolation reads and the only ones spreading writes.
+  Kokkos::View<int*> support_nodes() const;
   // How many points needed the linear correction at the last update.
   int corrected_points() const { return corrected_points_; }
   // Forces the correction everywhere (tests: both paths agree where both apply).

@@ -24,36 +24,58 @@ using ExecSpace = Kokkos::DefaultExecutionSpace;
 // J(U)·x through the element kernels (Navier–Stokes), or A·x (Stokes: affine residual),
 // plus the immersed stiffness Ŝ x when the coupling is semi-implicit.
 // The state's projected gradient is computed once: U is fixed during the Krylov solve.
+// Across ranks x and y are the owned entries: x is lifted to a local vector (its copies
+// filled from their owners), the rank's operator applied (its sums completed across
+// ranks), and y is the owned part of the result.
 class FluidJacobian final : public LinearOperator {
  public:
   using AddStiffness = std::function<void(const ConstVector&, const Vector&)>;
+  struct Lift {
+    const FluidDistribution* distribution = nullptr;
+    Vector direction, action;  // local scratch
+  };
   FluidJacobian(const FluidOperator& op, const ConstVector& state, const Vector& state_gradient, bool linear,
-                AddStiffness add_stiffness)
-      : op_(op), state_(state), state_gradient_(state_gradient), linear_(linear), add_stiffness_(std::move(add_stiffness)) {
+                AddStiffness add_stiffness, Lift lift)
+      : op_(op), state_(state), state_gradient_(state_gradient), linear_(linear), add_stiffness_(std::move(add_stiffness)),
+        lift_(std::move(lift)) {
     if (!linear_ && op_.coefficients().viscous_reconstruction) op_.project_gradient(state_, state_gradient_);
   }
   void apply(const ConstVector& x, const Vector& y) const override {
+    if (!lift_.distribution) {
+      apply_local(x, y);
+      return;
+    }
+    const auto owned = std::make_pair(0, static_cast<int>(x.extent(0)));
+    Kokkos::deep_copy(Kokkos::subview(lift_.direction, owned), x);
+    lift_.distribution->update_copies(lift_.direction);
+    apply_local(lift_.direction, lift_.action);
+    Kokkos::deep_copy(y, Kokkos::subview(lift_.action, owned));
+  }
+
+ private:
+  void apply_local(const ConstVector& x, const Vector& y) const {
     if (linear_)
       op_.linear_action(x, y);
     else
       op_.jacobian_action(state_, state_gradient_, x, y);
     if (add_stiffness_) add_stiffness_(x, y);
   }
-
- private:
   const FluidOperator& op_;
   ConstVector state_;
   Vector state_gradient_;
   bool linear_;
   AddStiffness add_stiffness_;
+  Lift lift_;
 };
 
-// ‖R‖ over the velocity rows and over the pressure rows (a free function: CUDA forbids
+// ‖R‖ over the velocity rows and over the pressure rows of the first `owned` entries,
+// summed over the ranks of `distribution` when there is one (a free function: CUDA forbids
 // extended lambdas in private member functions).
-void block_norms(const ConstVector& r, double& momentum, double& continuity) {
-  double m = 0.0, c = 0.0;
+void block_norms(const ConstVector& r, const int owned, const FluidDistribution* distribution, double& momentum,
+                 double& continuity) {
+  double sums[2] = {0.0, 0.0};
   Kokkos::parallel_reduce(
-      "rouleau::FluidSolver::block_norms", Kokkos::RangePolicy<ExecSpace>(0, r.extent(0)),
+      "rouleau::FluidSolver::block_norms", Kokkos::RangePolicy<ExecSpace>(0, owned),
       KOKKOS_LAMBDA(const int i, double& sm, double& sc) {
         const double v = r(i) * r(i);
         if (i % 4 == 3)
@@ -61,9 +83,41 @@ void block_norms(const ConstVector& r, double& momentum, double& continuity) {
         else
           sm += v;
       },
-      m, c);
-  momentum = std::sqrt(m);
-  continuity = std::sqrt(c);
+      sums[0], sums[1]);
+  if (distribution) distribution->communicator().sum(sums, 2);
+  momentum = std::sqrt(sums[0]);
+  continuity = std::sqrt(sums[1]);
+}
+
+// The boundary conditions of the whole mesh on a rank's part: the constrained unknowns it
+// holds (owned or copies), in its local numbering, and its local entries of the load.
+FluidBoundaryConditions localize_boundary_conditions(const FluidBoundaryConditions& global,
+                                                     const FluidDistribution& distribution) {
+  FluidBoundaryConditions local;
+  local.pressure_pinned = global.pressure_pinned;
+  std::vector<std::pair<int, double>> constrained;
+  for (std::size_t k = 0; k < global.dirichlet_dofs.size(); ++k) {
+    const int node = distribution.local_node(global.dirichlet_dofs[k] / fluid_unknowns_per_node);
+    if (node >= 0)
+      constrained.emplace_back(fluid_unknowns_per_node * node + global.dirichlet_dofs[k] % fluid_unknowns_per_node,
+                               global.dirichlet_values[k]);
+  }
+  std::sort(constrained.begin(), constrained.end());
+  for (const auto& [dof, value] : constrained) {
+    local.dirichlet_dofs.push_back(dof);
+    local.dirichlet_values.push_back(value);
+  }
+  local.traction_load = Vector("rouleau::FluidSolver::traction_load", distribution.num_local_unknowns());
+  distribution.localize(global.traction_load, local.traction_load);
+  return local;
+}
+
+// The constrained unknowns among the first `owned` (the preconditioners across ranks).
+std::vector<int> owned_dirichlet(const std::vector<int>& dofs, const int owned) {
+  std::vector<int> kept;
+  for (int dof : dofs)
+    if (dof < owned) kept.push_back(dof);
+  return kept;
 }
 
 // v(rows(i)) = 0 (a free function: CUDA forbids extended lambdas in private member
@@ -85,16 +139,23 @@ GmresSettings gmres_settings(const SolverConfig& s) {
 
 FluidSolver::FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid,
                          const std::vector<FluidBoundary>& boundaries, const SolverConfig& settings,
-                         const FluidScales& scales, bool stokes)
-    : operator_(mesh, scales.length),
+                         const FluidScales& scales, bool stokes, const FluidDistribution* distribution)
+    : distribution_(distribution),
+      mesh_(mesh),
+      num_global_unknowns_(mesh.num_unknowns()),
+      operator_(distribution ? distribution->local_mesh() : mesh, scales.length),
       scales_(scales),
       settings_(settings),
       stokes_(stokes),
       density_(fluid.density),
-      boundary_(build_boundary_conditions(mesh, boundaries, scales)),
-      block_jacobi_(mesh.num_dof_nodes),
-      gmres_(mesh.num_unknowns(), gmres_settings(settings)) {
-  const int n = mesh.num_unknowns();
+      boundary_(distribution ? localize_boundary_conditions(build_boundary_conditions(mesh, boundaries, scales),
+                                                            *distribution)
+                             : build_boundary_conditions(mesh, boundaries, scales)),
+      block_jacobi_(operator_.mesh().num_dof_nodes),
+      gmres_(distribution ? distribution->num_owned_unknowns() : mesh.num_unknowns(), gmres_settings(settings),
+             distribution ? &distribution->communicator() : nullptr) {
+  const FluidMesh& local_mesh = operator_.mesh();
+  const int n = local_mesh.num_unknowns();
   state_ = Vector("rouleau::FluidSolver::state", n);
   previous_state_ = Vector("rouleau::FluidSolver::previous_state", n);
   older_state_ = Vector("rouleau::FluidSolver::older_state", n);
@@ -102,34 +163,75 @@ FluidSolver::FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid,
   body_force_ = Vector("rouleau::FluidSolver::body_force", n);
   residual_ = Vector("rouleau::FluidSolver::residual", n);
   correction_ = Vector("rouleau::FluidSolver::correction", n);
-  blocks_ = Vector("rouleau::FluidSolver::blocks", 16 * mesh.num_dof_nodes);
-  state_gradient_ = Vector("rouleau::FluidSolver::state_gradient", 9 * mesh.num_dof_nodes);
+  blocks_ = Vector("rouleau::FluidSolver::blocks", 16 * local_mesh.num_dof_nodes);
+  state_gradient_ = Vector("rouleau::FluidSolver::state_gradient", 9 * local_mesh.num_dof_nodes);
+  if (distribution_) operator_.set_node_sums(distribution_->node_sums());
   operator_.set_dirichlet(boundary_.dirichlet_dofs, boundary_.dirichlet_values);
   operator_.set_nodal_load(boundary_.traction_load);
-  if (settings_.preconditioner == PreconditionerType::ilu0 || settings_.preconditioner == PreconditionerType::multigrid) {
-    matrix_graph_ = build_fluid_matrix_graph(mesh);
-    matrix_values_ = Vector("rouleau::FluidSolver::matrix_values", matrix_graph_.entries.extent(0));
+  if (distribution_) {
+    lifted_direction_ = Vector("rouleau::FluidSolver::lifted_direction", n);
+    lifted_action_ = Vector("rouleau::FluidSolver::lifted_action", n);
+    const std::vector<int> dirichlet = owned_dirichlet(boundary_.dirichlet_dofs, distribution_->num_owned_unknowns());
+    if (settings_.preconditioner == PreconditionerType::block_jacobi)
+      distributed_jacobi_ =
+          std::make_unique<DistributedBlockJacobi>(distribution_->communicator(), distribution_->partition(), dirichlet);
+    if (settings_.preconditioner == PreconditionerType::ilu0 || settings_.preconditioner == PreconditionerType::multigrid)
+      subdomain_ilu_ = std::make_unique<SubdomainIlu>(distribution_->communicator(), distribution_->partition(),
+                                                      local_mesh, dirichlet);
+  } else {
+    if (settings_.preconditioner == PreconditionerType::ilu0 || settings_.preconditioner == PreconditionerType::multigrid) {
+      matrix_graph_ = build_fluid_matrix_graph(mesh);
+      matrix_values_ = Vector("rouleau::FluidSolver::matrix_values", matrix_graph_.entries.extent(0));
+    }
+    if (settings_.preconditioner == PreconditionerType::ilu0)
+      ilu0_ = std::make_unique<Ilu0Preconditioner>(matrix_graph_.row_map, matrix_graph_.entries);
+    if (settings_.preconditioner == PreconditionerType::multigrid)
+      multigrid_ = std::make_unique<AggregationMultigrid>(matrix_graph_, fluid_node_strength(mesh));
   }
-  if (settings_.preconditioner == PreconditionerType::ilu0)
-    ilu0_ = std::make_unique<Ilu0Preconditioner>(matrix_graph_.row_map, matrix_graph_.entries);
-  if (settings_.preconditioner == PreconditionerType::multigrid)
-    multigrid_ = std::make_unique<AggregationMultigrid>(matrix_graph_, fluid_node_strength(mesh));
   operator_.impose_dirichlet(state_);
   set_uniform_body_force(fluid.body_force);
 }
 
+int FluidSolver::owned_unknowns() const {
+  return distribution_ ? distribution_->num_owned_unknowns() : num_global_unknowns_;
+}
+
+double FluidSolver::norm(const ConstVector& x) const {
+  return distribution_ ? distribution_->norm(x) : KokkosBlas::nrm2(x);
+}
+
+void FluidSolver::gather_global(const ConstVector& local, const Vector& global) const {
+  if (distribution_ && replicated_nodes_.extent(0) > 0)
+    distribution_->replicate(local, global, replicated_nodes_);
+  else if (distribution_)
+    distribution_->replicate(local, global);
+  else
+    Kokkos::deep_copy(global, local);
+}
+
+std::vector<double> FluidSolver::global_values(const ConstVector& local) const {
+  if (!distribution_) return to_flat_vector(local);
+  Vector global("rouleau::FluidSolver::global_values", num_global_unknowns_);
+  distribution_->replicate(local, global);
+  return to_flat_vector(global);
+}
+
 void FluidSolver::set_body_force(const std::vector<double>& force_density) {
-  const int nodes = operator_.mesh().num_dof_nodes;
-  auto host = Kokkos::create_mirror_view(body_force_);
-  Kokkos::deep_copy(host, 0.0);
+  const int nodes = mesh_.num_dof_nodes;
+  Vector global("rouleau::FluidSolver::body_force_global", num_global_unknowns_);
+  auto host = Kokkos::create_mirror_view(global);
   const double scale = 1.0 / scales_.body_force();
   for (int i = 0; i < nodes; ++i)
     for (int d = 0; d < 3; ++d) host(4 * i + d) = force_density[3 * i + d] * scale;
-  Kokkos::deep_copy(body_force_, host);
+  Kokkos::deep_copy(global, host);
+  if (distribution_)
+    distribution_->localize(global, body_force_);
+  else
+    Kokkos::deep_copy(body_force_, global);
 }
 
 void FluidSolver::set_uniform_body_force(const std::array<double, 3>& force_density) {
-  std::vector<double> field(3 * operator_.mesh().num_dof_nodes);
+  std::vector<double> field(3 * mesh_.num_dof_nodes);
   for (size_t i = 0; i < field.size(); ++i) field[i] = force_density[i % 3];
   set_body_force(field);
 }
@@ -166,7 +268,7 @@ void FluidSolver::prescribe_boundary_velocity(
 }
 
 std::vector<std::array<double, 3>> FluidSolver::boundary_forces(const std::vector<std::string>& sides) const {
-  const FluidMesh& mesh = operator_.mesh();
+  const FluidMesh& mesh = mesh_;
   // One residual without constraint rows and one host copy for all the sides asked.
   operator_.residual(state_, state_, residual_, false);
   add_immersed_stiffness(state_, residual_, false, StiffnessArgument::state);
@@ -179,9 +281,14 @@ std::vector<std::array<double, 3>> FluidSolver::boundary_forces(const std::vecto
     dof_nodes.erase(std::unique(dof_nodes.begin(), dof_nodes.end()), dof_nodes.end());
     // R_a = ∫ ∇N_a : σ − ... = the force the wall exerts on the fluid at node a; the fluid
     // pushes back with −R_a. Scaled force → pN: × P L².
+    // Across ranks each node is counted by its owner (its residual is whole there).
     std::array<double, 3> force{0.0, 0.0, 0.0};
-    for (int n : dof_nodes)
+    for (int global_node : dof_nodes) {
+      const int n = distribution_ ? distribution_->local_node(global_node) : global_node;
+      if (distribution_ && (n < 0 || n >= distribution_->partition().num_owned_nodes)) continue;
       for (int d = 0; d < 3; ++d) force[d] -= r(4 * n + d) * scales_.force();
+    }
+    if (distribution_) distribution_->communicator().sum(force.data(), 3);
     forces.push_back(force);
   }
   return forces;
@@ -221,9 +328,12 @@ std::array<double, 5> integrate_velocity(const FluidOperator& op, const ConstVec
 }  // namespace
 
 std::array<double, 5> FluidSolver::velocity_integrals() const {
-  return visit_fluid_element(operator_.mesh().element_type, [&](auto element) {
+  // Across ranks: each rank integrates over the elements it owns.
+  std::array<double, 5> integrals = visit_fluid_element(operator_.mesh().element_type, [&](auto element) {
     return integrate_velocity<decltype(element)>(operator_, state_);
   });
+  if (distribution_) distribution_->communicator().sum(integrals.data(), 5);
+  return integrals;
 }
 
 std::array<double, 3> FluidSolver::mean_velocity() const {
@@ -243,12 +353,17 @@ void FluidSolver::set_immersed_forces(const ConstVector& nodal_forces) {
     immersed_load_ = Vector("rouleau::FluidSolver::immersed_load", state_.extent(0));
     operator_.set_immersed_load(immersed_load_);
   }
-  // b = F / (P L²), the forces in the residual's scale
+  // b = F / (P L²), the forces in the residual's scale; across ranks, at the rank's nodes.
   const auto load = immersed_load_;
   const double inverse_force_scale = 1.0 / scales_.force();
+  ConstVector forces = nodal_forces;
+  if (distribution_) {
+    distribution_->localize(nodal_forces, load);
+    forces = load;
+  }
   Kokkos::parallel_for(
       "rouleau::FluidSolver::set_immersed_forces", Kokkos::RangePolicy<ExecSpace>(0, load.extent(0)),
-      KOKKOS_LAMBDA(const int i) { load(i) = inverse_force_scale * nodal_forces(i); });
+      KOKKOS_LAMBDA(const int i) { load(i) = inverse_force_scale * forces(i); });
 }
 
 void FluidSolver::total_velocity(const Vector& out) const {
@@ -266,6 +381,10 @@ void FluidSolver::set_immersed_stiffness(const LinearOperator* stiffness, bool m
   if (stiffness && stiffness_action_.extent(0) == 0) {
     stiffness_action_ = Vector("rouleau::FluidSolver::stiffness_action", state_.extent(0));
     stiffness_stabilization_ = Vector("rouleau::FluidSolver::stiffness_stabilization", state_.extent(0));
+    if (distribution_) {
+      global_carrier_ = Vector("rouleau::FluidSolver::global_carrier", num_global_unknowns_);
+      global_action_ = Vector("rouleau::FluidSolver::global_action", num_global_unknowns_);
+    }
   }
   if (stiffness && moves_with_subscale && stiffness_carrier_.extent(0) == 0)
     stiffness_carrier_ = Vector("rouleau::FluidSolver::stiffness_carrier", state_.extent(0));
@@ -284,7 +403,15 @@ void FluidSolver::add_immersed_stiffness(const ConstVector& x, const Vector& y, 
     KokkosBlas::axpy(1.0, x, stiffness_carrier_);
     carrier = stiffness_carrier_;
   }
-  immersed_stiffness_->apply(carrier, stiffness_action_);
+  // Ŝ acts on the whole mesh's vectors: across ranks, on the carrier replicated from
+  // every rank's owned entries, its action taken back at the rank's nodes.
+  if (distribution_) {
+    gather_global(carrier, global_carrier_);
+    immersed_stiffness_->apply(global_carrier_, global_action_);
+    distribution_->localize(global_action_, stiffness_action_);
+  } else {
+    immersed_stiffness_->apply(carrier, stiffness_action_);
+  }
   // Ŝx is minus the change of the immersed loads; that change enters the stabilization's
   // strong residual as the loads do: Ŝx − P(Ŝx), P = FluidOperator::load_stabilization.
   if (operator_.immersed_load_in_stabilization()) {
@@ -297,6 +424,14 @@ void FluidSolver::add_immersed_stiffness(const ConstVector& x, const Vector& y, 
 
 void FluidSolver::rebuild_preconditioner() {
   ProfilingRegion region("rouleau::FluidSolver::preconditioner");
+  if (distributed_jacobi_) {
+    distributed_jacobi_->factor(operator_, state_);
+    return;
+  }
+  if (subdomain_ilu_) {
+    subdomain_ilu_->factor(operator_, state_);
+    return;
+  }
   switch (settings_.preconditioner) {
     case PreconditionerType::block_jacobi:
       operator_.diagonal_blocks(state_, blocks_);
@@ -316,6 +451,8 @@ void FluidSolver::rebuild_preconditioner() {
 }
 
 const Preconditioner& FluidSolver::preconditioner() const {
+  if (distributed_jacobi_) return *distributed_jacobi_;
+  if (subdomain_ilu_) return *subdomain_ilu_;
   switch (settings_.preconditioner) {
     case PreconditionerType::block_jacobi: return block_jacobi_;
     case PreconditionerType::ilu0: return *ilu0_;
@@ -338,17 +475,17 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history) {
   if (linear) {
     Kokkos::deep_copy(correction_, 0.0);
     operator_.residual(correction_, correction_, residual_);
-    rhs_norm = KokkosBlas::nrm2(residual_);
+    rhs_norm = norm(residual_);
   }
   operator_.residual(state_, state_, residual_);
   add_immersed_stiffness(state_, residual_, true, StiffnessArgument::state);
-  double norm = KokkosBlas::nrm2(residual_);
-  report.initial_residual = norm;
+  double residual_norm = norm(residual_);
+  report.initial_residual = residual_norm;
   const double target = linear ? std::fmax(settings_.newton_atol, settings_.gmres_rtol * rhs_norm)
-                               : std::fmax(settings_.newton_atol, settings_.newton_rtol * norm);
-  if (!std::isfinite(norm)) report.failure = "the residual is not finite";
-  double previous_norm = norm, previous_forcing = 0.1;
-  while (report.failure.empty() && norm > target && !report.stalled_at_round_off &&
+                               : std::fmax(settings_.newton_atol, settings_.newton_rtol * residual_norm);
+  if (!std::isfinite(residual_norm)) report.failure = "the residual is not finite";
+  double previous_norm = residual_norm, previous_forcing = 0.1;
+  while (report.failure.empty() && residual_norm > target && !report.stalled_at_round_off &&
          report.newton_iterations < settings_.newton_max_iterations) {
     // Preconditioner from the Jacobian at the current state (constant in the Stokes limit).
     if (!linear || !preconditioner_current_) {
@@ -360,16 +497,16 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history) {
     // η_k = γ (‖R_k‖/‖R_{k−1}‖)², safeguarded by γ η_{k−1}² when that exceeds 0.1, capped at
     // 0.1, and no tighter than needed to reach the Newton target. An affine (Stokes)
     // residual is solved once, down to its target (gmres_rtol ‖b‖).
-    double forcing = std::fmin(0.5, target / norm);
+    double forcing = std::fmin(0.5, target / residual_norm);
     if (!linear) {
-      forcing = report.newton_iterations == 0 ? 0.1 : 0.9 * (norm / previous_norm) * (norm / previous_norm);
+      forcing = report.newton_iterations == 0 ? 0.1 : 0.9 * (residual_norm / previous_norm) * (residual_norm / previous_norm);
       const double safeguard = 0.9 * previous_forcing * previous_forcing;
       if (report.newton_iterations > 0 && safeguard > 0.1) forcing = std::fmax(forcing, safeguard);
       forcing = std::fmin(forcing, 0.1);
-      forcing = std::fmax(forcing, std::fmax(settings_.gmres_rtol, 0.5 * target / norm));
+      forcing = std::fmax(forcing, std::fmax(settings_.gmres_rtol, 0.5 * target / residual_norm));
       previous_forcing = forcing;
     }
-    previous_norm = norm;
+    previous_norm = residual_norm;
     KokkosBlas::axpby(-1.0, residual_, 0.0, residual_);
     Kokkos::deep_copy(correction_, 0.0);
     FluidJacobian::AddStiffness add_stiffness;
@@ -377,32 +514,37 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history) {
       add_stiffness = [this](const ConstVector& x, const Vector& y) {
         add_immersed_stiffness(x, y, true, StiffnessArgument::direction);
       };
-    FluidJacobian J(operator_, state_, state_gradient_, linear, add_stiffness);
-    const GmresResult g = gmres_.solve(J, M, residual_, correction_, forcing);
+    FluidJacobian J(operator_, state_, state_gradient_, linear, add_stiffness,
+                    {distribution_, lifted_direction_, lifted_action_});
+    // GMRES on the owned unknowns (all of them on one rank); the copies follow.
+    const auto owned = std::make_pair(0, owned_unknowns());
+    const GmresResult g =
+        gmres_.solve(J, M, Kokkos::subview(residual_, owned), Kokkos::subview(correction_, owned), forcing);
+    if (distribution_) distribution_->update_copies(correction_);
     report.gmres_iterations += g.iterations;
     ++report.newton_iterations;
     KokkosBlas::axpby(1.0, correction_, 1.0, state_);
     operator_.residual(state_, state_, residual_);
     add_immersed_stiffness(state_, residual_, true, StiffnessArgument::state);
-    norm = KokkosBlas::nrm2(residual_);
+    residual_norm = norm(residual_);
     // ‖δ‖ ≤ newton_step_rtol ‖U‖: the update no longer changes the state, so the residual
     // is at its round-off floor (converged, even if above the residual target).
     if (!linear && settings_.newton_step_rtol > 0.0 &&
-        KokkosBlas::nrm2(correction_) <= settings_.newton_step_rtol * KokkosBlas::nrm2(state_))
+        norm(correction_) <= settings_.newton_step_rtol * norm(state_))
       report.stalled_at_round_off = true;
     if (spdlog::should_log(spdlog::level::debug)) {
       double momentum = 0.0, continuity = 0.0;
-      block_norms(residual_, momentum, continuity);
+      block_norms(residual_, owned_unknowns(), distribution_, momentum, continuity);
       spdlog::debug("Newton {}: GMRES {} iterations to {:.1e} ({}), residual {:.3e} (momentum {:.3e}, continuity "
                     "{:.3e}), target {:.3e}",
                     report.newton_iterations, g.iterations, forcing, g.converged ? "converged" : "not converged",
-                    norm, momentum, continuity, target);
+                    residual_norm, momentum, continuity, target);
     }
-    if (!std::isfinite(norm)) {
+    if (!std::isfinite(residual_norm)) {
       report.failure = "the residual is not finite after Newton step " + std::to_string(report.newton_iterations);
       break;
     }
-    if (!g.converged && norm > target) {
+    if (!g.converged && residual_norm > target) {
       std::ostringstream msg;
       msg << "GMRES did not converge in " << g.iterations << " iterations (linear residual " << g.final_residual
           << " from " << g.initial_residual << ")";
@@ -411,11 +553,11 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history) {
     }
     if (linear) break;  // affine residual: one Krylov solve is the solution
   }
-  block_norms(residual_, report.momentum_residual, report.continuity_residual);
-  report.converged = report.failure.empty() && (norm <= target || linear || report.stalled_at_round_off);
+  block_norms(residual_, owned_unknowns(), distribution_, report.momentum_residual, report.continuity_residual);
+  report.converged = report.failure.empty() && (residual_norm <= target || linear || report.stalled_at_round_off);
   if (report.failure.empty() && !report.converged) {
     std::ostringstream msg;
-    msg << "Newton did not converge in " << report.newton_iterations << " iterations (residual " << norm
+    msg << "Newton did not converge in " << report.newton_iterations << " iterations (residual " << residual_norm
         << ", target " << target << ")";
     report.failure = msg.str();
   }
@@ -463,29 +605,37 @@ FluidSolveReport FluidSolver::advance(double dt, TimeScheme scheme) {
 }
 
 void FluidSolver::save_state(CheckpointData& data) const {
-  data.reals["fluid/state"] = to_flat_vector(state_);
-  data.reals["fluid/previous_state"] = to_flat_vector(previous_state_);
+  // In the global numbering: a checkpoint written on P ranks restarts on Q.
+  data.reals["fluid/state"] = global_values(state_);
+  data.reals["fluid/previous_state"] = global_values(previous_state_);
   data.reals["fluid/time"] = {time_};
   data.integers["fluid/steps"] = {steps_};
 }
 
 void FluidSolver::restore_state(const CheckpointData& data) {
-  const long long n = static_cast<long long>(state_.extent(0));
-  from_flat_vector(data.real("fluid/state", n), state_, "fluid/state");
-  from_flat_vector(data.real("fluid/previous_state", n), previous_state_, "fluid/previous_state");
+  const long long n = num_global_unknowns_;
+  Vector global("rouleau::FluidSolver::restored", n);
+  const std::pair<const char*, Vector> entries[] = {{"fluid/state", state_}, {"fluid/previous_state", previous_state_}};
+  for (const auto& [name, local] : entries) {
+    from_flat_vector(data.real(name, n), global, name);
+    if (distribution_)
+      distribution_->localize(global, local);
+    else
+      Kokkos::deep_copy(local, global);
+  }
   time_ = data.real("fluid/time", 1).front();
   steps_ = static_cast<int>(data.integer("fluid/steps", 1).front());
 }
 
 void FluidSolver::velocity_and_pressure(std::vector<double>& velocity, std::vector<double>& pressure) const {
-  auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), state_);
-  const FluidMesh& mesh = operator_.mesh();
+  const std::vector<double> host = global_values(state_);
+  const FluidMesh& mesh = mesh_;
   velocity.resize(3 * mesh.num_nodes);
   pressure.resize(mesh.num_nodes);
   for (int n = 0; n < mesh.num_nodes; ++n) {
     const int d = mesh.dof_node_of_node[n];
-    for (int c = 0; c < 3; ++c) velocity[3 * n + c] = host(4 * d + c) * scales_.velocity;
-    pressure[n] = host(4 * d + 3) * scales_.pressure;
+    for (int c = 0; c < 3; ++c) velocity[3 * n + c] = host[4 * d + c] * scales_.velocity;
+    pressure[n] = host[4 * d + 3] * scales_.pressure;
   }
 }
 

@@ -5,12 +5,23 @@
 // J δ = −R with right-preconditioned GMRES, J applied element by element (matrix-free).
 // In the Stokes limit the residual is affine: one Krylov solve per step.
 // Time stepping: backward Euler or BDF2 (BE on the first step), or a steady solve.
+//
+// Across ranks (a FluidDistribution, issue 10) each rank solves on its part of the mesh:
+// its operator completes every element sum across ranks (node sums), GMRES runs on the
+// owned unknowns with its reductions over all ranks, and the preconditioner is point-block
+// Jacobi across ranks (block_jacobi, the same iterates as one rank) or additive Schwarz
+// with ILU(0) per rank (SubdomainIlu, for ilu0 and multigrid: the answer agrees with one
+// rank's to the solver's tolerance). What the solver takes and gives in the global
+// numbering says so; the rest is the rank's local vectors (state(), total_velocity()).
 #include <Kokkos_Core.hpp>
 #include <functional>
 #include <memory>
 #include <string>
 
 #include "config/case_config.hpp"
+#include "distributed/distributed_fluid_operator.hpp"
+#include "distributed/fluid_distribution.hpp"
+#include "distributed/subdomain_ilu.hpp"
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/fluid_operator.hpp"
 #include "fluid/fluid_matrix.hpp"
@@ -36,8 +47,11 @@ struct FluidSolveReport {
 class FluidSolver {
  public:
   // `stokes`: drop convection (the Stokes limit). Scales from derive_quantities().
+  // `distribution`: the ranks the solve is split across (it must outlive the solver), or
+  // null for one rank; `mesh` is the whole mesh either way.
   FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid, const std::vector<FluidBoundary>& boundaries,
-              const SolverConfig& settings, const FluidScales& scales, bool stokes);
+              const SolverConfig& settings, const FluidScales& scales, bool stokes,
+              const FluidDistribution* distribution = nullptr);
   // A box's six sides.
   FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid, const std::array<BoundaryConfig, 6>& sides,
               const SolverConfig& settings, const FluidScales& scales, bool stokes)
@@ -48,13 +62,14 @@ class FluidSolver {
   // Advances by dt [s] with the given scheme (BDF2 falls back to BE on the first step).
   FluidSolveReport advance(double dt, TimeScheme scheme);
 
-  // The body force density field at the dof nodes [pN/μm³], size 3·num_dof_nodes, host.
+  // The body force density field at the dof nodes [pN/μm³], size 3·num_dof_nodes of the
+  // whole mesh, host.
   void set_body_force(const std::vector<double>& force_density);
   // Constant body force density everywhere [pN/μm³].
   void set_uniform_body_force(const std::array<double, 3>& force_density);
 
-  // Nodal forces [pN] on the fluid's unknowns, node-interleaved like the state (velocity
-  // entries read): the cells' forces spread by RKPM (paper eq. 16). They enter the
+  // Nodal forces [pN] on the fluid's unknowns in the global numbering (num_global_unknowns(),
+  // node-interleaved like the state, velocity entries read): the cells' forces spread by RKPM (paper eq. 16). They enter the
   // momentum residual as nodal loads (the exact transpose of interpolation) and, when
   // turned on, the stabilization's strong residual as the force density they stand for
   // (FluidOperator::load_stabilization; without it PSPG drives a flux τ ∇p through cells).
@@ -63,7 +78,7 @@ class FluidSolver {
 
   // The semi-implicit coupling's linearized cell forces: an operator Ŝ on the scaled state
   // whose action Ŝ U enters the residual, R(U) = R_fluid(U) + Ŝ U, and so the Jacobian,
-  // J = J_fluid + Ŝ (zero on the constrained rows), with the stabilization's share
+  // J = J_fluid + Ŝ (zero on the constrained rows; Ŝ acts on global vectors), with the stabilization's share
   // −P(Ŝ U) of that change of the loads when the immersed forces are in the
   // stabilization. ImmersedCoupling passes Ŝ U = −S K I (Δt U) / (P L²)
   // (coupling/cell_stiffness.hpp); null turns it off. The operator must outlive its use;
@@ -97,6 +112,18 @@ class FluidSolver {
   // {∫ dV, ∫ u dV, ∫ |u|² dV} in scaled variables (x/L, u/U).
   std::array<double, 5> velocity_integrals() const;
 
+  // The unknowns of the whole mesh, and a global copy of a local vector (state(),
+  // total_velocity()): the same on every rank (FluidDistribution::replicate).
+  int num_global_unknowns() const { return num_global_unknowns_; }
+  void gather_global(const ConstVector& local, const Vector& global) const;
+  // Across ranks: the global dof nodes whose values the cells read and load (their RKPM
+  // supports, ascending): gather_global() and the immersed stiffness then replicate these
+  // alone, and leave the other entries of their global vectors as they were. Empty (the
+  // default): every node.
+  void set_replicated_nodes(const Kokkos::View<const int*>& nodes) { replicated_nodes_ = nodes; }
+  // The ranks, or null on one rank.
+  const FluidDistribution* distribution() const { return distribution_; }
+
   double time() const { return time_; }
   int steps() const { return steps_; }
 
@@ -108,15 +135,19 @@ class FluidSolver {
   // Throws std::runtime_error naming the entry when one is missing or of the wrong size.
   void restore_state(const CheckpointData& data);
 
+  // The rank's operator, on its part of the mesh (the whole mesh on one rank).
   const FluidOperator& fluid_operator() const { return operator_; }
+  // The whole mesh.
+  const FluidMesh& mesh() const { return mesh_; }
   // Lets the Stokes operator run as the uniform-box stencil where the mesh allows it
   // (FluidOperator::allow_stencil; on by default).
   void allow_stencil(bool allow) { operator_.allow_stencil(allow); }
   const FluidScales& scales() const { return scales_; }
   bool stokes() const { return stokes_; }
-  // The scaled state (u/U, p/P interleaved per dof node).
+  // The scaled state (u/U, p/P interleaved per dof node), the rank's local vector.
   const Vector& state() const { return state_; }
-  // Velocity [μm/s] and pressure [Pa] at the geometric nodes (host arrays, node-major).
+  // Velocity [μm/s] and pressure [Pa] at the geometric nodes of the whole mesh (host arrays,
+  // node-major; on every rank).
   void velocity_and_pressure(std::vector<double>& velocity, std::vector<double>& pressure) const;
 
  private:
@@ -133,8 +164,17 @@ class FluidSolver {
   // Rebuilds the configured preconditioner from the Jacobian at the current state.
   void rebuild_preconditioner();
   const Preconditioner& preconditioner() const;
+  // The unknowns GMRES works on: the rank's owned ones (all on one rank).
+  int owned_unknowns() const;
+  // ‖x‖ over the unknowns of the whole mesh (each once).
+  double norm(const ConstVector& x) const;
+  // The global vector of a local one as a flat host array (checkpoints).
+  std::vector<double> global_values(const ConstVector& local) const;
 
-  FluidOperator operator_;
+  const FluidDistribution* distribution_;  // null on one rank
+  FluidMesh mesh_;                         // the whole mesh
+  int num_global_unknowns_;
+  FluidOperator operator_;                 // on the rank's part of the mesh
   FluidScales scales_;
   SolverConfig settings_;
   bool stokes_;
@@ -154,6 +194,12 @@ class FluidSolver {
   Vector matrix_values_;                        // its values,
   std::unique_ptr<Ilu0Preconditioner> ilu0_;    // and the factorization
   std::unique_ptr<AggregationMultigrid> multigrid_;  // or the hierarchy
+  // Across ranks: the preconditioners on the owned unknowns, and scratch for the
+  // Jacobian's lift of owned vectors to local ones and for Ŝ's global vectors.
+  std::unique_ptr<DistributedBlockJacobi> distributed_jacobi_;
+  std::unique_ptr<SubdomainIlu> subdomain_ilu_;
+  Vector lifted_direction_, lifted_action_, global_carrier_, global_action_;
+  Kokkos::View<const int*> replicated_nodes_;  // set_replicated_nodes()
   Gmres gmres_;
   bool preconditioner_current_ = false;  // Stokes: J is constant while dt is
   double last_mass_coefficient_ = -1.0;

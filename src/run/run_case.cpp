@@ -25,6 +25,8 @@
 #include "io/diagnostics_table.hpp"
 #include "io/provenance.hpp"
 #include "io/xdmf_writer.hpp"
+#include "parallel/communicator.hpp"
+#include "parallel/mpi_session.hpp"
 #include "rouleau_version.hpp"
 #include "coupling/immersed_coupling.hpp"
 #include "run/run_diagnostics.hpp"
@@ -116,31 +118,63 @@ MeshDescription describe_fluid_mesh(const FluidMesh& mesh) {
   return d;
 }
 
+// The log of a run on several ranks is the first rank's: the others' std::cerr says
+// nothing while this lives (an error they throw is reported after it, by the caller).
+class QuietOtherRanks {
+ public:
+  explicit QuietOtherRanks(const Communicator& ranks) {
+    if (ranks.rank() > 0) saved_ = std::cerr.rdbuf(nullptr);
+  }
+  ~QuietOtherRanks() {
+    if (saved_) {
+      std::cerr.rdbuf(saved_);
+      std::cerr.clear();
+    }
+  }
+  QuietOtherRanks(const QuietOtherRanks&) = delete;
+  QuietOtherRanks& operator=(const QuietOtherRanks&) = delete;
+
+ private:
+  std::streambuf* saved_ = nullptr;
+};
+
 }  // namespace
 
 int run_case(const CaseConfig& config, const RunOptions& options) {
   const auto run_start = Clock::now();
+  // Under mpirun the fluid is split across the ranks; the first rank writes every file.
+  const Communicator ranks = Communicator::world();
+  const bool writes_files = ranks.rank() == 0;
+  const QuietOtherRanks quiet(ranks);
   const DerivedQuantities derived = derive_quantities(config);
   const std::vector<Stage> stages = plan_stages(config, derived);
   if (options.explain) {
-    std::cout << describe_stages(config, derived, stages);
+    if (writes_files) std::cout << describe_stages(config, derived, stages);
     return static_cast<int>(ExitCode::done);
   }
   namespace fs = std::filesystem;
-  fs::create_directories(options.output_dir);
   const std::string out = options.output_dir;
-  write_file_atomically(out + "/case.resolved.toml", resolved_case_toml(config, derived));
+  if (writes_files) {
+    fs::create_directories(options.output_dir);
+    write_file_atomically(out + "/case.resolved.toml", resolved_case_toml(config, derived));
+  }
 
-  Simulation simulation(config, default_mesh_cache_dir());
+  Simulation simulation(config, default_mesh_cache_dir(), &ranks);
   StageTimes& times = simulation.times();
   const FluidSolver& solver = simulation.fluid();
   const CaseCells& cells = simulation.cells();
   ImmersedCoupling* coupling = simulation.coupling();
   std::cerr << "fluid mesh: " << simulation.mesh().num_nodes << " nodes, " << simulation.mesh().num_elements << " "
             << (simulation.mesh().element_type == FluidElementType::tetrahedron4 ? "tetrahedra" : "hexahedra") << ", "
-            << solver.fluid_operator().num_unknowns() << " unknowns; "
+            << solver.num_global_unknowns() << " unknowns; "
             << Kokkos::DefaultExecutionSpace::name() << " on " << Kokkos::DefaultHostExecutionSpace().concurrency()
-            << " host threads\n";
+            << " host threads" << (ranks.size() > 1 ? " per rank, " + std::to_string(ranks.size()) + " MPI ranks" : "")
+            << "\n";
+  if (const FluidDistribution* distribution = simulation.fluid().distribution())
+    std::cerr << "fluid split across " << ranks.size() << " ranks: rank 0 owns "
+              << distribution->partition().elements.size() << " elements and "
+              << distribution->partition().num_owned_nodes << " of its " << distribution->partition().num_local_nodes()
+              << " nodes" << (cells.population ? "; every rank holds every cell" : "") << "\n";
   const int cell_count = static_cast<int>(config.cells.size());
   if (cell_count > config.output.cell_gaps_max_cells && cell_count > 1)
     std::cerr << "cell gaps: not in the diagnostics (" << cell_count << " cells, more than output.cell_gaps_max_cells = "
@@ -160,6 +194,7 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
       {"case", config.name},
       {"execution_space", Kokkos::DefaultExecutionSpace::name()},
       {"threads", std::to_string(Kokkos::DefaultHostExecutionSpace().concurrency())},
+      {"ranks", std::to_string(ranks.size())},
       {"fluid_mesh_hash", hash_mesh(fluid_mesh.coordinates.data(), fluid_mesh.coordinates.size(),
                                     fluid_mesh.connectivity.data(), fluid_mesh.connectivity.size())}};
   for (const auto& [kind, cell_mesh] : cells.meshes) provenance_entries.emplace_back("cell_mesh_hash_" + kind, cell_mesh.hash);
@@ -173,18 +208,19 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
     simulation.restore_state(restart->data);
     std::cerr << "restarted from " << restart->path << ": step " << restart->data.step << ", t = " << restart->data.time
               << " s\n";
-    const int leftovers = remove_leftover_temporary_files(out) + remove_leftover_temporary_files(out + "/checkpoints");
+    const int leftovers =
+        writes_files ? remove_leftover_temporary_files(out) + remove_leftover_temporary_files(out + "/checkpoints") : 0;
     if (leftovers > 0)
       std::cerr << "removed " << leftovers << " unfinished temporary file(s) of the stopped run\n";
   }
   // What a run that ran this far wrote after the checkpoint is dropped: the diagnostics
   // rows and the field steps of later steps.
   std::vector<std::map<std::string, double>> earlier_rows;
-  if (restart && fs::exists(out + "/diagnostics.csv"))
+  if (writes_files && restart && fs::exists(out + "/diagnostics.csv"))
     for (auto& row : read_diagnostics_rows(out + "/diagnostics.csv"))
       if (row.count("step") && row["step"] <= restart->data.step) earlier_rows.push_back(std::move(row));
   std::unique_ptr<XdmfTimeSeries> fields;
-  if (config.output.write_fields) {
+  if (config.output.write_fields && writes_files) {
     fields = std::make_unique<XdmfTimeSeries>(out, "fields", output_meshes, provenance);
     if (restart) fields->adopt_written_steps(static_cast<int>(restart->data.step));
   }
@@ -200,7 +236,11 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
     const auto coupling_columns = coupling_diagnostics.columns();
     columns.insert(columns.end(), coupling_columns.begin(), coupling_columns.end());
   }
-  DiagnosticsTable table(out + "/diagnostics.csv", columns, earlier_rows);
+  std::unique_ptr<DiagnosticsTable> table;  // the first rank's
+  if (writes_files) table = std::make_unique<DiagnosticsTable>(out + "/diagnostics.csv", columns, earlier_rows);
+  auto flush_table = [&] {
+    if (table) table->flush();
+  };
   // Wall time of the whole run, over the segments a restart joins.
   const double earlier_wall_seconds = restart ? restart->data.wall_seconds : 0.0;
   auto wall_seconds = [&] { return earlier_wall_seconds + std::chrono::duration<double>(Clock::now() - run_start).count(); };
@@ -215,7 +255,7 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
       const std::vector<double> coupling_row = coupling_diagnostics.row(simulation.last_report(), times);
       row.insert(row.end(), coupling_row.begin(), coupling_row.end());
     }
-    table.add_row(row);
+    if (table) table->add_row(row);
   };
 
   std::vector<double> velocity, pressure;
@@ -228,8 +268,9 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
     host_interaction_forces = decltype(host_interaction_forces)("rouleau::run::interaction_forces_host",
                                                                 cells.population->num_nodes());
   }
+  // Every rank takes part (the fluid's fields are gathered); the first writes them.
   auto write_fields = [&] {
-    if (!fields) return;
+    if (!config.output.write_fields) return;
     times.time("output", [&] {
       solver.velocity_and_pressure(velocity, pressure);
       std::vector<std::vector<FieldView>> nodal{
@@ -250,7 +291,7 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
         }
         moved.push_back(cell_fields.positions.data());
       }
-      fields->write_step(simulation.steps(), simulation.time(), nodal, {}, moved);
+      if (fields) fields->write_step(simulation.steps(), simulation.time(), nodal, {}, moved);
     });
   };
 
@@ -264,7 +305,7 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
   // The diagnostics on disk go first: a run killed after the checkpoint then has every
   // row up to it (the restart keeps those and drops later ones).
   auto write_checkpoint = [&] {
-    table.flush();
+    flush_table();
     times.time("checkpoint", [&] {
       CheckpointData data;
       data.resolved_case = resolved_case_toml(config, derived);
@@ -272,7 +313,10 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
       data.wall_seconds = wall_seconds();
       for (const auto& [key, value] : provenance_entries)
         if (key.find("mesh_hash") != std::string::npos) data.labels[key] = value;
-      checkpoints.write(data, provenance);
+      if (writes_files)
+        checkpoints.write(data, provenance);
+      else  // the first rank's file, for the messages
+        checkpoints.set_last_path(checkpoints.path_of(simulation.steps()));
     });
     last_checkpoint = Clock::now();
     last_checkpoint_step = simulation.steps();
@@ -310,13 +354,21 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
           progress.update(step, simulation.time(), report.newton_iterations, report.gmres_iterations);
         const CheckpointConfig& every = config.checkpoint;
         const double minutes = std::chrono::duration<double>(Clock::now() - last_checkpoint).count() / 60.0;
-        if (StopSignals::take_checkpoint_request() || (every.every_steps > 0 && step % every.every_steps == 0) ||
-            (every.every_minutes > 0.0 && minutes >= every.every_minutes) || StopSignals::stop_requested() ||
+        // Signals and clocks are each rank's: on several ranks the decisions are taken
+        // together (any rank's request counts), since every rank takes part in a checkpoint.
+        int signal_number = StopSignals::stop_requested();
+        bool checkpoint_now = StopSignals::take_checkpoint_request() ||
+                              (every.every_minutes > 0.0 && minutes >= every.every_minutes);
+        if (ranks.size() > 1) {
+          signal_number = static_cast<int>(ranks.max(static_cast<double>(signal_number)));
+          checkpoint_now = ranks.max(checkpoint_now ? 1.0 : 0.0) > 0.0;
+        }
+        if (checkpoint_now || (every.every_steps > 0 && step % every.every_steps == 0) || signal_number != 0 ||
             step == steps)
           write_checkpoint();
-        if (const int signal_number = StopSignals::stop_requested(); signal_number != 0 && step < steps) {
+        if (signal_number != 0 && step < steps) {
           if (options.progress) progress.finish();
-          table.flush();
+          flush_table();
           std::cerr << "stopped by signal " << signal_number << " after step " << step << " (t = " << simulation.time()
                     << " s); checkpoint " << checkpoints.last_path() << "\ncontinue with: " << options.continue_command << " "
                     << out << "\n";
@@ -327,11 +379,12 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
       if (last_checkpoint_step != simulation.steps()) write_checkpoint();
     }
   } catch (const DivergenceError& error) {
-    table.flush();
+    flush_table();
     throw DivergenceError(std::string(error.what()) + "; last good checkpoint: " + last_good() +
                           "; fields and diagnostics up to the last good step are in " + out);
   }
-  table.flush();
+  flush_table();
+  ranks.barrier();  // the files are complete before any rank returns (case drivers read them)
   times.print(std::cerr);
   std::cerr << "wrote " << out << "/" << (fields ? "fields.xdmf, " : "") << "diagnostics.csv, case.resolved.toml"
             << (transient ? ", checkpoints/" : "") << "\n"
@@ -356,6 +409,7 @@ CaseDriverRun run_case_driver(int argc, char** argv, const std::string& default_
         // The whole case is validated before Kokkos starts, as `rouleau run` does.
         run.config = load_run_case(command_line, run.options.restart, std::cerr);
         derive_quantities(run.config);
+        const MpiSession mpi;  // before Kokkos; several ranks under mpirun
         const KokkosSession kokkos(argc > 0 ? argv[0] : "case", command_line.threads);
         return run_case(run.config, run.options);
       },

@@ -24,22 +24,28 @@ FluidMesh make_case_mesh(const CaseConfig& config, const std::string& mesh_cache
   return make_box_mesh(domain.lower, domain.upper, domain.elements, domain.wall_grading, periodic);
 }
 
-Simulation::Simulation(const CaseConfig& config, const std::string& mesh_cache_dir)
+Simulation::Simulation(const CaseConfig& config, const std::string& mesh_cache_dir, const Communicator* ranks)
     : config_(config), derived_(derive_quantities(config)) {
+  const bool several_ranks = ranks && ranks->size() > 1;
+  // The first rank makes (and caches) the meshes, the others then read them.
+  if (several_ranks && ranks->rank() > 0) ranks->barrier();
   FluidScales scales;
   scales.length = derived_.length_scale;
   scales.velocity = derived_.velocity_scale;
   scales.pressure = derived_.pressure_scale;
   scales.reynolds = derived_.reynolds;
   mesh_ = times_.time("mesh", [&] { return make_case_mesh(config_, mesh_cache_dir); });
+  cells_ = times_.time("cell meshes", [&] { return make_case_cells(config_, mesh_cache_dir); });
+  if (several_ranks && ranks->rank() == 0) ranks->barrier();
+  if (several_ranks)
+    distribution_ = times_.time("fluid setup", [&] { return std::make_unique<FluidDistribution>(*ranks, mesh_); });
   fluid_ = times_.time("fluid setup", [&] {
     return std::make_unique<FluidSolver>(mesh_, config_.fluid, case_boundaries(config_), config_.solver, scales,
-                                         derived_.stokes);
+                                         derived_.stokes, distribution_.get());
   });
   // The stencil changes Aδ only by round-off; scene.skip_unneeded_stages = false keeps the
   // element-by-element path for comparisons.
   fluid_->allow_stencil(config_.scene.skip_unneeded_stages);
-  cells_ = times_.time("cell meshes", [&] { return make_case_cells(config_, mesh_cache_dir); });
   // The cells move with the fluid in a time loop; a steady solve keeps them in place.
   if (cells_.population && config_.time.mode == TimeMode::transient)
     coupling_ = times_.time("coupling setup", [&] { return std::make_unique<ImmersedCoupling>(*fluid_, cells_, config_); });

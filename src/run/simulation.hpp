@@ -10,7 +10,9 @@
 #include "config/case_config.hpp"
 #include "coupling/immersed_coupling.hpp"
 #include "fluid/fluid_solver.hpp"
+#include "distributed/fluid_distribution.hpp"
 #include "mesh/fluid_mesh.hpp"
+#include "parallel/communicator.hpp"
 #include "run/stage_times.hpp"
 
 namespace rouleau {
@@ -18,8 +20,12 @@ namespace rouleau {
 class Simulation {
  public:
   // Builds everything the case's stages need (cell meshes from `mesh_cache_dir`). The
-  // case must have been loaded by load_case() (so it is valid).
-  Simulation(const CaseConfig& config, const std::string& mesh_cache_dir);
+  // case must have been loaded by load_case() (so it is valid). With `ranks` of more than
+  // one rank (issue 10) the fluid is split across them (FluidDistribution) and every rank
+  // holds every cell: the cells see the whole fluid's velocity, replicated from the ranks'
+  // parts each step, and spread their forces onto it; each rank computes the same cells.
+  // All ranks must build it together.
+  Simulation(const CaseConfig& config, const std::string& mesh_cache_dir, const Communicator* ranks = nullptr);
 
   // One time step of config.time.dt: the coupled step when there are cells, the fluid
   // alone otherwise. Throws DivergenceError naming the step, the stage and the values
@@ -64,6 +70,7 @@ class Simulation {
   DerivedQuantities derived_;
   StageTimes times_;
   FluidMesh mesh_;
+  std::unique_ptr<FluidDistribution> distribution_;  // several ranks, or null
   std::unique_ptr<FluidSolver> fluid_;
   CaseCells cells_;
   std::unique_ptr<ImmersedCoupling> coupling_;

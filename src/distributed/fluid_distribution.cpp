@@ -1,0 +1,110 @@
+#include "distributed/fluid_distribution.hpp"
+
+#include <KokkosBlas1_dot.hpp>
+#include <cmath>
+
+#include "distributed/local_mesh.hpp"
+#include "util/view_transfer.hpp"
+
+namespace rouleau {
+
+namespace {
+using ExecSpace = Kokkos::DefaultExecutionSpace;
+using Vector = FluidDistribution::Vector;
+using ConstVector = FluidDistribution::ConstVector;
+
+// global(4·g(i) + c) = local(4 i + c) for the first `nodes` local nodes, the rest zero.
+void place_owned(const Kokkos::View<int*>& global_node, const int nodes, const ConstVector& local, const Vector& global) {
+  Kokkos::deep_copy(global, 0.0);
+  Kokkos::parallel_for(
+      "rouleau::FluidDistribution::place_owned", Kokkos::RangePolicy<ExecSpace>(0, nodes), KOKKOS_LAMBDA(const int i) {
+        for (int c = 0; c < fluid_unknowns_per_node; ++c)
+          global(fluid_unknowns_per_node * global_node(i) + c) = local(fluid_unknowns_per_node * i + c);
+      });
+}
+
+// local(4 i + c) = global(4·g(i) + c) at every local node
+void take_local(const Kokkos::View<int*>& global_node, const ConstVector& global, const Vector& local) {
+  Kokkos::parallel_for(
+      "rouleau::FluidDistribution::localize", Kokkos::RangePolicy<ExecSpace>(0, global_node.extent(0)),
+      KOKKOS_LAMBDA(const int i) {
+        for (int c = 0; c < fluid_unknowns_per_node; ++c)
+          local(fluid_unknowns_per_node * i + c) = global(fluid_unknowns_per_node * global_node(i) + c);
+      });
+}
+// buffer(4k + c) = local(4 l + c) where this rank owns node g = nodes(k) as l, else 0
+void gather_owned_at(const Kokkos::View<int*>& owned_local, const Kokkos::View<const int*>& nodes,
+                     const ConstVector& local, const Vector& buffer) {
+  Kokkos::parallel_for(
+      "rouleau::FluidDistribution::gather_owned_at", Kokkos::RangePolicy<ExecSpace>(0, nodes.extent(0)),
+      KOKKOS_LAMBDA(const int k) {
+        const int l = owned_local(nodes(k));
+        for (int c = 0; c < fluid_unknowns_per_node; ++c)
+          buffer(fluid_unknowns_per_node * k + c) = l >= 0 ? local(fluid_unknowns_per_node * l + c) : 0.0;
+      });
+}
+
+// global(4 nodes(k) + c) = buffer(4k + c)
+void scatter_to_nodes(const Kokkos::View<const int*>& nodes, const ConstVector& buffer, const Vector& global) {
+  Kokkos::parallel_for(
+      "rouleau::FluidDistribution::scatter_to_nodes", Kokkos::RangePolicy<ExecSpace>(0, nodes.extent(0)),
+      KOKKOS_LAMBDA(const int k) {
+        for (int c = 0; c < fluid_unknowns_per_node; ++c)
+          global(fluid_unknowns_per_node * nodes(k) + c) = buffer(fluid_unknowns_per_node * k + c);
+      });
+}
+}  // namespace
+
+FluidDistribution::FluidDistribution(const Communicator& communicator, const FluidMesh& global_mesh)
+    : communicator_(communicator),
+      partition_(partition_fluid_mesh(global_mesh, communicator.rank(), communicator.size())),
+      local_mesh_(make_local_mesh(global_mesh, partition_)),
+      halo_(communicator_, partition_, fluid_unknowns_per_node),
+      node_sums_(communicator_, partition_),
+      local_of_global_(partition_.num_global_nodes, -1),
+      global_node_(device_copy(partition_.global_node, "rouleau::FluidDistribution::global_node")) {
+  for (int i = 0; i < partition_.num_local_nodes(); ++i) local_of_global_[partition_.global_node[i]] = i;
+  std::vector<int> owned_local(partition_.num_global_nodes, -1);
+  for (int i = 0; i < partition_.num_owned_nodes; ++i) owned_local[partition_.global_node[i]] = i;
+  owned_local_ = device_copy(owned_local, "rouleau::FluidDistribution::owned_local");
+}
+
+void FluidDistribution::sum_over_ranks(const Vector& values) const {
+  if (communicator_.size() == 1) return;
+  // MPI sees host memory (as NodeHalo's exchanges do).
+  if (host_buffer_.extent(0) < values.extent(0))
+    host_buffer_ = Kokkos::View<double*, Kokkos::HostSpace>("rouleau::FluidDistribution::host_buffer", values.extent(0));
+  const auto host = Kokkos::subview(host_buffer_, std::make_pair(std::size_t(0), values.extent(0)));
+  Kokkos::deep_copy(host, values);
+  communicator_.sum(host.data(), static_cast<int>(host.extent(0)));
+  Kokkos::deep_copy(values, host);
+}
+
+double FluidDistribution::dot(const ConstVector& x, const ConstVector& y) const {
+  const auto owned = std::make_pair(0, num_owned_unknowns());
+  return communicator_.sum(KokkosBlas::dot(Kokkos::subview(x, owned), Kokkos::subview(y, owned)));
+}
+
+double FluidDistribution::norm(const ConstVector& x) const { return std::sqrt(dot(x, x)); }
+
+void FluidDistribution::replicate(const ConstVector& local, const Vector& global) const {
+  place_owned(global_node_, partition_.num_owned_nodes, local, global);
+  sum_over_ranks(global);
+}
+
+void FluidDistribution::replicate(const ConstVector& local, const Vector& global,
+                                  const Kokkos::View<const int*>& nodes) const {
+  const int count = static_cast<int>(nodes.extent(0));
+  if (static_cast<int>(node_buffer_.extent(0)) < fluid_unknowns_per_node * count)
+    node_buffer_ = Vector("rouleau::FluidDistribution::node_buffer", fluid_unknowns_per_node * count);
+  const Vector buffer = Kokkos::subview(node_buffer_, std::make_pair(0, fluid_unknowns_per_node * count));
+  gather_owned_at(owned_local_, nodes, local, buffer);
+  sum_over_ranks(buffer);
+  scatter_to_nodes(nodes, buffer, global);
+}
+
+void FluidDistribution::localize(const ConstVector& global, const Vector& local) const {
+  take_local(global_node_, global, local);
+}
+
+}  // namespace rouleau

@@ -1,0 +1,81 @@
+#pragma once
+// The fluid mesh of a run split across its ranks (issue 10), as the fluid solver sees it:
+// the rank's part of the mesh (make_local_mesh), the node sums that complete its element
+// sums (FluidOperator::set_node_sums), the halo that fills its copies, and the maps between
+// its local vectors and the global ones (4 unknowns per dof node, node-interleaved).
+//
+// A local vector holds the rank's owned dof nodes first, then its copies; every local entry
+// holds the value the whole mesh gives (copies equal their owners). A global vector holds
+// every dof node of the mesh in the global numbering and is the same on every rank.
+// replicate() builds one from the owned entries of every rank: an MPI_Allreduce of
+// vectors that are zero except at each rank's owned entries, so each global entry is one
+// rank's value plus zeros — the same bit for bit for any rank count. It moves the whole
+// vector: it is for what needs the whole fluid on every rank (cells replicated on every
+// rank, output, checkpoints), not for the solver's inner loop.
+#include <Kokkos_Core.hpp>
+#include <functional>
+#include <vector>
+
+#include "distributed/node_halo.hpp"
+#include "distributed/node_sums.hpp"
+#include "mesh/fluid_mesh.hpp"
+#include "parallel/communicator.hpp"
+#include "parallel/element_partition.hpp"
+
+namespace rouleau {
+
+class FluidDistribution {
+ public:
+  using Vector = Kokkos::View<double*>;
+  using ConstVector = Kokkos::View<const double*>;
+
+  // Partitions `global_mesh` (partition_fluid_mesh) for this rank of `communicator`.
+  FluidDistribution(const Communicator& communicator, const FluidMesh& global_mesh);
+  // Its node sums refer to it: it stays where it was made.
+  FluidDistribution(const FluidDistribution&) = delete;
+  FluidDistribution& operator=(const FluidDistribution&) = delete;
+
+  const Communicator& communicator() const { return communicator_; }
+  const ElementPartition& partition() const { return partition_; }
+  const FluidMesh& local_mesh() const { return local_mesh_; }
+  // The node sums for the rank's FluidOperator (FluidOperator::set_node_sums).
+  std::function<void(const Vector&, int)> node_sums() const {
+    return [this](const Vector& values, int components) { node_sums_(values, components); };
+  }
+
+  int num_owned_unknowns() const { return fluid_unknowns_per_node * partition_.num_owned_nodes; }
+  int num_local_unknowns() const { return fluid_unknowns_per_node * partition_.num_local_nodes(); }
+  int num_global_unknowns() const { return fluid_unknowns_per_node * partition_.num_global_nodes; }
+
+  // The copies of a local vector take their owners' values.
+  void update_copies(const Vector& local) const { halo_.update_copies(local); }
+  // Σ x·y and ‖x‖ over the owned entries of all ranks (each unknown once).
+  double dot(const ConstVector& x, const ConstVector& y) const;
+  double norm(const ConstVector& x) const;
+
+  // global ← every rank's owned entries of `local` (see above); the same on every rank.
+  void replicate(const ConstVector& local, const Vector& global) const;
+  // The same at the global dof nodes `nodes` alone (the cells' supports): one
+  // MPI_Allreduce of 4 values per node; the other entries of `global` are left as they are.
+  void replicate(const ConstVector& local, const Vector& global, const Kokkos::View<const int*>& nodes) const;
+  // local ← global at every local dof node, owned and copies.
+  void localize(const ConstVector& global, const Vector& local) const;
+  // The local dof node of a global one, or −1 when the rank holds none.
+  int local_node(int global_node) const { return local_of_global_[global_node]; }
+
+ private:
+  Communicator communicator_;
+  ElementPartition partition_;
+  FluidMesh local_mesh_;
+  NodeHalo halo_;
+  NodeSums node_sums_;
+  std::vector<int> local_of_global_;
+  Kokkos::View<int*> global_node_;  // local dof node → global dof node (device)
+  Kokkos::View<int*> owned_local_;  // global dof node → its local node where this rank owns it, else −1 (device)
+  mutable Vector node_buffer_;      // replicate() at some nodes
+  mutable Kokkos::View<double*, Kokkos::HostSpace> host_buffer_;
+  // Sums `values` over all ranks in place, through host memory.
+  void sum_over_ranks(const Vector& values) const;
+};
+
+}  // namespace rouleau

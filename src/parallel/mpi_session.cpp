@@ -1,0 +1,60 @@
+#include "parallel/mpi_session.hpp"
+
+#if ROULEAU_HAS_MPI
+#include <mpi.h>
+
+#include <chrono>
+#include <exception>
+#include <thread>
+#endif
+
+namespace rouleau {
+
+#if ROULEAU_HAS_MPI
+MpiSession::MpiSession() {
+  int initialized = 0;
+  MPI_Initialized(&initialized);
+  if (initialized) return;
+  int provided = 0;
+  MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+  started_ = true;
+}
+
+MpiSession::~MpiSession() {
+  // Left by an error on several ranks: MPI stays up for the report, which then stops all
+  // ranks (MPI_Finalize would wait for ranks that may never come).
+  if (std::uncaught_exceptions() > 0 && running_on_several_ranks()) return;
+  int finalized = 0;
+  MPI_Finalized(&finalized);
+  if (started_ && !finalized) MPI_Finalize();
+}
+
+bool running_on_several_ranks() {
+  int initialized = 0, finalized = 0;
+  MPI_Initialized(&initialized);
+  MPI_Finalized(&finalized);
+  if (!initialized || finalized) return false;
+  int size = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  return size > 1;
+}
+
+void let_the_first_rank_report() {
+  if (!running_on_several_ranks()) return;
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank > 0) std::this_thread::sleep_for(std::chrono::seconds(2));
+}
+
+void stop_all_ranks(int exit_code) {
+  if (running_on_several_ranks()) MPI_Abort(MPI_COMM_WORLD, exit_code);
+}
+#else
+MpiSession::MpiSession() {}
+MpiSession::~MpiSession() {}
+bool running_on_several_ranks() { return false; }
+void let_the_first_rank_report() {}
+void stop_all_ranks(int) {}
+#endif
+
+}  // namespace rouleau

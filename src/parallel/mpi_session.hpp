@@ -1,0 +1,30 @@
+#pragma once
+// MPI for the lifetime of an MpiSession (issue 10): `rouleau run` and the case drivers
+// start it before Kokkos, so `mpirun -np N rouleau run case.toml` splits the fluid across
+// N ranks, and a plain `rouleau run` is one rank. In a build without MPI it does nothing.
+// Only the main thread calls MPI (MPI_THREAD_FUNNELED: OpenMP threads run beside it).
+// Host-only.
+namespace rouleau {
+
+class MpiSession {
+ public:
+  MpiSession();
+  ~MpiSession();
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+
+ private:
+  bool started_ = false;  // this session initialized MPI (and finalizes it)
+};
+
+// Whether MPI is up with more than one rank (then an error on one rank must stop all).
+bool running_on_several_ranks();
+// An error that every rank meets (a divergence: its tests read the whole fluid) is
+// reported once, by the first rank, which also writes the files: the others wait 2 s
+// before reporting, and the first rank's stop_all_ranks() ends them before that.
+void let_the_first_rank_report();
+// Stops every rank with `exit_code` (MPI_Abort) when there are several; returns otherwise.
+// For an error that only some ranks may have met: the others would wait for them forever.
+void stop_all_ranks(int exit_code);
+
+}  // namespace rouleau

@@ -13,6 +13,12 @@ Any other pair of settings compares the same way, e.g. the two scalable precondi
     /usr/bin/python3 bench/scene_skips.py --baseline 'solver.preconditioner="ilu0"' \
         --variant 'solver.preconditioner="multigrid"' --out bench/preconditioners.csv
 
+and the variant may run under a launcher, e.g. on two MPI ranks against one (issue 10):
+
+    /usr/bin/python3 bench/scene_skips.py --baseline 'solver.preconditioner="block_jacobi"' \
+        --variant 'solver.preconditioner="block_jacobi"' \
+        --variant-launcher 'mpiexec -n 2 --oversubscribe' --out bench/mpi_scenes.csv
+
 The skips (rouleau run --explain names them): the Stokes operator as a stencil from one
 reference element on a uniform box; the Morse neighbour list rebuilt only when a surface
 node has moved half its skin; no inertia stage when the cells are as dense as the fluid;
@@ -24,6 +30,7 @@ import csv
 import math
 import os
 import re
+import shlex
 import subprocess
 import sys
 import tempfile
@@ -77,9 +84,9 @@ def largest_relative_difference(a, b):
     return worst, where
 
 
-def run(rouleau, case_file, folder, steps, threads, setting):
+def run(rouleau, case_file, folder, steps, threads, setting, launcher=""):
     dt = case_time_step(case_file)
-    command = [rouleau, "run", case_file, "--out", folder, "--no-progress", "--threads", str(threads),
+    command = shlex.split(launcher) + [rouleau, "run", case_file, "--out", folder, "--no-progress", "--threads", str(threads),
                "--set", f"time.end_s={steps * dt!r}", "--set", "output.fields=false",
                "--set", "output.diagnostics_every_steps=1", "--set", setting]
     start = time.monotonic()
@@ -102,6 +109,8 @@ def main():
                         help="the --set of the reference runs (default: everything on)")
     parser.add_argument("--variant", default="scene.skip_unneeded_stages=true",
                         help="the --set of the runs compared with it (default: the scene's skips)")
+    parser.add_argument("--variant-launcher", default="",
+                        help="a command the variant runs under (e.g. 'mpiexec -n 2'; default: none)")
     args = parser.parse_args()
 
     rows = []
@@ -109,10 +118,11 @@ def main():
         for case in args.cases.split(","):
             case_file = os.path.join(root, "cases", case, "case.toml")
             results = {}
-            for name, setting in (("variant", args.variant), ("baseline", args.baseline)):
+            for name, setting, launcher in (("variant", args.variant, args.variant_launcher),
+                                            ("baseline", args.baseline, "")):
                 folder = os.path.join(scratch, f"{case}_{name}")
-                results[name] = run(args.rouleau, case_file, folder, args.steps, args.threads, setting)
-                print(f"{case}: {setting}: {results[name][0]:.1f} s", flush=True)
+                results[name] = run(args.rouleau, case_file, folder, args.steps, args.threads, setting, launcher)
+                print(f"{case}: {launcher + ' ' if launcher else ''}{setting}: {results[name][0]:.1f} s", flush=True)
             (wall_on, stages_on, last_on), (wall_off, stages_off, last_off) = results["variant"], results["baseline"]
             difference, column = largest_relative_difference(last_on, last_off)
             iterations = (last_off.get("gmres_iterations", ""), last_on.get("gmres_iterations", ""))
@@ -132,7 +142,7 @@ def main():
         writer.writeheader()
         writer.writerows(rows)
     print(f"\n{args.steps} steps per run, {args.threads} thread(s); baseline {args.baseline}, variant "
-          f"{args.variant}; wrote {args.out}\n")
+          f"{args.variant}{' under ' + args.variant_launcher if args.variant_launcher else ''}; wrote {args.out}\n")
     print("| case | stage | baseline (s) | variant (s) | speed-up |")
     print("|---|---|---|---|---|")
     for r in rows:

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "io/diagnostics_reader.hpp"
+#include "mpi_launcher.hpp"
 #include "reduced_aggregation.hpp"
 #include "run_rouleau.hpp"
 

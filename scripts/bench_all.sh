@@ -6,17 +6,19 @@
 #   2. the work–precision studies (scripts/work_precision.sh; bench/work_precision_cells);
 #   3. the stability map (bench/stability.py);
 #   4. the scaling study (bench/scaling.py);
-#   5. each paper scene with and without its skips (bench/scene_skips.py).
+#   5. each paper scene with and without its skips (bench/scene_skips.py);
+#   6. MPI (issue 10): the operator's scaling and model (bench/mpi_scaling.py), and whole
+#      scenes on 2 ranks against 1 (bench/scene_skips.py under mpiexec: bench/mpi_scenes_*.csv).
 # The CSVs and figures land under bench/, where the README reads them. Hours in all
 # (the stability map and the scenes dominate); a step can be picked by name:
-#   scripts/bench_all.sh [kernels] [work_precision] [stability] [scaling] [scenes]
+#   scripts/bench_all.sh [kernels] [work_precision] [stability] [scaling] [scenes] [mpi]
 set -euo pipefail
 root_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root_dir"
 scripts/build.sh
 build="${BUILD_DIR:-$root_dir/build}"
 steps=("$@")
-[ ${#steps[@]} -eq 0 ] && steps=(kernels work_precision stability scaling scenes)
+[ ${#steps[@]} -eq 0 ] && steps=(kernels work_precision stability scaling scenes mpi)
 all_threads=$(nproc)
 export OMP_PROC_BIND=spread OMP_PLACES=threads
 start=$(date +%s)
@@ -40,7 +42,20 @@ for step in "${steps[@]}"; do
     stability) /usr/bin/python3 bench/stability.py --rouleau "$build/rouleau" --out bench/stability.csv ;;
     scaling) /usr/bin/python3 bench/scaling.py --rouleau "$build/rouleau" --threads "$all_threads" --out bench/scaling.csv ;;
     scenes) /usr/bin/python3 bench/scene_skips.py --rouleau "$build/rouleau" --threads "$all_threads" ;;
-    *) echo "bench_all: unknown step '$step' (kernels, work_precision, stability, scaling, scenes)" >&2; exit 2 ;;
+    mpi)
+      /usr/bin/python3 bench/mpi_scaling.py
+      # One thread per rank against one rank on one thread; point-block Jacobi is the same
+      # on any rank count (the contraction needs ILU(0): ILU(0) per rank on 2).
+      for preconditioner in block_jacobi ilu0; do
+        cases=rbc_shear,aggregation
+        [ "$preconditioner" = ilu0 ] && cases=contraction
+        OMP_PROC_BIND=false /usr/bin/python3 bench/scene_skips.py --rouleau "$build/rouleau" --threads 1 --steps 5 \
+          --cases "$cases" --baseline "solver.preconditioner=\"$preconditioner\"" \
+          --variant "solver.preconditioner=\"$preconditioner\"" --variant-launcher "mpiexec -n 2 --oversubscribe" \
+          --out "bench/mpi_scenes_$preconditioner.csv"
+      done
+      ;;
+    *) echo "bench_all: unknown step '$step' (kernels, work_precision, stability, scaling, scenes, mpi)" >&2; exit 2 ;;
   esac
 done
 echo "bench_all: done in $(( $(date +%s) - start )) s"

@@ -1,5 +1,9 @@
 #include "parallel/mpi_session.hpp"
 
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
 #if ROULEAU_HAS_MPI
 #include <mpi.h>
 
@@ -50,7 +54,14 @@ void stop_all_ranks(int exit_code) {
   if (running_on_several_ranks()) MPI_Abort(MPI_COMM_WORLD, exit_code);
 }
 #else
-MpiSession::MpiSession() {}
+MpiSession::MpiSession() {
+  // Started by mpirun as several ranks, a build without MPI would run the whole case that
+  // many times into the same folder.
+  for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE"})
+    if (const char* value = std::getenv(variable); value && std::atoi(value) > 1)
+      throw std::runtime_error(std::string("rouleau: started as ") + value +
+                               " MPI ranks, but this build has no MPI (configure with -DROULEAU_MPI=ON)");
+}
 MpiSession::~MpiSession() {}
 bool running_on_several_ranks() { return false; }
 void let_the_first_rank_report() {}

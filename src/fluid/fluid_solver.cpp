@@ -176,8 +176,9 @@ FluidSolver::FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid,
       distributed_jacobi_ =
           std::make_unique<DistributedBlockJacobi>(distribution_->communicator(), distribution_->partition(), dirichlet);
     if (settings_.preconditioner == PreconditionerType::ilu0 || settings_.preconditioner == PreconditionerType::multigrid)
-      subdomain_ilu_ = std::make_unique<SubdomainIlu>(distribution_->communicator(), distribution_->partition(),
-                                                      local_mesh, dirichlet);
+      additive_schwarz_ = std::make_unique<AdditiveSchwarz>(
+          distribution_->communicator(), distribution_->partition(), local_mesh, dirichlet,
+          settings_.preconditioner == PreconditionerType::ilu0 ? SubdomainSolver::ilu0 : SubdomainSolver::multigrid);
   } else {
     if (settings_.preconditioner == PreconditionerType::ilu0 || settings_.preconditioner == PreconditionerType::multigrid) {
       matrix_graph_ = build_fluid_matrix_graph(mesh);
@@ -428,8 +429,8 @@ void FluidSolver::rebuild_preconditioner() {
     distributed_jacobi_->factor(operator_, state_);
     return;
   }
-  if (subdomain_ilu_) {
-    subdomain_ilu_->factor(operator_, state_);
+  if (additive_schwarz_) {
+    additive_schwarz_->factor(operator_, state_);
     return;
   }
   switch (settings_.preconditioner) {
@@ -452,7 +453,7 @@ void FluidSolver::rebuild_preconditioner() {
 
 const Preconditioner& FluidSolver::preconditioner() const {
   if (distributed_jacobi_) return *distributed_jacobi_;
-  if (subdomain_ilu_) return *subdomain_ilu_;
+  if (additive_schwarz_) return *additive_schwarz_;
   switch (settings_.preconditioner) {
     case PreconditionerType::block_jacobi: return block_jacobi_;
     case PreconditionerType::ilu0: return *ilu0_;

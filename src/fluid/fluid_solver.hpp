@@ -10,8 +10,8 @@
 // its operator completes every element sum across ranks (node sums), GMRES runs on the
 // owned unknowns with its reductions over all ranks, and the preconditioner is point-block
 // Jacobi across ranks (block_jacobi, the same iterates as one rank) or additive Schwarz
-// with ILU(0) per rank (SubdomainIlu, for ilu0 and multigrid: the answer agrees with one
-// rank's to the solver's tolerance). What the solver takes and gives in the global
+// with ILU(0) or the multigrid per rank (AdditiveSchwarz, for ilu0 and multigrid: the
+// answer agrees with one rank's to the solver's tolerance). What the solver takes and gives in the global
 // numbering says so; the rest is the rank's local vectors (state(), total_velocity()).
 #include <Kokkos_Core.hpp>
 #include <functional>
@@ -21,7 +21,7 @@
 #include "config/case_config.hpp"
 #include "distributed/distributed_fluid_operator.hpp"
 #include "distributed/fluid_distribution.hpp"
-#include "distributed/subdomain_ilu.hpp"
+#include "distributed/additive_schwarz.hpp"
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/fluid_operator.hpp"
 #include "fluid/fluid_matrix.hpp"
@@ -197,7 +197,7 @@ class FluidSolver {
   // Across ranks: the preconditioners on the owned unknowns, and scratch for the
   // Jacobian's lift of owned vectors to local ones and for Ŝ's global vectors.
   std::unique_ptr<DistributedBlockJacobi> distributed_jacobi_;
-  std::unique_ptr<SubdomainIlu> subdomain_ilu_;
+  std::unique_ptr<AdditiveSchwarz> additive_schwarz_;
   Vector lifted_direction_, lifted_action_, global_carrier_, global_action_;
   Kokkos::View<const int*> replicated_nodes_;  // set_replicated_nodes()
   Gmres gmres_;

@@ -1,13 +1,14 @@
 #pragma once
 // A preconditioner across ranks stronger than point-block Jacobi (issue 10): additive
-// Schwarz without overlap, each rank's subdomain solved inexactly by ILU(0),
-//   M⁻¹ = blockdiag_r (L_r U_r)⁻¹,   L_r U_r ≈ A_r,
+// Schwarz without overlap, each rank's subdomain solved inexactly by ILU(0) or by one cycle
+// of the aggregation multigrid of its owned block,
+//   M⁻¹ = blockdiag_r S_r⁻¹,   S_r⁻¹ ≈ A_r⁻¹,
 // A_r the Jacobian's owned × owned block as the rank's own elements assemble it (rows of
 // the shared nodes miss the other ranks' elements off the diagonal), its 4×4 diagonal
 // blocks completed by the other ranks' elements (summed at the owner through a NodeHalo of
 // 16 components), Dirichlet rows the identity's. On one rank it is the fluid solver's
-// ILU(0). No communication in apply(); the iterations grow with the rank count as the
-// subdomains shrink (the price of no coarse level).
+// ILU(0) or multigrid. No communication in apply(); the iterations grow with the rank count
+// as the subdomains shrink (the price of no coarse level across the ranks).
 #include <Kokkos_Core.hpp>
 #include <memory>
 #include <vector>
@@ -16,18 +17,22 @@
 #include "fluid/fluid_matrix.hpp"
 #include "fluid/fluid_operator.hpp"
 #include "parallel/element_partition.hpp"
+#include "solver/aggregation_multigrid.hpp"
 #include "solver/ilu0_preconditioner.hpp"
 #include "solver/linear_operator.hpp"
 
 namespace rouleau {
 
-class SubdomainIlu final : public Preconditioner {
+enum class SubdomainSolver { ilu0, multigrid };
+
+class AdditiveSchwarz final : public Preconditioner {
  public:
   // `local_mesh`: the rank's mesh (make_local_mesh); `dirichlet`: the owned constrained
-  // unknowns (local indices, owned_local_unknowns).
-  SubdomainIlu(const Communicator& communicator, const ElementPartition& partition, const FluidMesh& local_mesh,
-               const std::vector<int>& dirichlet);
-  ~SubdomainIlu() override;
+  // unknowns (local indices, owned_local_unknowns). The multigrid aggregates the owned
+  // nodes by their geometric strength within the rank (fluid_node_strength).
+  AdditiveSchwarz(const Communicator& communicator, const ElementPartition& partition, const FluidMesh& local_mesh,
+                  const std::vector<int>& dirichlet, SubdomainSolver solver = SubdomainSolver::ilu0);
+  ~AdditiveSchwarz() override;
   // The numeric factorization of the Jacobian of `local` (the rank's operator, without
   // Dirichlet rows, completing its element sums across ranks) at the rank's local `state`.
   void factor(const FluidOperator& local, const Kokkos::View<const double*>& state);
@@ -43,7 +48,8 @@ class SubdomainIlu final : public Preconditioner {
   Vector local_values_, owned_values_, local_blocks_;
   NodeHalo block_halo_;
   Kokkos::View<int*> dirichlet_;
-  std::unique_ptr<Ilu0Preconditioner> ilu_;
+  std::unique_ptr<Ilu0Preconditioner> ilu_;             // one of these
+  std::unique_ptr<AggregationMultigrid> multigrid_;
 };
 
 }  // namespace rouleau

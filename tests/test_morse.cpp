@@ -229,6 +229,105 @@ TEST(SurfaceInteraction, MatchesABruteForceDoubleLoop) {
   }
 }
 
+TEST(SurfaceInteraction, SharesOfTheRowsSumToTheWhole) {
+  // The four cubes of the test above (and the far one) split into the cells' shares of
+  // three ranks, [0, 2), [2, 2), [2, 5) (ImmersedCoupling::share_cells): the forces,
+  // energies and stiffness actions of the shares sum to the whole list's, to round-off,
+  // for full and half lists; the elastic forces and energies of CellPopulation::share_work
+  // the same.
+  Scene scene({{0, 0, 0}, {2.6, 0.2, 0}, {0.3, 3.4, 0.5}, {2.5, 2.6, -0.2}, {30, 0, 0}}, 3);
+  scene.jitter(5, 0.1);
+  const MorsePotential potential = test_potential();
+  const int nodes = scene.cells->num_nodes();
+  CellPopulation::NodeVectors moves("moves", nodes);
+  {
+    auto m = Kokkos::create_mirror_view(moves);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int n = 0; n < nodes; ++n)
+      for (int d = 0; d < 3; ++d) m(n, d) = unit(rng);
+    Kokkos::deep_copy(moves, m);
+  }
+  const std::vector<std::pair<int, int>> shares{{0, 2}, {2, 2}, {2, 5}};
+  // max |Σ shares − whole| / max |whole| over the nodes' vectors
+  auto relative_gap = [](const std::vector<Eigen::Vector3d>& whole, const std::vector<Eigen::Vector3d>& summed) {
+    double gap = 0.0, largest = 0.0;
+    for (std::size_t n = 0; n < whole.size(); ++n) {
+      gap = std::max(gap, (whole[n] - summed[n]).norm());
+      largest = std::max(largest, whole[n].norm());
+    }
+    return gap / largest;
+  };
+  auto to_vectors = [&](const CellPopulation::NodeVectors& v) {
+    const auto h = host_copy(v);
+    std::vector<Eigen::Vector3d> result(nodes);
+    for (int n = 0; n < nodes; ++n) result[n] = Eigen::Vector3d(h(n, 0), h(n, 1), h(n, 2));
+    return result;
+  };
+  for (const bool half : {false, true}) {
+    SurfaceInteraction whole = make_interaction(*scene.cells, potential, 0.3, half);
+    const double whole_energy = whole.compute_forces_and_energy();
+    const std::vector<Eigen::Vector3d> whole_forces = node_forces(*scene.cells, whole);
+    whole.linearize();
+    CellPopulation::NodeVectors change("change", nodes);
+    whole.force_change(moves, change);
+    const std::vector<Eigen::Vector3d> whole_change = to_vectors(change);
+
+    double energy = 0.0;
+    std::vector<Eigen::Vector3d> forces(nodes, Eigen::Vector3d::Zero()), changes(nodes, Eigen::Vector3d::Zero());
+    for (const auto& [first, end] : shares) {
+      SurfaceInteraction share = make_interaction(*scene.cells, potential, 0.3, half);
+      share.share_rows(first, end);
+      energy += share.compute_forces_and_energy();
+      const std::vector<Eigen::Vector3d> f = node_forces(*scene.cells, share);
+      share.linearize();
+      share.force_change(moves, change);
+      const std::vector<Eigen::Vector3d> k = to_vectors(change);
+      for (int n = 0; n < nodes; ++n) forces[n] += f[n], changes[n] += k[n];
+    }
+    std::printf("  %s list: shares against the whole, forces %.1e, stiffness action %.1e, energy %.1e\n",
+                half ? "half" : "full", relative_gap(whole_forces, forces), relative_gap(whole_change, changes),
+                std::fabs(energy / whole_energy - 1.0));
+    EXPECT_LT(relative_gap(whole_forces, forces), 1e-14);
+    EXPECT_LT(relative_gap(whole_change, changes), 1e-14);
+    EXPECT_NEAR(energy / whole_energy, 1.0, 1e-14);
+  }
+  // The elastic work: the same cubes with a neo-Hookean material, two of them with area
+  // and volume constraints, strained by a jitter.
+  std::vector<PlacedCell> placed(scene.meshes.size());
+  for (std::size_t c = 0; c < placed.size(); ++c) {
+    placed[c].mesh = &scene.meshes[c];
+    placed[c].center = {3.0 * c, 0.0, 0.0};
+    placed[c].material = NeoHookeanMaterial::from_moduli(10.0, 50.0);
+    placed[c].area_modulus = c % 2 ? 5.0 : 0.0;
+    placed[c].volume_modulus = c % 2 ? 20.0 : 0.0;
+  }
+  CellPopulation elastic(placed);
+  {
+    auto x = host_copy(elastic.positions());
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> u(-0.05, 0.05);
+    for (std::size_t n = 0; n < x.extent(0); ++n)
+      for (int i = 0; i < 3; ++i) x(n, i) += u(rng);
+    Kokkos::deep_copy(elastic.positions(), x);
+  }
+  const double whole_energy = elastic.compute_internal_forces_and_energy();
+  const std::vector<Eigen::Vector3d> whole_forces = to_vectors(elastic.internal_forces());
+  double energy = 0.0;
+  std::vector<Eigen::Vector3d> forces(nodes, Eigen::Vector3d::Zero());
+  for (const auto& [first, end] : shares) {
+    elastic.share_work(first, end);
+    energy += elastic.compute_internal_forces_and_energy();
+    const std::vector<Eigen::Vector3d> f = to_vectors(elastic.internal_forces());
+    for (int n = 0; n < nodes; ++n) forces[n] += f[n];
+  }
+  std::printf("  elastic: shares against the whole, forces %.1e, energy %.1e\n", relative_gap(whole_forces, forces),
+              std::fabs(energy / whole_energy - 1.0));
+  EXPECT_LT(relative_gap(whole_forces, forces), 1e-14);
+  EXPECT_NEAR(energy / whole_energy, 1.0, 1e-14);
+  EXPECT_THROW(elastic.share_work(3, 6), std::invalid_argument);
+}
+
 TEST(SurfaceInteraction, ObeysNewtonsThirdLaw) {
   Scene scene({{0, 0, 0}, {2.5, 0.3, 0.1}}, 7);
   scene.jitter(9, 0.1);

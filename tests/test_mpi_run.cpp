@@ -1,5 +1,6 @@
 // `mpirun -np 2 rouleau run` (issue 10) through the real executable: the fluid split
-// across two ranks, every cell on both. Compared with the same case on one rank:
+// across two ranks, every cell on both, each rank computing a share of them. Compared with
+// the same case on one rank:
 //   - point-block Jacobi GMRES takes the same iterates on any rank count: the runs differ
 //     only as the sums meet in another order, which a change of thread count on one rank
 //     does too; each solve passes that round-off on at the level of its stopping test, so
@@ -36,10 +37,10 @@ TEST(MpiRun, TwoRanksRepeatTheOneRankRunToRoundOff) {
   if (!built_with_mpi()) GTEST_SKIP() << "a build without MPI";
   // The reduced two-cell aggregation (semi-implicit coupling, Morse forces), 4 steps, one
   // thread per rank: the cells' stiffness acts inside every GMRES iteration on the fluid
-  // replicated from both ranks. Measured (fluid state, max |a − b| / max |a|): 5.5e-9 for
-  // two ranks against one, 5.8e-9 for two threads against one; bound 1e-7, a hundred
-  // times the solvers' 1e-9 (as test_restart bounds a change of thread count by ten times
-  // its 1e-8).
+  // replicated from both ranks, each rank computing one of the two cells. Measured (fluid
+  // state, max |a − b| / max |a|): 3.3e-9 for two ranks against one, 5.8e-9 for two
+  // threads against one; bound 1e-7, a hundred times the solvers' 1e-9 (as test_restart
+  // bounds a change of thread count by ten times its 1e-8).
   const std::string one = fresh_output_dir("mpi_one_rank"), two = fresh_output_dir("mpi_two_ranks");
   const Outcome single = run_rouleau(reduced_aggregation(one, 1, 4) + block_jacobi);
   ASSERT_EQ(single.exit_code, 0) << single.err;
@@ -54,9 +55,10 @@ TEST(MpiRun, TwoRanksRepeatTheOneRankRunToRoundOff) {
   const auto rows_two = rouleau::read_diagnostics(two + "/diagnostics.csv");
   ASSERT_EQ(rows_one.size(), 4u);
   ASSERT_EQ(rows_two.size(), 4u);
+  // The GMRES counts are not compared: block Jacobi's GMRES creeps near its 6e-10 floor
+  // here, where round-off moves the step that crosses 1e-9 (measured per step: 138, 137,
+  // 123, 114 on one thread, 140, 152, 123, 115 on two, 135, 144, ... on two ranks).
   for (std::size_t r = 0; r < rows_one.size(); ++r) {
-    // The same iterates: the counts differ at most where the residual meets the target.
-    EXPECT_NEAR(rows_one[r].at("gmres_iterations"), rows_two[r].at("gmres_iterations"), 1.0) << "step " << r + 1;
     EXPECT_NEAR(rows_one[r].at("elastic_energy_pN_um"), rows_two[r].at("elastic_energy_pN_um"),
                 1e-7 * std::fabs(rows_one[r].at("elastic_energy_pN_um")));
   }

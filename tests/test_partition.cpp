@@ -20,6 +20,7 @@
 #include "mesh/fluid_mesh.hpp"
 #include "parallel/element_partition.hpp"
 #include "partitioned_meshes.hpp"
+#include "run/simulation.hpp"
 
 namespace rouleau {
 namespace {
@@ -213,6 +214,30 @@ TEST(ElementPartition, RankLocalOperatorsSumToTheGlobalOperator) {
       EXPECT_LT(std::sqrt(difference / norm), 1e-13);
     }
   }
+  }
+}
+
+TEST(CellShare, ContiguousCellsOfAboutEqualNodesCoverEveryCellOnce) {
+  // Cells of 10 to 400 nodes on 1 to 7 ranks (more ranks than cells too): each rank's
+  // cells follow the previous rank's, all together every cell once, and a rank's nodes
+  // differ from N/P by less than the largest cell.
+  std::vector<int> sizes{400, 10, 250, 250, 37, 120, 400, 90};
+  std::vector<int> first{0};
+  for (int size : sizes) first.push_back(first.back() + size);
+  const int nodes = first.back();
+  first.pop_back();
+  for (int ranks = 1; ranks <= 7; ++ranks) {
+    int next = 0;
+    for (int r = 0; r < ranks; ++r) {
+      const auto [begin, end] = cell_share(first, nodes, r, ranks);
+      EXPECT_EQ(begin, next) << ranks << " ranks, rank " << r;
+      EXPECT_LE(begin, end);
+      next = end;
+      const int owned = (end < static_cast<int>(first.size()) ? first[end] : nodes) -
+                        (begin < static_cast<int>(first.size()) ? first[begin] : nodes);
+      EXPECT_LT(std::abs(owned - nodes / ranks), 400 + 1) << ranks << " ranks, rank " << r;
+    }
+    EXPECT_EQ(next, static_cast<int>(sizes.size())) << ranks << " ranks";
   }
 }
 

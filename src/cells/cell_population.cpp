@@ -63,6 +63,8 @@ BasicCellPopulation<ExecSpace>::BasicCellPopulation(const std::vector<PlacedCell
     const PlacedCell& cell = cells[c];
     const CellMesh& mesh = *cell.mesh;
     const int offset = static_cast<int>(node);
+    cell_element_offsets_.push_back(static_cast<int>(element));
+    cell_triangle_offsets_.push_back(static_cast<int>(triangle));
     first_node(c) = offset;
     cell_first_node_host_.push_back(offset);
     cell_node_count_host_.push_back(static_cast<int>(mesh.nodes.size()));
@@ -92,6 +94,9 @@ BasicCellPopulation<ExecSpace>::BasicCellPopulation(const std::vector<PlacedCell
       triangle_cell(triangle++) = c;
     }
   }
+  cell_element_offsets_.push_back(static_cast<int>(element));
+  cell_triangle_offsets_.push_back(static_cast<int>(triangle));
+  end_shared_cell_ = num_cells_;
   Kokkos::deep_copy(reference_positions_, x);
   Kokkos::deep_copy(positions_, x);
   Kokkos::deep_copy(node_cell_, node_cell);
@@ -152,7 +157,9 @@ double BasicCellPopulation<ExecSpace>::run_force_kernel(const char* label) {
   force_scatter_.reset();
   NeoHookeanForceFunctor<Scatter> forces{positions_,    element_nodes_, inverse_edge_matrix_, reference_volume_,
                                          element_cell_, materials_,     force_scatter_};
-  const Kokkos::RangePolicy<ExecSpace, Tag> policy(0, num_elements());
+  // This rank's cells' elements (share_work; every element by default).
+  const Kokkos::RangePolicy<ExecSpace, Tag> policy(cell_element_offsets_[first_shared_cell_],
+                                                   cell_element_offsets_[end_shared_cell_]);
   double energy = 0.0;
   if constexpr (std::is_same_v<Tag, ForcesAndEnergy>)
     Kokkos::parallel_reduce(label, policy, forces, energy);
@@ -171,7 +178,7 @@ double BasicCellPopulation<ExecSpace>::add_global_constraint_forces() {
   compute_surface_sums(positions_);
   GlobalConstraintFunctor multipliers{cell_sums_,     reference_areas_, reference_volumes_, area_moduli_,
                                       volume_moduli_, area_tensions_,   volume_pressures_};
-  const Kokkos::RangePolicy<ExecSpace, Tag> cells(0, num_cells_);
+  const Kokkos::RangePolicy<ExecSpace, Tag> cells(first_shared_cell_, end_shared_cell_);
   double energy = 0.0;
   if constexpr (std::is_same_v<Tag, ForcesAndEnergy>) {
     Kokkos::parallel_reduce("rouleau::CellPopulation::constraint_multipliers_and_energy", cells, multipliers, energy);
@@ -182,8 +189,20 @@ double BasicCellPopulation<ExecSpace>::add_global_constraint_forces() {
   GlobalConstraintForceFunctor<Scatter> forces{positions_,     surface_triangles_, triangle_cell_, cell_first_node_,
                                                area_tensions_, volume_pressures_,  force_scatter_};
   Kokkos::parallel_for("rouleau::CellPopulation::global_constraint_forces",
-                       Kokkos::RangePolicy<ExecSpace>(0, num_surface_triangles()), forces);
+                       Kokkos::RangePolicy<ExecSpace>(cell_triangle_offsets_[first_shared_cell_],
+                                                      cell_triangle_offsets_[end_shared_cell_]),
+                       forces);
   return energy;
+}
+
+template <class ExecSpace>
+void BasicCellPopulation<ExecSpace>::share_work(const int first_cell, const int end_cell) {
+  if (first_cell < 0 || end_cell > num_cells_ || first_cell > end_cell)
+    throw std::invalid_argument("rouleau::CellPopulation::share_work: cells [" + std::to_string(first_cell) + ", " +
+                                std::to_string(end_cell) + ") of " + std::to_string(num_cells_));
+  first_shared_cell_ = first_cell;
+  end_shared_cell_ = end_cell;
+  work_shared_ = true;
 }
 
 template <class ExecSpace>

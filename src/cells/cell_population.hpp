@@ -95,6 +95,13 @@ class BasicCellPopulation {
   void compute_internal_forces();
   // The same, returning the total elastic energy Σ_e V0 W(F_e) + E_A + E_V [pN·μm].
   double compute_internal_forces_and_energy();
+  // This rank's share of the elastic work when the cells are on every rank (issue 10):
+  // the two calls above then give the forces and energy of cells [first_cell, end_cell)
+  // alone (their elements and constraints; zero at the other cells' nodes), and the shares
+  // of all ranks sum to the whole. Every cell by default.
+  void share_work(int first_cell, int end_cell);
+  // Whether share_work() was called: the forces and energies are then this rank's share.
+  bool work_is_shared() const { return work_shared_; }
 
   // The global area and volume constraints (kernels/global_constraints.hpp): whether any
   // cell has one, A0 and V0 per cell, the tensions T_c [pN/μm] and pressures P_c [Pa] of
@@ -161,6 +168,10 @@ class BasicCellPopulation {
   double constraint_energy_ = 0.0;
   NodeVectors cell_origins_;  // the point each cell's surface sums are taken from
   std::vector<int> cell_first_node_host_, cell_node_count_host_;
+  // Where each cell's elements and outer-surface triangles start (and end: num_cells + 1).
+  std::vector<int> cell_element_offsets_, cell_triangle_offsets_;
+  int first_shared_cell_ = 0, end_shared_cell_ = 0;  // share_work()
+  bool work_shared_ = false;
   // Persistent scatter buffers (per-thread copies on CPUs, the atomic target on GPUs).
   mutable Scatter force_scatter_;
   mutable CellSumsScatter cell_sums_scatter_;

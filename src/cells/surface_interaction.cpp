@@ -185,6 +185,14 @@ bool BasicSurfaceInteraction<ExecSpace>::list_is_stale() const {
 }
 
 template <class ExecSpace>
+void BasicSurfaceInteraction<ExecSpace>::share_rows(const int first_cell, const int end_cell) {
+  first_row_cell_ = first_cell;
+  end_row_cell_ = end_cell;
+  built_ = false;  // the next force evaluation builds the list with these rows
+  linearized_ = false;
+}
+
+template <class ExecSpace>
 void BasicSurfaceInteraction<ExecSpace>::rebuild() {
   ProfilingRegion region("rouleau::SurfaceInteraction::rebuild");
   const int n_points = num_points();
@@ -307,6 +315,11 @@ void BasicSurfaceInteraction<ExecSpace>::rebuild() {
   const double radius_squared = search_radius_ * search_radius_;
   auto offsets = neighbor_offsets_;
   const bool half = half_list_;
+  // The rows this rank builds (share_rows): points of its cells.
+  const int first_row_cell = first_row_cell_, end_row_cell = end_row_cell_ < 0 ? n_cells : end_row_cell_;
+  auto builds_row = KOKKOS_LAMBDA(const int i) {
+    return point_active(i) && point_cell(i) >= first_row_cell && point_cell(i) < end_row_cell;
+  };
   auto count_row = KOKKOS_LAMBDA(const int i, int& count) {
     auto visit = [&](int) { ++count; };
     if (half)
@@ -320,7 +333,7 @@ void BasicSurfaceInteraction<ExecSpace>::rebuild() {
       "rouleau::SurfaceInteraction::count_neighbors", Kokkos::RangePolicy<ExecSpace>(0, n_points + 1),
       KOKKOS_LAMBDA(const int i) {
         int count = 0;
-        if (i < n_points && point_active(i)) count_row(i, count);
+        if (i < n_points && builds_row(i)) count_row(i, count);
         offsets(i) = count;
       });
   int entries = 0;
@@ -339,7 +352,7 @@ void BasicSurfaceInteraction<ExecSpace>::rebuild() {
   Kokkos::parallel_for(
       "rouleau::SurfaceInteraction::fill_neighbors", Kokkos::RangePolicy<ExecSpace>(0, n_points),
       KOKKOS_LAMBDA(const int i) {
-        if (!point_active(i)) return;
+        if (!builds_row(i)) return;
         int slot = offsets(i);
         auto visit = [&](int j) { neighbors(slot++) = j; };
         if (half)

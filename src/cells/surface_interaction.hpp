@@ -88,6 +88,13 @@ class BasicSurfaceInteraction {
   // (compute_forces() calls it when the list is stale).
   void rebuild();
 
+  // This rank's share of the pair work when the cells are on every rank (issue 10): the
+  // list's rows are the points of cells [first_cell, end_cell) alone (their columns any
+  // point), so the forces, the energy and the stiffness are those of the pairs rooted at
+  // them, and the shares of all ranks sum to the whole. The next force evaluation builds
+  // the list anew. Every cell by default.
+  void share_rows(int first_cell, int end_cell);
+
  private:
   template <class Tag>
   double run_pair_kernel(const char* label);
@@ -112,6 +119,7 @@ class BasicSurfaceInteraction {
   Kokkos::View<int*> neighbor_offsets_, neighbors_;
   BinGrid grid_{};
   int list_entries_ = 0, rebuilds_ = 0, active_cells_ = 0;
+  int first_row_cell_ = 0, end_row_cell_ = -1;  // share_rows(); −1: every cell
   bool built_ = false;
   using Scatter = Kokkos::Experimental::ScatterView<double* [3], typename PointVectors::array_layout,
                                                     typename ExecSpace::device_type>;

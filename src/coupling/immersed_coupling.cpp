@@ -100,7 +100,7 @@ ImmersedCoupling::ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, c
     stiffness_ = std::make_unique<CellStiffness>(
         rkpm_, population_.positions(),
         [this](const NodeVectors& out) {
-          differenced_forces(population_, wall_.get(), stiffness_scratch_, out);
+          differenced_forces(population_, wall_.get(), stiffness_scratch_, out, first_node_, end_node_);
         },
         interaction_, fluid.scales());
   }
@@ -124,6 +124,7 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
   if (wall_)
     times.time(wall_stage, [&] {
       wall_->compute_forces(population_.positions(), population_.surface_area_weights(), wall_forces_);
+      if (shares_) keep_nodes(wall_forces_, first_node_, end_node_);
     });
   times.time(runs_inertia_ ? inertia_stage : elastic_stage, [&] {
     FsiForceFunctor<NodeVectors, Kokkos::View<double*>> sum{population_.internal_forces(),
@@ -148,7 +149,9 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
          << node_vector_text(population_.positions(), non_finite) << " um";
     throw std::runtime_error(what.str());
   }
-  // 2. spread, with the supports at x^n (also those of the interpolation below)
+  // 2. spread, with the supports at x^n (also those of the interpolation below); across
+  // ranks the cells read the fluid at their supports alone, and a share's forces are
+  // summed there over the ranks.
   times.time(spread_stage, [&] {
     try {
       rkpm_.update(population_.positions());
@@ -160,11 +163,11 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
            << error.count() << " cell nodes outside in all)";
       throw std::runtime_error(what.str());
     }
+    if (fluid_.distribution()) fluid_.set_replicated_nodes(rkpm_.support_nodes());
     Kokkos::deep_copy(fluid_load_, 0.0);
     rkpm_.spread(fsi_forces_, fluid_load_, fluid_unknowns_per_node);
+    if (shares_) fluid_.sum_over_ranks(fluid_load_);
     fluid_.set_immersed_forces(fluid_load_);
-    // Across ranks the cells read the fluid at their supports alone.
-    if (fluid_.distribution()) fluid_.set_replicated_nodes(rkpm_.support_nodes());
   });
   report.corrected_points = rkpm_.corrected_points();
   // 3. the fluid
@@ -196,6 +199,7 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
       add_node_vectors(fsi_forces_, force_change_);
       Kokkos::deep_copy(fluid_load_, 0.0);
       rkpm_.spread(fsi_forces_, fluid_load_, fluid_unknowns_per_node);
+      if (shares_) fluid_.sum_over_ranks(fluid_load_);
       fluid_.set_immersed_forces(fluid_load_);
     });
   // 4. interpolate
@@ -217,7 +221,30 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
   // interpolation and spreading are transposes of each other).
   report.power_spread = dot(fluid_load_, global_state) * fluid_.scales().velocity;
   report.power_interpolated = dot(fsi_forces_, population_.velocities());
+  if (shares_) report.power_interpolated = fluid_.distribution()->communicator().sum(report.power_interpolated);
   return report;
+}
+
+void ImmersedCoupling::share_cells(const int first_cell, const int end_cell) {
+  if (!fluid_.distribution())
+    throw std::logic_error("rouleau::ImmersedCoupling::share_cells: the fluid is on one rank");
+  population_.share_work(first_cell, end_cell);
+  if (interaction_) interaction_->share_rows(first_cell, end_cell);
+  const std::vector<int>& first = population_.cell_first_node();
+  first_node_ = first_cell < population_.num_cells() ? first[first_cell] : population_.num_nodes();
+  end_node_ = end_cell < population_.num_cells() ? first[end_cell] : population_.num_nodes();
+  // The inertia and buoyancy forces of this rank's nodes alone.
+  if (excess_mass_.extent(0) > 0) {
+    auto mass = excess_mass_;
+    const int first_node = first_node_, end_node = end_node_;
+    Kokkos::parallel_for(
+        "rouleau::ImmersedCoupling::share_excess_mass", Kokkos::RangePolicy<ExecSpace>(0, mass.extent(0)),
+        KOKKOS_LAMBDA(const int n) {
+          if (n < first_node || n >= end_node) mass(n) = 0.0;
+        });
+  }
+  shares_ = true;
+  fluid_.set_immersed_shares(true);
 }
 
 void ImmersedCoupling::save_state(CheckpointData& data) const {

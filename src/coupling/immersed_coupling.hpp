@@ -66,6 +66,14 @@ class ImmersedCoupling {
   void save_state(CheckpointData& data) const;
   void restore_state(const CheckpointData& data);
 
+  // With the fluid split across ranks and every cell on every rank (issue 10): this rank
+  // computes the forces of cells [first_cell, end_cell) (their elastic, wall and inertia
+  // forces, and the Morse pairs rooted at their surface points), spreads them, and the
+  // fluid sums the ranks' spread forces (and Ŝ's actions) at the cells' supports. The
+  // positions stay the same on every rank: each moves every cell with the whole fluid's
+  // velocity. The reports' power_interpolated is then summed over the ranks.
+  void share_cells(int first_cell, int end_cell);
+
   bool runs_interaction() const { return interaction_ != nullptr; }
   bool runs_inertia() const { return runs_inertia_; }
   bool runs_wall_repulsion() const { return wall_ != nullptr; }
@@ -99,6 +107,8 @@ class ImmersedCoupling {
   Kokkos::View<double*> cell_carrier_;     // what the cells move with, global (scaled)
   Kokkos::View<double*> global_state_;     // the fluid's state, global, when it is not that
   std::unique_ptr<CellStiffness> stiffness_;  // the semi-implicit coupling's K, or null
+  bool shares_ = false;                       // share_cells()
+  int first_node_ = 0, end_node_ = -1;        // this rank's cells' nodes (share_cells)
   NodeVectors stiffness_scratch_;           // interaction or wall forces while K is differenced
   NodeVectors force_change_;                // K Δt I u^{n+1} [pN] of the semi-implicit step
 };

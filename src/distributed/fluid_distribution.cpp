@@ -44,6 +44,16 @@ void gather_owned_at(const Kokkos::View<int*>& owned_local, const Kokkos::View<c
       });
 }
 
+// buffer(4k + c) = global(4 nodes(k) + c)
+void gather_at(const Kokkos::View<const int*>& nodes, const ConstVector& global, const Vector& buffer) {
+  Kokkos::parallel_for(
+      "rouleau::FluidDistribution::gather_at", Kokkos::RangePolicy<ExecSpace>(0, nodes.extent(0)),
+      KOKKOS_LAMBDA(const int k) {
+        for (int c = 0; c < fluid_unknowns_per_node; ++c)
+          buffer(fluid_unknowns_per_node * k + c) = global(fluid_unknowns_per_node * nodes(k) + c);
+      });
+}
+
 // global(4 nodes(k) + c) = buffer(4k + c)
 void scatter_to_nodes(const Kokkos::View<const int*>& nodes, const ConstVector& buffer, const Vector& global) {
   Kokkos::parallel_for(
@@ -99,6 +109,16 @@ void FluidDistribution::replicate(const ConstVector& local, const Vector& global
     node_buffer_ = Vector("rouleau::FluidDistribution::node_buffer", fluid_unknowns_per_node * count);
   const Vector buffer = Kokkos::subview(node_buffer_, std::make_pair(0, fluid_unknowns_per_node * count));
   gather_owned_at(owned_local_, nodes, local, buffer);
+  sum_over_ranks(buffer);
+  scatter_to_nodes(nodes, buffer, global);
+}
+
+void FluidDistribution::sum_at_nodes(const Vector& global, const Kokkos::View<const int*>& nodes) const {
+  const int count = static_cast<int>(nodes.extent(0));
+  if (static_cast<int>(node_buffer_.extent(0)) < fluid_unknowns_per_node * count)
+    node_buffer_ = Vector("rouleau::FluidDistribution::node_buffer", fluid_unknowns_per_node * count);
+  const Vector buffer = Kokkos::subview(node_buffer_, std::make_pair(0, fluid_unknowns_per_node * count));
+  gather_at(nodes, global, buffer);
   sum_over_ranks(buffer);
   scatter_to_nodes(nodes, buffer, global);
 }

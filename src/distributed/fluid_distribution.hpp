@@ -58,6 +58,10 @@ class FluidDistribution {
   // The same at the global dof nodes `nodes` alone (the cells' supports): one
   // MPI_Allreduce of 4 values per node; the other entries of `global` are left as they are.
   void replicate(const ConstVector& local, const Vector& global, const Kokkos::View<const int*>& nodes) const;
+  // global ← Σ_ranks global at the global dof nodes `nodes` (the cells' supports), where
+  // each rank holds its share of a sum (the forces its cells spread); the other entries
+  // are left as they are. One MPI_Allreduce of 4 values per node.
+  void sum_at_nodes(const Vector& global, const Kokkos::View<const int*>& nodes) const;
   // local ← global at every local dof node, owned and copies.
   void localize(const ConstVector& global, const Vector& local) const;
   // The local dof node of a global one, or −1 when the rank holds none.

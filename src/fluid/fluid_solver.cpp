@@ -7,6 +7,7 @@
 #include <KokkosBlas1_update.hpp>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "fluid/fluid_element_types.hpp"
 #include "run/profiling_region.hpp"
@@ -210,6 +211,13 @@ void FluidSolver::gather_global(const ConstVector& local, const Vector& global) 
     Kokkos::deep_copy(global, local);
 }
 
+void FluidSolver::sum_over_ranks(const Vector& global) const {
+  if (!distribution_) return;
+  if (replicated_nodes_.extent(0) == 0)
+    throw std::logic_error("rouleau::FluidSolver::sum_over_ranks: no replicated nodes (set_replicated_nodes)");
+  distribution_->sum_at_nodes(global, replicated_nodes_);
+}
+
 std::vector<double> FluidSolver::global_values(const ConstVector& local) const {
   if (!distribution_) return to_flat_vector(local);
   Vector global("rouleau::FluidSolver::global_values", num_global_unknowns_);
@@ -409,6 +417,7 @@ void FluidSolver::add_immersed_stiffness(const ConstVector& x, const Vector& y, 
   if (distribution_) {
     gather_global(carrier, global_carrier_);
     immersed_stiffness_->apply(global_carrier_, global_action_);
+    if (immersed_shares_) sum_over_ranks(global_action_);
     distribution_->localize(global_action_, stiffness_action_);
   } else {
     immersed_stiffness_->apply(carrier, stiffness_action_);

@@ -121,6 +121,11 @@ class FluidSolver {
   // alone, and leave the other entries of their global vectors as they were. Empty (the
   // default): every node.
   void set_replicated_nodes(const Kokkos::View<const int*>& nodes) { replicated_nodes_ = nodes; }
+  // Across ranks, when each rank computes a share of the cells (ImmersedCoupling::
+  // share_cells): global ← Σ_ranks global at the replicated nodes, for the forces the
+  // rank's cells spread; and Ŝ's action is then summed the same way inside the solve.
+  void sum_over_ranks(const Vector& global) const;
+  void set_immersed_shares(bool shares) { immersed_shares_ = shares; }
   // The ranks, or null on one rank.
   const FluidDistribution* distribution() const { return distribution_; }
 
@@ -200,6 +205,7 @@ class FluidSolver {
   std::unique_ptr<AdditiveSchwarz> additive_schwarz_;
   Vector lifted_direction_, lifted_action_, global_carrier_, global_action_;
   Kokkos::View<const int*> replicated_nodes_;  // set_replicated_nodes()
+  bool immersed_shares_ = false;               // set_immersed_shares()
   Gmres gmres_;
   bool preconditioner_current_ = false;  // Stokes: J is constant while dt is
   double last_mass_coefficient_ = -1.0;

@@ -201,7 +201,7 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
   if (cells.population) output_meshes.push_back(cells.population->mesh_description());
   const Provenance provenance = build_provenance(provenance_entries);
   // The volume drift is measured from the cells as placed: before a restart moves them.
-  const CellDiagnostics cell_diagnostics(cells, config);
+  const CellDiagnostics cell_diagnostics(cells, config, &ranks);
   const FoundCheckpoint* restart = options.restart.get();
   if (restart) {
     check_checkpoint_meshes(*restart, provenance_entries);
@@ -279,6 +279,9 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
       if (cells.population) {
         cells.population->compute_internal_forces();
         cells.population->copy_fields_to_host(cell_fields);
+        // Each rank's share of the cells' forces: the fields are their sums.
+        const bool shared = cells.population->work_is_shared();
+        if (shared) ranks.sum(cell_fields.internal_force.data(), static_cast<int>(cell_fields.internal_force.size()));
         nodal.push_back({FieldView{"displacement_um", 3, cell_fields.displacement.data()},
                          FieldView{"velocity_um_s", 3, cell_fields.velocity.data()},
                          FieldView{"internal_force_pN", 3, cell_fields.internal_force.data()},
@@ -287,6 +290,7 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
           cells.interaction->compute_forces();
           cells.interaction->copy_forces_to_nodes(node_interaction_forces);
           Kokkos::deep_copy(host_interaction_forces, node_interaction_forces);
+          if (shared) ranks.sum(host_interaction_forces.data(), static_cast<int>(host_interaction_forces.size()));
           nodal.back().push_back(FieldView{"interaction_force_pN", 3, host_interaction_forces.data()});
         }
         moved.push_back(cell_fields.positions.data());

@@ -86,7 +86,8 @@ std::vector<double> FluidDiagnostics::row(const FluidSolver& solver, int step, c
   return values;
 }
 
-CellDiagnostics::CellDiagnostics(const CaseCells& cells, const CaseConfig& config) {
+CellDiagnostics::CellDiagnostics(const CaseCells& cells, const CaseConfig& config, const Communicator* ranks)
+    : ranks_(ranks) {
   if (cells.population)
     for (const CellMeasures& m : cells.population->measures()) initial_volumes_.push_back(m.volume);
   if (cells.population && cells.population->num_cells() > 1 &&
@@ -113,8 +114,11 @@ std::vector<std::string> CellDiagnostics::columns() const {
 }
 
 std::vector<double> CellDiagnostics::row(const CaseCells& cells) const {
-  const double elastic = cells.population->compute_internal_forces_and_energy();
-  const double interaction = cells.interaction ? cells.interaction->compute_forces_and_energy() : 0.0;
+  double energies[2] = {cells.population->compute_internal_forces_and_energy(),
+                        cells.interaction ? cells.interaction->compute_forces_and_energy() : 0.0};
+  // Each rank's share of the cells' work: the energies are the sums of the shares.
+  if (ranks_ && cells.population->work_is_shared()) ranks_->sum(energies, 2);
+  const double elastic = energies[0], interaction = energies[1];
   const double rebuilds = cells.interaction ? cells.interaction->rebuild_count() : 0.0;
   double largest_change = 0.0;
   const std::vector<CellMeasures> now = cells.population->measures();

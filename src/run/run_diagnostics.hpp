@@ -14,6 +14,7 @@
 #include "coupling/immersed_coupling.hpp"
 #include "fluid/flow_rates.hpp"
 #include "fluid/fluid_solver.hpp"
+#include "parallel/communicator.hpp"
 #include "run/stage_times.hpp"
 
 namespace rouleau {
@@ -46,13 +47,16 @@ class FluidDiagnostics {
 // length r0).
 class CellDiagnostics {
  public:
-  CellDiagnostics(const CaseCells& cells, const CaseConfig& config);
+  // `ranks`: when the cells' work is shared across them (CellPopulation::share_work), the
+  // energies are summed over the ranks; null on one rank.
+  CellDiagnostics(const CaseCells& cells, const CaseConfig& config, const Communicator* ranks = nullptr);
   std::vector<std::string> columns() const;
   std::vector<double> row(const CaseCells& cells) const;
 
  private:
   std::vector<double> initial_volumes_;
   std::unique_ptr<CellGaps> gaps_;
+  const Communicator* ranks_;
 };
 
 class CouplingDiagnostics {

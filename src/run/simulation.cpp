@@ -24,6 +24,18 @@ FluidMesh make_case_mesh(const CaseConfig& config, const std::string& mesh_cache
   return make_box_mesh(domain.lower, domain.upper, domain.elements, domain.wall_grading, periodic);
 }
 
+std::pair<int, int> cell_share(const std::vector<int>& cell_first_node, const int num_nodes, const int rank,
+                               const int ranks) {
+  // Cell c goes to rank ⌊first_node(c) · P / N⌋: contiguous cells, about N/P nodes each.
+  const int cells = static_cast<int>(cell_first_node.size());
+  auto first_cell_of = [&](const int r) {
+    int c = 0;
+    while (c < cells && static_cast<long long>(cell_first_node[c]) * ranks < static_cast<long long>(r) * num_nodes) ++c;
+    return c;
+  };
+  return {first_cell_of(rank), first_cell_of(rank + 1)};
+}
+
 Simulation::Simulation(const CaseConfig& config, const std::string& mesh_cache_dir, const Communicator* ranks)
     : config_(config), derived_(derive_quantities(config)) {
   const bool several_ranks = ranks && ranks->size() > 1;
@@ -51,6 +63,11 @@ Simulation::Simulation(const CaseConfig& config, const std::string& mesh_cache_d
     coupling_ = times_.time("coupling setup", [&] { return std::make_unique<ImmersedCoupling>(*fluid_, cells_, config_); });
   if (coupling_)
     for (const CellMeasures& m : cells_.population->measures()) initial_volumes_.push_back(m.volume);
+  if (coupling_ && distribution_) {
+    const auto [first_cell, end_cell] = cell_share(cells_.population->cell_first_node(),
+                                                   cells_.population->num_nodes(), ranks->rank(), ranks->size());
+    coupling_->share_cells(first_cell, end_cell);
+  }
 }
 
 void Simulation::diverged(const std::string& stage, const std::string& what) const {

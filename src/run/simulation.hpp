@@ -4,6 +4,7 @@
 // output around it; tests and case drivers drive one directly and read its state.
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cells/cells_from_case.hpp"
@@ -22,9 +23,10 @@ class Simulation {
   // Builds everything the case's stages need (cell meshes from `mesh_cache_dir`). The
   // case must have been loaded by load_case() (so it is valid). With `ranks` of more than
   // one rank (issue 10) the fluid is split across them (FluidDistribution) and every rank
-  // holds every cell: the cells see the whole fluid's velocity, replicated from the ranks'
-  // parts each step, and spread their forces onto it; each rank computes the same cells.
-  // All ranks must build it together.
+  // holds every cell and computes the forces of its share of them (cell_share,
+  // ImmersedCoupling::share_cells); the cells read the fluid at their supports, replicated
+  // from the nodes' owners, and the ranks' spread forces are summed there. All ranks must
+  // build it together.
   Simulation(const CaseConfig& config, const std::string& mesh_cache_dir, const Communicator* ranks = nullptr);
 
   // One time step of config.time.dt: the coupled step when there are cells, the fluid
@@ -82,5 +84,10 @@ class Simulation {
 // The fluid mesh a case describes: a box of hexahedra, periodic where the case says, or a
 // vessel's lumen of tetrahedra (Gmsh, cached in `mesh_cache_dir`).
 FluidMesh make_case_mesh(const CaseConfig& config, const std::string& mesh_cache_dir);
+
+// The cells rank `rank` of `ranks` computes when every rank holds every cell
+// (ImmersedCoupling::share_cells): [first, end), cell c to rank ⌊first_node(c) · P / N⌋ of
+// N nodes in all, so contiguous cells of about N/P nodes each (a rank may get none).
+std::pair<int, int> cell_share(const std::vector<int>& cell_first_node, int num_nodes, int rank, int ranks);
 
 }  // namespace rouleau

@@ -320,9 +320,14 @@ void BasicSurfaceInteraction<ExecSpace>::rebuild() {
   auto builds_row = KOKKOS_LAMBDA(const int i) {
     return point_active(i) && point_cell(i) >= first_row_cell && point_cell(i) < end_row_cell;
   };
+  // A share of the rows takes the balanced half list (kernels/surface_neighbors.hpp).
+  const bool balanced = half && end_row_cell_ >= 0;
   auto count_row = KOKKOS_LAMBDA(const int i, int& count) {
     auto visit = [&](int) { ++count; };
-    if (half)
+    if (balanced)
+      for_each_neighbor<BalancedHalfList>(i, grid, radius_squared, point_positions, point_cell, bin_offsets,
+                                          sorted_points, visit);
+    else if (half)
       for_each_neighbor<HalfList>(i, grid, radius_squared, point_positions, point_cell, bin_offsets, sorted_points,
                                   visit);
     else
@@ -355,7 +360,10 @@ void BasicSurfaceInteraction<ExecSpace>::rebuild() {
         if (!builds_row(i)) return;
         int slot = offsets(i);
         auto visit = [&](int j) { neighbors(slot++) = j; };
-        if (half)
+        if (balanced)
+          for_each_neighbor<BalancedHalfList>(i, grid, radius_squared, point_positions, point_cell, bin_offsets,
+                                              sorted_points, visit);
+        else if (half)
           for_each_neighbor<HalfList>(i, grid, radius_squared, point_positions, point_cell, bin_offsets,
                                       sorted_points, visit);
         else

@@ -32,8 +32,8 @@ std::vector<double> nodal_excess_mass(const CellPopulation& population, const Ca
 }
 
 // Σ_i a_i b_i over a flat or a (node, 3) View pair.
-template <class View>
-double dot(const View& a, const View& b) {
+template <class View, class OtherView>
+double dot(const View& a, const OtherView& b) {
   double sum = 0.0;
   if constexpr (View::rank == 1) {
     Kokkos::parallel_reduce(
@@ -70,12 +70,14 @@ ImmersedCoupling::ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, c
   interpolated_ = NodeVectors("rouleau::ImmersedCoupling::interpolated", nodes);
   previous_velocities_ = NodeVectors("rouleau::ImmersedCoupling::previous_velocities", nodes);
   fluid_load_ = Kokkos::View<double*>("rouleau::ImmersedCoupling::fluid_load", fluid.num_global_unknowns());
-  cell_carrier_ = Kokkos::View<double*>("rouleau::ImmersedCoupling::cell_carrier", fluid.num_global_unknowns());
+  if (fluid.distribution())
+    cell_carrier_ = Kokkos::View<double*>("rouleau::ImmersedCoupling::cell_carrier", fluid.num_global_unknowns());
   fluid_.set_immersed_forces_in_stabilization(config.coupling.forces_in_stabilization);
   if (config.coupling.subscale_velocity) {
     total_velocity_ =
         Kokkos::View<double*>("rouleau::ImmersedCoupling::total_velocity", fluid.fluid_operator().num_unknowns());
-    global_state_ = Kokkos::View<double*>("rouleau::ImmersedCoupling::global_state", fluid.num_global_unknowns());
+    if (fluid.distribution())
+      global_state_ = Kokkos::View<double*>("rouleau::ImmersedCoupling::global_state", fluid.num_global_unknowns());
   }
   if (interaction_) interaction_forces_ = NodeVectors("rouleau::ImmersedCoupling::interaction_forces", nodes);
   if (config.vessel.enabled && config.vessel.wall_repulsion_pressure > 0.0) {
@@ -180,18 +182,20 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
   if (stiffness_) fluid_.set_immersed_stiffness(nullptr);
   if (!report.fluid.converged) return report;
   // The velocity the cells move with: u_h, or u_h + u' (coupling.subscale_velocity), in
-  // the global numbering.
-  const Kokkos::View<const double*> cell_carrier = cell_carrier_;
-  const Kokkos::View<double*> global_state = total_velocity_.extent(0) > 0 ? global_state_ : cell_carrier_;
-  times.time(interpolate_stage, [&] {
-    if (total_velocity_.extent(0) > 0) {
-      fluid_.total_velocity(total_velocity_);
-      fluid_.gather_global(total_velocity_, cell_carrier_);
-      fluid_.gather_global(fluid_.state(), global_state_);
-    } else {
-      fluid_.gather_global(fluid_.state(), cell_carrier_);
-    }
-  });
+  // the global numbering: the fluid's own vectors on one rank, their global copies at the
+  // cells' supports across ranks.
+  Kokkos::View<const double*> cell_carrier = fluid_.state(), global_state = fluid_.state();
+  if (total_velocity_.extent(0) > 0) {
+    times.time(interpolate_stage, [&] { fluid_.total_velocity(total_velocity_); });
+    cell_carrier = total_velocity_;
+  }
+  if (fluid_.distribution())
+    times.time(interpolate_stage, [&] {
+      fluid_.gather_global(cell_carrier, cell_carrier_);
+      if (global_state_.extent(0) > 0) fluid_.gather_global(fluid_.state(), global_state_);
+      global_state = global_state_.extent(0) > 0 ? global_state_ : cell_carrier_;
+      cell_carrier = cell_carrier_;
+    });
   // The semi-implicit step's forces f^n + K Δt I u^{n+1}, spread as the fluid felt them.
   if (stiffness_)
     times.time(stiffness_stage, [&] {

@@ -104,8 +104,10 @@ class ImmersedCoupling {
   // fluid's state, the rank's local vector), which the cells move with; empty otherwise
   // (they move with u_h).
   Kokkos::View<double*> total_velocity_;
-  Kokkos::View<double*> cell_carrier_;     // what the cells move with, global (scaled)
-  Kokkos::View<double*> global_state_;     // the fluid's state, global, when it is not that
+  // Across ranks: what the cells move with and the fluid's state (when the cells move with
+  // u_h + u'), global (scaled); empty on one rank, where the fluid's own vectors serve.
+  Kokkos::View<double*> cell_carrier_;
+  Kokkos::View<double*> global_state_;
   std::unique_ptr<CellStiffness> stiffness_;  // the semi-implicit coupling's K, or null
   bool shares_ = false;                       // share_cells()
   int first_node_ = 0, end_node_ = -1;        // this rank's cells' nodes (share_cells)

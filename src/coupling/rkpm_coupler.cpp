@@ -213,7 +213,12 @@ void BasicRkpmCoupler<ExecSpace>::update(const PointVectors& points) {
 
 template <class ExecSpace>
 Kokkos::View<int*> BasicRkpmCoupler<ExecSpace>::support_nodes() const {
-  Kokkos::View<int*> in_support("rouleau::RkpmCoupler::in_support", num_dof_nodes_);
+  // Persistent buffers: this runs every step of a run across ranks.
+  if (static_cast<int>(in_support_.extent(0)) != num_dof_nodes_)
+    in_support_ = Kokkos::View<int*>("rouleau::RkpmCoupler::in_support", num_dof_nodes_);
+  else
+    Kokkos::deep_copy(in_support_, 0);
+  auto in_support = in_support_;
   auto offsets = offsets_;
   auto nodes = nodes_;
   int entries = 0;
@@ -226,7 +231,9 @@ Kokkos::View<int*> BasicRkpmCoupler<ExecSpace>::support_nodes() const {
   Kokkos::parallel_reduce(
       "rouleau::RkpmCoupler::count_supports", Kokkos::RangePolicy<ExecSpace>(0, num_dof_nodes_),
       KOKKOS_LAMBDA(const int n, int& sum) { sum += in_support(n); }, count);
-  Kokkos::View<int*> support("rouleau::RkpmCoupler::support_nodes", count);
+  if (static_cast<int>(support_nodes_.extent(0)) < count)
+    support_nodes_ = Kokkos::View<int*>("rouleau::RkpmCoupler::support_nodes", count + count / 5);
+  const auto support = Kokkos::subview(support_nodes_, std::make_pair(0, count));
   Kokkos::parallel_scan(
       "rouleau::RkpmCoupler::compact_supports", Kokkos::RangePolicy<ExecSpace>(0, num_dof_nodes_),
       KOKKOS_LAMBDA(const int n, int& before, const bool final) {

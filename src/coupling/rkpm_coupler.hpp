@@ -57,7 +57,8 @@ class BasicRkpmCoupler {
   const Kokkos::View<int*>& nodes() const { return nodes_; }
   const Kokkos::View<double*>& shape_functions() const { return shape_functions_; }
   // The dof nodes in any point's support at the last update, ascending, each once: the
-  // only fluid values interpolation reads and the only ones spreading writes.
+  // only fluid values interpolation reads and the only ones spreading writes. A view of a
+  // buffer the next call overwrites.
   Kokkos::View<int*> support_nodes() const;
   // How many points needed the linear correction at the last update.
   int corrected_points() const { return corrected_points_; }
@@ -77,6 +78,7 @@ class BasicRkpmCoupler {
   using Scatter = Kokkos::Experimental::ScatterView<double*, typename Kokkos::View<double*>::array_layout,
                                                     typename ExecSpace::device_type>;
   mutable Kokkos::View<double*> spread_sum_;
+  mutable Kokkos::View<int*> in_support_, support_nodes_;  // support_nodes()
   mutable Scatter spread_scatter_;
 
  public:

@@ -102,22 +102,23 @@ void FluidDistribution::replicate(const ConstVector& local, const Vector& global
   sum_over_ranks(global);
 }
 
+FluidDistribution::Vector FluidDistribution::node_buffer(const int nodes) const {
+  const int size = fluid_unknowns_per_node * nodes;
+  if (static_cast<int>(node_buffer_.extent(0)) < size)
+    node_buffer_ = Vector("rouleau::FluidDistribution::node_buffer", size + size / 5);
+  return Kokkos::subview(node_buffer_, std::make_pair(0, size));
+}
+
 void FluidDistribution::replicate(const ConstVector& local, const Vector& global,
                                   const Kokkos::View<const int*>& nodes) const {
-  const int count = static_cast<int>(nodes.extent(0));
-  if (static_cast<int>(node_buffer_.extent(0)) < fluid_unknowns_per_node * count)
-    node_buffer_ = Vector("rouleau::FluidDistribution::node_buffer", fluid_unknowns_per_node * count);
-  const Vector buffer = Kokkos::subview(node_buffer_, std::make_pair(0, fluid_unknowns_per_node * count));
+  const Vector buffer = node_buffer(static_cast<int>(nodes.extent(0)));
   gather_owned_at(owned_local_, nodes, local, buffer);
   sum_over_ranks(buffer);
   scatter_to_nodes(nodes, buffer, global);
 }
 
 void FluidDistribution::sum_at_nodes(const Vector& global, const Kokkos::View<const int*>& nodes) const {
-  const int count = static_cast<int>(nodes.extent(0));
-  if (static_cast<int>(node_buffer_.extent(0)) < fluid_unknowns_per_node * count)
-    node_buffer_ = Vector("rouleau::FluidDistribution::node_buffer", fluid_unknowns_per_node * count);
-  const Vector buffer = Kokkos::subview(node_buffer_, std::make_pair(0, fluid_unknowns_per_node * count));
+  const Vector buffer = node_buffer(static_cast<int>(nodes.extent(0)));
   gather_at(nodes, global, buffer);
   sum_over_ranks(buffer);
   scatter_to_nodes(nodes, buffer, global);

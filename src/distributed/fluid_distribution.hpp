@@ -78,6 +78,8 @@ class FluidDistribution {
   Kokkos::View<int*> owned_local_;  // global dof node → its local node where this rank owns it, else −1 (device)
   mutable Vector node_buffer_;      // replicate() at some nodes
   mutable Kokkos::View<double*, Kokkos::HostSpace> host_buffer_;
+  // The first 4·nodes entries of a persistent device buffer.
+  Vector node_buffer(int nodes) const;
   // Sums `values` over all ranks in place, through host memory.
   void sum_over_ranks(const Vector& values) const;
 };

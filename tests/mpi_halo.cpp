@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <Kokkos_Core.hpp>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -273,6 +274,40 @@ TEST(FluidDistribution, ReplicatedGlobalVectorsAreTheSameOnEveryRankAndLocalizeB
     double expected = 0.0;
     for (int i = 0; i < d.mesh.num_unknowns(); ++i) expected += global(i) * global(i);
     EXPECT_NEAR(owned_norm, std::sqrt(expected), 1e-12 * std::sqrt(expected));
+  }
+}
+
+TEST(FluidDistribution, APointIsHeldByTheOwnerOfTheNearestNode) {
+  // Every geometric node moved by up to 0.1 μm along each axis (a fifth of the smallest
+  // spacing's half, so it stays nearest): rank_holding() names the owner of its dof node,
+  // the same on every rank, through the periodic sides' images too; a point far outside
+  // the fluid goes to rank 0.
+  for (const FluidMesh& mesh : partitioned_meshes()) {
+    SCOPED_TRACE(partition_name(mesh));
+    Distributed d(mesh);
+    const FluidDistribution distribution(d.world, d.mesh);
+    std::vector<double> owner(d.mesh.num_dof_nodes, 0.0);
+    for (int l = 0; l < d.partition.num_owned_nodes; ++l) owner[d.partition.global_node[l]] = d.world.rank();
+    d.world.sum(owner.data(), static_cast<int>(owner.size()));
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), d.mesh.coordinates);
+    std::mt19937 generator(5);
+    std::uniform_real_distribution<double> shift(-0.1, 0.1);
+    std::vector<std::array<double, 3>> points;
+    for (int g = 0; g < d.mesh.num_nodes; ++g) points.push_back({x(g, 0) + shift(generator), x(g, 1) + shift(generator),
+                                                                 x(g, 2) + shift(generator)});
+    points.push_back({100.0, 100.0, 100.0});
+    const std::vector<int> ranks = distribution.rank_holding(points);
+    ASSERT_EQ(ranks.size(), points.size());
+    int wrong = 0, held_here = 0;
+    for (int g = 0; g < d.mesh.num_nodes; ++g) {
+      wrong += ranks[g] != static_cast<int>(owner[d.mesh.dof_node_of_node[g]]);
+      held_here += ranks[g] == d.world.rank();
+    }
+    EXPECT_EQ(wrong, 0);
+    EXPECT_EQ(ranks.back(), 0);
+    // Every rank holds some points (it owns nodes), and each point is held once.
+    EXPECT_GT(held_here, 0);
+    EXPECT_EQ(d.world.sum(static_cast<long long>(held_here)), static_cast<long long>(d.mesh.num_nodes));
   }
 }
 

@@ -231,7 +231,8 @@ TEST(SurfaceInteraction, MatchesABruteForceDoubleLoop) {
 
 TEST(SurfaceInteraction, SharesOfTheRowsSumToTheWhole) {
   // The four cubes of the test above (and the far one) split into the cells' shares of
-  // three ranks, [0, 2), [2, 2), [2, 5) (ImmersedCoupling::share_cells): the forces,
+  // three ranks, {0, 3}, {} and {1, 2, 4} (ImmersedCoupling::share_cells: the cells whose
+  // centroid each rank holds, so neither contiguous nor balanced): the forces,
   // energies and stiffness actions of the shares sum to the whole list's, to round-off,
   // for full and half lists; the elastic forces and energies of CellPopulation::share_work
   // the same.
@@ -248,7 +249,7 @@ TEST(SurfaceInteraction, SharesOfTheRowsSumToTheWhole) {
       for (int d = 0; d < 3; ++d) m(n, d) = unit(rng);
     Kokkos::deep_copy(moves, m);
   }
-  const std::vector<std::pair<int, int>> shares{{0, 2}, {2, 2}, {2, 5}};
+  const std::vector<std::vector<int>> shares{{0, 3}, {}, {1, 2, 4}};
   // max |Σ shares − whole| / max |whole| over the nodes' vectors
   auto relative_gap = [](const std::vector<Eigen::Vector3d>& whole, const std::vector<Eigen::Vector3d>& summed) {
     double gap = 0.0, largest = 0.0;
@@ -275,9 +276,9 @@ TEST(SurfaceInteraction, SharesOfTheRowsSumToTheWhole) {
 
     double energy = 0.0;
     std::vector<Eigen::Vector3d> forces(nodes, Eigen::Vector3d::Zero()), changes(nodes, Eigen::Vector3d::Zero());
-    for (const auto& [first, end] : shares) {
+    for (const std::vector<int>& cells : shares) {
       SurfaceInteraction share = make_interaction(*scene.cells, potential, 0.3, half);
-      share.share_rows(first, end);
+      share.share_rows(cells);
       energy += share.compute_forces_and_energy();
       const std::vector<Eigen::Vector3d> f = node_forces(*scene.cells, share);
       share.linearize();
@@ -315,8 +316,8 @@ TEST(SurfaceInteraction, SharesOfTheRowsSumToTheWhole) {
   const std::vector<Eigen::Vector3d> whole_forces = to_vectors(elastic.internal_forces());
   double energy = 0.0;
   std::vector<Eigen::Vector3d> forces(nodes, Eigen::Vector3d::Zero());
-  for (const auto& [first, end] : shares) {
-    elastic.share_work(first, end);
+  for (const std::vector<int>& cells : shares) {
+    elastic.share_work(cells);
     energy += elastic.compute_internal_forces_and_energy();
     const std::vector<Eigen::Vector3d> f = to_vectors(elastic.internal_forces());
     for (int n = 0; n < nodes; ++n) forces[n] += f[n];
@@ -325,7 +326,8 @@ TEST(SurfaceInteraction, SharesOfTheRowsSumToTheWhole) {
               std::fabs(energy / whole_energy - 1.0));
   EXPECT_LT(relative_gap(whole_forces, forces), 1e-14);
   EXPECT_NEAR(energy / whole_energy, 1.0, 1e-14);
-  EXPECT_THROW(elastic.share_work(3, 6), std::invalid_argument);
+  EXPECT_THROW(elastic.share_work({3, 5}), std::invalid_argument);  // no cell 5
+  EXPECT_THROW(elastic.share_work({2, 1}), std::invalid_argument);  // out of order
 }
 
 TEST(SurfaceInteraction, ObeysNewtonsThirdLaw) {

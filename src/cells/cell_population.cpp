@@ -5,6 +5,7 @@
 #include <type_traits>
 
 #include "kernels/cell_surface.hpp"
+#include "kernels/over_indices.hpp"
 #include "kernels/scatter_sum.hpp"
 #include "kernels/state_checks.hpp"
 #include "kernels/tet4.hpp"
@@ -96,7 +97,9 @@ BasicCellPopulation<ExecSpace>::BasicCellPopulation(const std::vector<PlacedCell
   }
   cell_element_offsets_.push_back(static_cast<int>(element));
   cell_triangle_offsets_.push_back(static_cast<int>(triangle));
-  end_shared_cell_ = num_cells_;
+  std::vector<int> every_cell(num_cells_);
+  for (int c = 0; c < num_cells_; ++c) every_cell[c] = c;
+  list_computed_work(every_cell);
   Kokkos::deep_copy(reference_positions_, x);
   Kokkos::deep_copy(positions_, x);
   Kokkos::deep_copy(node_cell_, node_cell);
@@ -158,13 +161,13 @@ double BasicCellPopulation<ExecSpace>::run_force_kernel(const char* label) {
   NeoHookeanForceFunctor<Scatter> forces{positions_,    element_nodes_, inverse_edge_matrix_, reference_volume_,
                                          element_cell_, materials_,     force_scatter_};
   // This rank's cells' elements (share_work; every element by default).
-  const Kokkos::RangePolicy<ExecSpace, Tag> policy(cell_element_offsets_[first_shared_cell_],
-                                                   cell_element_offsets_[end_shared_cell_]);
+  const auto elements = over_indices(forces, computed_elements_);
+  const Kokkos::RangePolicy<ExecSpace, Tag> policy(0, computed_elements_.extent(0));
   double energy = 0.0;
   if constexpr (std::is_same_v<Tag, ForcesAndEnergy>)
-    Kokkos::parallel_reduce(label, policy, forces, energy);
+    Kokkos::parallel_reduce(label, policy, elements, energy);
   else
-    Kokkos::parallel_for(label, policy, forces);
+    Kokkos::parallel_for(label, policy, elements);
   if (global_constraints_) energy += add_global_constraint_forces<Tag>();
   gather_into(internal_forces_, force_scatter_);
   return energy;
@@ -178,31 +181,45 @@ double BasicCellPopulation<ExecSpace>::add_global_constraint_forces() {
   compute_surface_sums(positions_);
   GlobalConstraintFunctor multipliers{cell_sums_,     reference_areas_, reference_volumes_, area_moduli_,
                                       volume_moduli_, area_tensions_,   volume_pressures_};
-  const Kokkos::RangePolicy<ExecSpace, Tag> cells(first_shared_cell_, end_shared_cell_);
+  const Kokkos::RangePolicy<ExecSpace, Tag> cells(0, computed_cells_.extent(0));
+  const auto cell_multipliers = over_indices(multipliers, computed_cells_);
   double energy = 0.0;
   if constexpr (std::is_same_v<Tag, ForcesAndEnergy>) {
-    Kokkos::parallel_reduce("rouleau::CellPopulation::constraint_multipliers_and_energy", cells, multipliers, energy);
+    Kokkos::parallel_reduce("rouleau::CellPopulation::constraint_multipliers_and_energy", cells, cell_multipliers,
+                            energy);
     constraint_energy_ = energy;
   } else {
-    Kokkos::parallel_for("rouleau::CellPopulation::constraint_multipliers", cells, multipliers);
+    Kokkos::parallel_for("rouleau::CellPopulation::constraint_multipliers", cells, cell_multipliers);
   }
   GlobalConstraintForceFunctor<Scatter> forces{positions_,     surface_triangles_, triangle_cell_, cell_first_node_,
                                                area_tensions_, volume_pressures_,  force_scatter_};
   Kokkos::parallel_for("rouleau::CellPopulation::global_constraint_forces",
-                       Kokkos::RangePolicy<ExecSpace>(cell_triangle_offsets_[first_shared_cell_],
-                                                      cell_triangle_offsets_[end_shared_cell_]),
-                       forces);
+                       Kokkos::RangePolicy<ExecSpace>(0, computed_triangles_.extent(0)),
+                       over_indices(forces, computed_triangles_));
   return energy;
 }
 
 template <class ExecSpace>
-void BasicCellPopulation<ExecSpace>::share_work(const int first_cell, const int end_cell) {
-  if (first_cell < 0 || end_cell > num_cells_ || first_cell > end_cell)
-    throw std::invalid_argument("rouleau::CellPopulation::share_work: cells [" + std::to_string(first_cell) + ", " +
-                                std::to_string(end_cell) + ") of " + std::to_string(num_cells_));
-  first_shared_cell_ = first_cell;
-  end_shared_cell_ = end_cell;
+void BasicCellPopulation<ExecSpace>::share_work(const std::vector<int>& cells) {
+  for (std::size_t k = 0; k < cells.size(); ++k)
+    if (cells[k] < 0 || cells[k] >= num_cells_ || (k > 0 && cells[k] <= cells[k - 1]))
+      throw std::invalid_argument("rouleau::CellPopulation::share_work: cell " + std::to_string(cells[k]) +
+                                  " at position " + std::to_string(k) + " of the share: the cells must be ascending, "
+                                  "each once, in [0, " + std::to_string(num_cells_) + ")");
+  list_computed_work(cells);
   work_shared_ = true;
+}
+
+template <class ExecSpace>
+void BasicCellPopulation<ExecSpace>::list_computed_work(const std::vector<int>& cells) {
+  std::vector<int> elements, triangles;
+  for (const int c : cells) {
+    for (int e = cell_element_offsets_[c]; e < cell_element_offsets_[c + 1]; ++e) elements.push_back(e);
+    for (int t = cell_triangle_offsets_[c]; t < cell_triangle_offsets_[c + 1]; ++t) triangles.push_back(t);
+  }
+  computed_cells_ = device_copy(cells, "rouleau::CellPopulation::computed_cells");
+  computed_elements_ = device_copy(elements, "rouleau::CellPopulation::computed_elements");
+  computed_triangles_ = device_copy(triangles, "rouleau::CellPopulation::computed_triangles");
 }
 
 template <class ExecSpace>

@@ -96,10 +96,11 @@ class BasicCellPopulation {
   // The same, returning the total elastic energy Σ_e V0 W(F_e) + E_A + E_V [pN·μm].
   double compute_internal_forces_and_energy();
   // This rank's share of the elastic work when the cells are on every rank (issue 10):
-  // the two calls above then give the forces and energy of cells [first_cell, end_cell)
+  // the two calls above then give the forces and energy of `cells` (ascending, each once)
   // alone (their elements and constraints; zero at the other cells' nodes), and the shares
-  // of all ranks sum to the whole. Every cell by default.
-  void share_work(int first_cell, int end_cell);
+  // of all ranks sum to the whole. Every cell by default. Throws std::invalid_argument on
+  // a cell out of range, repeated or out of order.
+  void share_work(const std::vector<int>& cells);
   // Whether share_work() was called: the forces and energies are then this rank's share.
   bool work_is_shared() const { return work_shared_; }
 
@@ -147,6 +148,8 @@ class BasicCellPopulation {
   // ForcesOnly).
   template <class Tag>
   double add_global_constraint_forces();
+  // computed_elements_, computed_triangles_ and computed_cells_ for `cells`.
+  void list_computed_work(const std::vector<int>& cells);
   // The surface sums (CellSurfaceSum) of every cell at `positions` into cell_sums_.
   void compute_surface_sums(const NodeVectors& positions) const;
 
@@ -170,7 +173,9 @@ class BasicCellPopulation {
   std::vector<int> cell_first_node_host_, cell_node_count_host_;
   // Where each cell's elements and outer-surface triangles start (and end: num_cells + 1).
   std::vector<int> cell_element_offsets_, cell_triangle_offsets_;
-  int first_shared_cell_ = 0, end_shared_cell_ = 0;  // share_work()
+  // The elements, outer-surface triangles and cells whose forces this rank computes
+  // (share_work; every one by default), ascending.
+  Kokkos::View<int*> computed_elements_, computed_triangles_, computed_cells_;
   bool work_shared_ = false;
   // Persistent scatter buffers (per-thread copies on CPUs, the atomic target on GPUs).
   mutable Scatter force_scatter_;

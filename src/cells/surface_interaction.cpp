@@ -185,9 +185,16 @@ bool BasicSurfaceInteraction<ExecSpace>::list_is_stale() const {
 }
 
 template <class ExecSpace>
-void BasicSurfaceInteraction<ExecSpace>::share_rows(const int first_cell, const int end_cell) {
-  first_row_cell_ = first_cell;
-  end_row_cell_ = end_cell;
+void BasicSurfaceInteraction<ExecSpace>::share_rows(const std::vector<int>& cells) {
+  std::vector<int> rows(cells_.num_cells(), 0);
+  for (const int c : cells) {
+    if (c < 0 || c >= cells_.num_cells())
+      throw std::invalid_argument("rouleau::SurfaceInteraction::share_rows: cell " + std::to_string(c) + " of " +
+                                  std::to_string(cells_.num_cells()));
+    rows[c] = 1;
+  }
+  row_cells_ = device_copy(rows, "rouleau::SurfaceInteraction::row_cells");
+  rows_shared_ = true;
   built_ = false;  // the next force evaluation builds the list with these rows
   linearized_ = false;
 }
@@ -316,12 +323,11 @@ void BasicSurfaceInteraction<ExecSpace>::rebuild() {
   auto offsets = neighbor_offsets_;
   const bool half = half_list_;
   // The rows this rank builds (share_rows): points of its cells.
-  const int first_row_cell = first_row_cell_, end_row_cell = end_row_cell_ < 0 ? n_cells : end_row_cell_;
-  auto builds_row = KOKKOS_LAMBDA(const int i) {
-    return point_active(i) && point_cell(i) >= first_row_cell && point_cell(i) < end_row_cell;
-  };
+  const bool shared = rows_shared_;
+  auto row_cells = row_cells_;
+  auto builds_row = KOKKOS_LAMBDA(const int i) { return point_active(i) && (!shared || row_cells(point_cell(i))); };
   // A share of the rows takes the balanced half list (kernels/surface_neighbors.hpp).
-  const bool balanced = half && end_row_cell_ >= 0;
+  const bool balanced = half && shared;
   auto count_row = KOKKOS_LAMBDA(const int i, int& count) {
     auto visit = [&](int) { ++count; };
     if (balanced)

@@ -89,11 +89,12 @@ class BasicSurfaceInteraction {
   void rebuild();
 
   // This rank's share of the pair work when the cells are on every rank (issue 10): the
-  // list's rows are the points of cells [first_cell, end_cell) alone (their columns any
-  // point), so the forces, the energy and the stiffness are those of the pairs rooted at
-  // them, and the shares of all ranks sum to the whole. The next force evaluation builds
-  // the list anew. Every cell by default.
-  void share_rows(int first_cell, int end_cell);
+  // list's rows are the points of `cells` alone (their columns any point), so the forces,
+  // the energy and the stiffness are those of the pairs rooted at them, and the shares of
+  // all ranks sum to the whole; a half list is then balanced (kernels/surface_neighbors.hpp).
+  // The next force evaluation builds the list anew. Every cell by default. Throws
+  // std::invalid_argument on a cell out of range.
+  void share_rows(const std::vector<int>& cells);
 
  private:
   template <class Tag>
@@ -119,7 +120,8 @@ class BasicSurfaceInteraction {
   Kokkos::View<int*> neighbor_offsets_, neighbors_;
   BinGrid grid_{};
   int list_entries_ = 0, rebuilds_ = 0, active_cells_ = 0;
-  int first_row_cell_ = 0, end_row_cell_ = -1;  // share_rows(); −1: every cell
+  Kokkos::View<int*> row_cells_;                 // (cell): 1 when its points are rows (share_rows)
+  bool rows_shared_ = false;                     // share_rows() was called
   bool built_ = false;
   using Scatter = Kokkos::Experimental::ScatterView<double* [3], typename PointVectors::array_layout,
                                                     typename ExecSpace::device_type>;

@@ -28,21 +28,21 @@ void add_node_vectors(const NodeVectors& sum, const NodeVectors& part) {
       });
 }
 
-void keep_nodes(const NodeVectors& v, const int first, const int end) {
+void keep_nodes(const NodeVectors& v, const Kokkos::View<const int*>& computed) {
   Kokkos::parallel_for(
       "rouleau::keep_nodes", Kokkos::RangePolicy<ExecSpace>(0, v.extent(0)), KOKKOS_LAMBDA(const int n) {
-        if (n < first || n >= end)
+        if (!computed(n))
           for (int d = 0; d < 3; ++d) v(n, d) = 0.0;
       });
 }
 
 void differenced_forces(CellPopulation& population, const WallRepulsion* wall, const NodeVectors& scratch,
-                        const NodeVectors& out, const int first_node, const int end_node) {
+                        const NodeVectors& out, const Kokkos::View<const int*>& computed_nodes) {
   population.compute_internal_forces();
   Kokkos::deep_copy(out, population.internal_forces());
   if (wall) {
     wall->compute_forces(population.positions(), population.surface_area_weights(), scratch);
-    if (end_node >= 0) keep_nodes(scratch, first_node, end_node);
+    if (computed_nodes.extent(0) > 0) keep_nodes(scratch, computed_nodes);
     add_node_vectors(out, scratch);
   }
 }

@@ -38,17 +38,17 @@ namespace rouleau {
 
 // sum(n, d) += part(n, d) over the cell nodes.
 void add_node_vectors(const CellPopulation::NodeVectors& sum, const CellPopulation::NodeVectors& part);
-// v(n) = 0 for the nodes outside [first, end) (a rank's share of per-node forces).
-void keep_nodes(const CellPopulation::NodeVectors& v, int first, int end);
+// v(n) = 0 at the nodes n with computed(n) = 0 (a rank's share of per-node forces).
+void keep_nodes(const CellPopulation::NodeVectors& v, const Kokkos::View<const int*>& computed);
 
 // out = the elastic forces on the cell nodes (with the global constraints) and the wall
 // repulsion (when `wall`) at the current positions [pN]; `scratch` holds the wall's part
 // on its way. These are −∂E/∂x of the cells' energy less the interaction's, the forces
 // whose stiffness CellStiffness differences. With a share of the cells on this rank
-// (CellPopulation::share_work), the share's: the wall's forces at its nodes
-// [first_node, end_node) alone.
+// (CellPopulation::share_work), the share's: the wall's forces at the nodes n with
+// computed_nodes(n) = 1 alone (every node when `computed_nodes` is empty).
 void differenced_forces(CellPopulation& population, const WallRepulsion* wall, const CellPopulation::NodeVectors& scratch,
-                        const CellPopulation::NodeVectors& out, int first_node = 0, int end_node = -1);
+                        const CellPopulation::NodeVectors& out, const Kokkos::View<const int*>& computed_nodes = {});
 
 class CellStiffness final : public LinearOperator {
  public:

@@ -102,7 +102,7 @@ ImmersedCoupling::ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, c
     stiffness_ = std::make_unique<CellStiffness>(
         rkpm_, population_.positions(),
         [this](const NodeVectors& out) {
-          differenced_forces(population_, wall_.get(), stiffness_scratch_, out, first_node_, end_node_);
+          differenced_forces(population_, wall_.get(), stiffness_scratch_, out, computed_nodes_);
         },
         interaction_, fluid.scales());
   }
@@ -126,7 +126,7 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
   if (wall_)
     times.time(wall_stage, [&] {
       wall_->compute_forces(population_.positions(), population_.surface_area_weights(), wall_forces_);
-      if (shares_) keep_nodes(wall_forces_, first_node_, end_node_);
+      if (shares_) keep_nodes(wall_forces_, computed_nodes_);
     });
   times.time(runs_inertia_ ? inertia_stage : elastic_stage, [&] {
     FsiForceFunctor<NodeVectors, Kokkos::View<double*>> sum{population_.internal_forces(),
@@ -229,23 +229,29 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
   return report;
 }
 
-void ImmersedCoupling::share_cells(const int first_cell, const int end_cell) {
+void ImmersedCoupling::share_cells(const std::vector<int>& cells) {
   if (!fluid_.distribution())
     throw std::logic_error("rouleau::ImmersedCoupling::share_cells: the fluid is on one rank");
-  population_.share_work(first_cell, end_cell);
-  if (interaction_) interaction_->share_rows(first_cell, end_cell);
+  population_.share_work(cells);
+  if (interaction_) interaction_->share_rows(cells);
+  std::vector<int> computed(population_.num_nodes(), 0);
   const std::vector<int>& first = population_.cell_first_node();
-  first_node_ = first_cell < population_.num_cells() ? first[first_cell] : population_.num_nodes();
-  end_node_ = end_cell < population_.num_cells() ? first[end_cell] : population_.num_nodes();
+  const std::vector<int>& count = population_.cell_node_count();
+  for (const int c : cells)
+    for (int n = first[c]; n < first[c] + count[c]; ++n) computed[n] = 1;
+  computed_nodes_ = device_copy(computed, "rouleau::ImmersedCoupling::computed_nodes");
   // The inertia and buoyancy forces of this rank's nodes alone.
   if (excess_mass_.extent(0) > 0) {
+    if (every_excess_mass_.extent(0) == 0) {
+      every_excess_mass_ = Kokkos::View<double*>("rouleau::ImmersedCoupling::every_excess_mass", excess_mass_.extent(0));
+      Kokkos::deep_copy(every_excess_mass_, excess_mass_);
+    }
     auto mass = excess_mass_;
-    const int first_node = first_node_, end_node = end_node_;
+    auto every_mass = every_excess_mass_;
+    auto computed_node = computed_nodes_;
     Kokkos::parallel_for(
         "rouleau::ImmersedCoupling::share_excess_mass", Kokkos::RangePolicy<ExecSpace>(0, mass.extent(0)),
-        KOKKOS_LAMBDA(const int n) {
-          if (n < first_node || n >= end_node) mass(n) = 0.0;
-        });
+        KOKKOS_LAMBDA(const int n) { mass(n) = computed_node(n) ? every_mass(n) : 0.0; });
   }
   shares_ = true;
   fluid_.set_immersed_shares(true);

@@ -67,12 +67,13 @@ class ImmersedCoupling {
   void restore_state(const CheckpointData& data);
 
   // With the fluid split across ranks and every cell on every rank (issue 10): this rank
-  // computes the forces of cells [first_cell, end_cell) (their elastic, wall and inertia
+  // computes the forces of `cells` (ascending, each once: their elastic, wall and inertia
   // forces, and the Morse pairs rooted at their surface points), spreads them, and the
   // fluid sums the ranks' spread forces (and Ŝ's actions) at the cells' supports. The
   // positions stay the same on every rank: each moves every cell with the whole fluid's
-  // velocity. The reports' power_interpolated is then summed over the ranks.
-  void share_cells(int first_cell, int end_cell);
+  // velocity. The reports' power_interpolated is then summed over the ranks. Called again
+  // when cells change rank (Simulation: the rank holding a cell's centroid computes it).
+  void share_cells(const std::vector<int>& cells);
 
   bool runs_interaction() const { return interaction_ != nullptr; }
   bool runs_inertia() const { return runs_inertia_; }
@@ -93,7 +94,8 @@ class ImmersedCoupling {
   bool runs_inertia_ = false;
   std::array<double, 3> gravity_;  // [μm/s²]
   double previous_dt_ = 0.0;
-  Kokkos::View<double*> excess_mass_;      // (ρ_s − ρ_f) V_I per node [pN·s²/μm]
+  Kokkos::View<double*> excess_mass_;      // (ρ_s − ρ_f) V_I per node [pN·s²/μm]; the share's nodes' alone
+  Kokkos::View<double*> every_excess_mass_;  // the same at every node (share_cells)
   NodeVectors previous_velocities_;        // v^{n−1}, for dv/dt
   NodeVectors interaction_forces_, wall_forces_, fsi_forces_;
   NodeVectors interpolated_;               // v̂_I, the scaled fluid velocity at the nodes
@@ -110,7 +112,7 @@ class ImmersedCoupling {
   Kokkos::View<double*> global_state_;
   std::unique_ptr<CellStiffness> stiffness_;  // the semi-implicit coupling's K, or null
   bool shares_ = false;                       // share_cells()
-  int first_node_ = 0, end_node_ = -1;        // this rank's cells' nodes (share_cells)
+  Kokkos::View<int*> computed_nodes_;         // (node): 1 at this rank's cells' nodes (share_cells), else empty
   NodeVectors stiffness_scratch_;           // interaction or wall forces while K is differenced
   NodeVectors force_change_;                // K Δt I u^{n+1} [pN] of the semi-implicit step
 };

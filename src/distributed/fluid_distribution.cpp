@@ -1,6 +1,7 @@
 #include "distributed/fluid_distribution.hpp"
 
 #include <KokkosBlas1_dot.hpp>
+#include <algorithm>
 #include <cmath>
 
 #include "distributed/local_mesh.hpp"
@@ -63,6 +64,38 @@ void scatter_to_nodes(const Kokkos::View<const int*>& nodes, const ConstVector& 
           global(fluid_unknowns_per_node * nodes(k) + c) = buffer(fluid_unknowns_per_node * k + c);
       });
 }
+
+// global dof node → local dof node, or −1 where the rank holds none
+std::vector<int> local_of_global_of(const ElementPartition& partition) {
+  std::vector<int> local(partition.num_global_nodes, -1);
+  for (int i = 0; i < partition.num_local_nodes(); ++i) local[partition.global_node[i]] = i;
+  return local;
+}
+
+// The owned dof nodes' geometric nodes (a periodic dof node's every image), in bins of the
+// mesh's largest element diameter: the nearest dof node to a point inside the fluid is
+// within the diameter of the element holding it.
+BinnedPoints bin_owned_nodes(const FluidMesh& mesh, const std::vector<int>& local_of_global, const int owned_nodes) {
+  auto coordinates = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
+  auto element_nodes = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.element_nodes);
+  double diameter2 = 0.0;
+  for (int e = 0; e < mesh.num_elements; ++e)
+    for (int a = 0; a < mesh.nodes_per_element; ++a)
+      for (int b = a + 1; b < mesh.nodes_per_element; ++b) {
+        double d2 = 0.0;
+        for (int d = 0; d < 3; ++d) {
+          const double offset = coordinates(element_nodes(e, a), d) - coordinates(element_nodes(e, b), d);
+          d2 += offset * offset;
+        }
+        diameter2 = std::max(diameter2, d2);
+      }
+  std::vector<std::array<double, 3>> owned;
+  for (int g = 0; g < mesh.num_nodes; ++g) {
+    const int local = local_of_global[mesh.dof_node_of_node[g]];
+    if (local >= 0 && local < owned_nodes) owned.push_back({coordinates(g, 0), coordinates(g, 1), coordinates(g, 2)});
+  }
+  return BinnedPoints(owned, mesh.lower, mesh.upper, mesh.periodic, std::sqrt(diameter2));
+}
 }  // namespace
 
 FluidDistribution::FluidDistribution(const Communicator& communicator, const FluidMesh& global_mesh)
@@ -71,9 +104,9 @@ FluidDistribution::FluidDistribution(const Communicator& communicator, const Flu
       local_mesh_(make_local_mesh(global_mesh, partition_)),
       halo_(communicator_, partition_, fluid_unknowns_per_node),
       node_sums_(communicator_, partition_),
-      local_of_global_(partition_.num_global_nodes, -1),
+      local_of_global_(local_of_global_of(partition_)),
+      owned_node_positions_(bin_owned_nodes(global_mesh, local_of_global_, partition_.num_owned_nodes)),
       global_node_(device_copy(partition_.global_node, "rouleau::FluidDistribution::global_node")) {
-  for (int i = 0; i < partition_.num_local_nodes(); ++i) local_of_global_[partition_.global_node[i]] = i;
   std::vector<int> owned_local(partition_.num_global_nodes, -1);
   for (int i = 0; i < partition_.num_owned_nodes; ++i) owned_local[partition_.global_node[i]] = i;
   owned_local_ = device_copy(owned_local, "rouleau::FluidDistribution::owned_local");
@@ -126,6 +159,12 @@ void FluidDistribution::sum_at_nodes(const Vector& global, const Kokkos::View<co
 
 void FluidDistribution::localize(const ConstVector& global, const Vector& local) const {
   take_local(global_node_, global, local);
+}
+
+std::vector<int> FluidDistribution::rank_holding(const std::vector<std::array<double, 3>>& points) const {
+  std::vector<double> distance(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) distance[i] = owned_node_positions_.nearest_distance(points[i]);
+  return communicator_.rank_of_smallest(distance);
 }
 
 }  // namespace rouleau

@@ -13,10 +13,12 @@
 // vector: it is for what needs the whole fluid on every rank (cells replicated on every
 // rank, output, checkpoints), not for the solver's inner loop.
 #include <Kokkos_Core.hpp>
+#include <array>
 #include <functional>
 #include <vector>
 
 #include "distributed/node_halo.hpp"
+#include "geometry/binned_points.hpp"
 #include "distributed/node_sums.hpp"
 #include "mesh/fluid_mesh.hpp"
 #include "parallel/communicator.hpp"
@@ -67,6 +69,12 @@ class FluidDistribution {
   // The local dof node of a global one, or −1 when the rank holds none.
   int local_node(int global_node) const { return local_of_global_[global_node]; }
 
+  // The rank holding each point [μm] (a cell's centroid, issue 10): the owner of the fluid
+  // dof node nearest to it (minimum image in periodic directions; the lowest such rank on
+  // ties), the same on every rank. A point farther than any element's diameter from every
+  // node (outside the fluid) goes to rank 0. One MPI_Allreduce; all ranks call it together.
+  std::vector<int> rank_holding(const std::vector<std::array<double, 3>>& points) const;
+
  private:
   Communicator communicator_;
   ElementPartition partition_;
@@ -74,6 +82,7 @@ class FluidDistribution {
   NodeHalo halo_;
   NodeSums node_sums_;
   std::vector<int> local_of_global_;
+  BinnedPoints owned_node_positions_;  // rank_holding(): the owned dof nodes' geometric nodes
   Kokkos::View<int*> global_node_;  // local dof node → global dof node (device)
   Kokkos::View<int*> owned_local_;  // global dof node → its local node where this rank owns it, else −1 (device)
   mutable Vector node_buffer_;      // replicate() at some nodes

@@ -50,6 +50,21 @@ double Communicator::max(double value) const {
   return largest;
 }
 
+std::vector<int> Communicator::rank_of_smallest(const std::vector<double>& values) const {
+  struct ValueAndRank {
+    double value;
+    int rank;
+  };
+  std::vector<ValueAndRank> mine(values.size()), smallest(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) mine[i] = {values[i], rank_};
+  check(MPI_Allreduce(mine.data(), smallest.data(), static_cast<int>(values.size()), MPI_DOUBLE_INT, MPI_MINLOC,
+                      MPI_COMM_WORLD),
+        "MPI_Allreduce");
+  std::vector<int> ranks(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) ranks[i] = smallest[i].rank;
+  return ranks;
+}
+
 void Communicator::exchange(const std::vector<int>& ranks, const std::vector<std::vector<double>>& send,
                             std::vector<std::vector<double>>& recv) const {
   const std::size_t n = ranks.size();
@@ -118,6 +133,9 @@ double Communicator::sum(double value) const { return value; }
 long long Communicator::sum(long long value) const { return value; }
 double Communicator::max(double value) const { return value; }
 void Communicator::sum(double*, int) const {}
+std::vector<int> Communicator::rank_of_smallest(const std::vector<double>& values) const {
+  return std::vector<int>(values.size(), 0);
+}
 void Communicator::exchange(const std::vector<int>& ranks, const std::vector<std::vector<double>>&,
                             std::vector<std::vector<double>>&) const {
   if (!ranks.empty()) throw std::logic_error("rouleau::Communicator::exchange: no other rank in a build without MPI");

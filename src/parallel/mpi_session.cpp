@@ -4,15 +4,26 @@
 #include <stdexcept>
 #include <string>
 
+#include <chrono>
+#include <thread>
+
 #if ROULEAU_HAS_MPI
 #include <mpi.h>
 
-#include <chrono>
 #include <exception>
-#include <thread>
 #endif
 
 namespace rouleau {
+
+namespace {
+// This process's rank as the MPI launcher set it (OpenMPI, MPICH/Hydra, PMIx), or 0: what
+// an error met before MPI is up (a bad case file, which every rank reads) goes by.
+int rank_from_launcher() {
+  for (const char* variable : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"})
+    if (const char* value = std::getenv(variable)) return std::atoi(value);
+  return 0;
+}
+}  // namespace
 
 #if ROULEAU_HAS_MPI
 MpiSession::MpiSession() {
@@ -44,9 +55,8 @@ bool running_on_several_ranks() {
 }
 
 void let_the_first_rank_report() {
-  if (!running_on_several_ranks()) return;
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  int rank = rank_from_launcher();
+  if (running_on_several_ranks()) MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank > 0) std::this_thread::sleep_for(std::chrono::seconds(2));
 }
 
@@ -64,7 +74,9 @@ MpiSession::MpiSession() {
 }
 MpiSession::~MpiSession() {}
 bool running_on_several_ranks() { return false; }
-void let_the_first_rank_report() {}
+void let_the_first_rank_report() {
+  if (rank_from_launcher() > 0) std::this_thread::sleep_for(std::chrono::seconds(2));
+}
 void stop_all_ranks(int) {}
 #endif
 

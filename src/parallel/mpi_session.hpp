@@ -20,9 +20,10 @@ class MpiSession {
 
 // Whether MPI is up with more than one rank (then an error on one rank must stop all).
 bool running_on_several_ranks();
-// An error that every rank meets (a divergence: its tests read the whole fluid) is
-// reported once, by the first rank, which also writes the files: the others wait 2 s
-// before reporting, and the first rank's stop_all_ranks() ends them before that.
+// An error that every rank meets (a divergence: its tests read the whole fluid; a bad case
+// file, met before MPI is up) is reported once, by the first rank, which also writes the
+// files: the others (by MPI's rank, or the launcher's before MPI is up) wait 2 s before
+// reporting, and the first rank's stop_all_ranks() or exit ends them before that.
 void let_the_first_rank_report();
 // Stops every rank with `exit_code` (MPI_Abort) when there are several; returns otherwise.
 // For an error that only some ranks may have met: the others would wait for them forever.

@@ -37,6 +37,17 @@
 
 namespace rouleau {
 
+namespace {
+// "2, 1, 0": how many cells each of `ranks` ranks computes.
+std::string cells_per_rank(const std::vector<int>& cell_ranks, const int ranks) {
+  std::vector<int> count(ranks, 0);
+  for (const int r : cell_ranks) ++count[r];
+  std::string text;
+  for (int r = 0; r < ranks; ++r) text += (r > 0 ? ", " : "") + std::to_string(count[r]);
+  return text;
+}
+}  // namespace
+
 std::vector<std::pair<std::string, std::string>> kokkos_runtime_info() {
   std::vector<std::pair<std::string, std::string>> info;
   info.emplace_back("kokkos", ROULEAU_KOKKOS_VERSION);
@@ -175,6 +186,9 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
               << distribution->partition().elements.size() << " elements and "
               << distribution->partition().num_owned_nodes << " of its " << distribution->partition().num_local_nodes()
               << " nodes" << (cells.population ? "; every rank holds every cell" : "") << "\n";
+  if (!simulation.cell_ranks().empty())
+    std::cerr << "cells computed by the rank holding their centroid; per rank: "
+              << cells_per_rank(simulation.cell_ranks(), ranks.size()) << "\n";
   const int cell_count = static_cast<int>(config.cells.size());
   if (cell_count > config.output.cell_gaps_max_cells && cell_count > 1)
     std::cerr << "cell gaps: not in the diagnostics (" << cell_count << " cells, more than output.cell_gaps_max_cells = "
@@ -389,6 +403,9 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
   }
   flush_table();
   ranks.barrier();  // the files are complete before any rank returns (case drivers read them)
+  if (!simulation.cell_ranks().empty())
+    std::cerr << "cells changed rank " << simulation.cell_rank_changes() << " times in this run; per rank now: "
+              << cells_per_rank(simulation.cell_ranks(), ranks.size()) << "\n";
   times.print(std::cerr);
   std::cerr << "wrote " << out << "/" << (fields ? "fields.xdmf, " : "") << "diagnostics.csv, case.resolved.toml"
             << (transient ? ", checkpoints/" : "") << "\n"

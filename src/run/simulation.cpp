@@ -24,18 +24,6 @@ FluidMesh make_case_mesh(const CaseConfig& config, const std::string& mesh_cache
   return make_box_mesh(domain.lower, domain.upper, domain.elements, domain.wall_grading, periodic);
 }
 
-std::pair<int, int> cell_share(const std::vector<int>& cell_first_node, const int num_nodes, const int rank,
-                               const int ranks) {
-  // Cell c goes to rank ⌊first_node(c) · P / N⌋: contiguous cells, about N/P nodes each.
-  const int cells = static_cast<int>(cell_first_node.size());
-  auto first_cell_of = [&](const int r) {
-    int c = 0;
-    while (c < cells && static_cast<long long>(cell_first_node[c]) * ranks < static_cast<long long>(r) * num_nodes) ++c;
-    return c;
-  };
-  return {first_cell_of(rank), first_cell_of(rank + 1)};
-}
-
 Simulation::Simulation(const CaseConfig& config, const std::string& mesh_cache_dir, const Communicator* ranks)
     : config_(config), derived_(derive_quantities(config)) {
   const bool several_ranks = ranks && ranks->size() > 1;
@@ -63,11 +51,21 @@ Simulation::Simulation(const CaseConfig& config, const std::string& mesh_cache_d
     coupling_ = times_.time("coupling setup", [&] { return std::make_unique<ImmersedCoupling>(*fluid_, cells_, config_); });
   if (coupling_)
     for (const CellMeasures& m : cells_.population->measures()) initial_volumes_.push_back(m.volume);
-  if (coupling_ && distribution_) {
-    const auto [first_cell, end_cell] = cell_share(cells_.population->cell_first_node(),
-                                                   cells_.population->num_nodes(), ranks->rank(), ranks->size());
-    coupling_->share_cells(first_cell, end_cell);
-  }
+  if (coupling_ && distribution_) assign_cells_to_ranks();
+}
+
+void Simulation::assign_cells_to_ranks() {
+  std::vector<std::array<double, 3>> centroids;
+  for (const CellMeasures& m : cells_.population->measures()) centroids.push_back(m.centroid);
+  std::vector<int> ranks = distribution_->rank_holding(centroids);
+  if (ranks == cell_ranks_) return;
+  if (!cell_ranks_.empty())
+    for (std::size_t c = 0; c < ranks.size(); ++c) cell_rank_changes_ += ranks[c] != cell_ranks_[c];
+  cell_ranks_ = std::move(ranks);
+  std::vector<int> mine;
+  for (std::size_t c = 0; c < cell_ranks_.size(); ++c)
+    if (cell_ranks_[c] == distribution_->communicator().rank()) mine.push_back(static_cast<int>(c));
+  coupling_->share_cells(mine);
 }
 
 void Simulation::diverged(const std::string& stage, const std::string& what) const {
@@ -115,6 +113,8 @@ void Simulation::check_cell_elements() const {
 
 const ImmersedCoupling::StepReport& Simulation::advance() {
   const TimeConfig& time = config_.time;
+  // Across ranks a cell's forces are computed by the rank holding its centroid.
+  if (coupling_ && distribution_) times_.time("cell ranks", [&] { assign_cells_to_ranks(); });
   if (coupling_) {
     try {
       last_report_ = coupling_->advance(time.dt, time.scheme, times_);

@@ -23,10 +23,11 @@ class Simulation {
   // Builds everything the case's stages need (cell meshes from `mesh_cache_dir`). The
   // case must have been loaded by load_case() (so it is valid). With `ranks` of more than
   // one rank (issue 10) the fluid is split across them (FluidDistribution) and every rank
-  // holds every cell and computes the forces of its share of them (cell_share,
-  // ImmersedCoupling::share_cells); the cells read the fluid at their supports, replicated
-  // from the nodes' owners, and the ranks' spread forces are summed there. All ranks must
-  // build it together.
+  // holds every cell and computes the forces of the cells whose centroid it holds
+  // (FluidDistribution::rank_holding, ImmersedCoupling::share_cells; decided anew before
+  // every step, so a cell whose centroid crosses into another rank's part moves its work
+  // there); the cells read the fluid at their supports, replicated from the nodes' owners,
+  // and the ranks' spread forces are summed there. All ranks must build it together.
   Simulation(const CaseConfig& config, const std::string& mesh_cache_dir, const Communicator* ranks = nullptr);
 
   // One time step of config.time.dt: the coupled step when there are cells, the fluid
@@ -56,6 +57,10 @@ class Simulation {
   // The coupling, or nullptr (no cells, or a steady case).
   ImmersedCoupling* coupling() { return coupling_.get(); }
   const ImmersedCoupling::StepReport& last_report() const { return last_report_; }
+  // Across ranks: the rank computing each cell (the rank holding its centroid), and how many
+  // times a cell has changed rank since this Simulation was built. Empty and 0 otherwise.
+  const std::vector<int>& cell_ranks() const { return cell_ranks_; }
+  int cell_rank_changes() const { return cell_rank_changes_; }
   StageTimes& times() { return times_; }
   const StageTimes& times() const { return times_; }
 
@@ -67,6 +72,9 @@ class Simulation {
   void check_fluid_state() const;
   // Stop (diverged) when a cell element is inverted (J = det F ≤ 0), naming it and its cell.
   void check_cell_elements() const;
+  // Across ranks: each cell to the rank holding its centroid (cell_ranks_); the coupling's
+  // share is set anew when a cell changed rank.
+  void assign_cells_to_ranks();
 
   CaseConfig config_;
   DerivedQuantities derived_;
@@ -78,16 +86,13 @@ class Simulation {
   std::unique_ptr<ImmersedCoupling> coupling_;
   ImmersedCoupling::StepReport last_report_;
   std::vector<double> initial_volumes_;  // each cell's enclosed volume as placed [μm³]
+  std::vector<int> cell_ranks_;          // assign_cells_to_ranks()
+  int cell_rank_changes_ = 0;
   int steps_ = 0;
 };
 
 // The fluid mesh a case describes: a box of hexahedra, periodic where the case says, or a
 // vessel's lumen of tetrahedra (Gmsh, cached in `mesh_cache_dir`).
 FluidMesh make_case_mesh(const CaseConfig& config, const std::string& mesh_cache_dir);
-
-// The cells rank `rank` of `ranks` computes when every rank holds every cell
-// (ImmersedCoupling::share_cells): [first, end), cell c to rank ⌊first_node(c) · P / N⌋ of
-// N nodes in all, so contiguous cells of about N/P nodes each (a rank may get none).
-std::pair<int, int> cell_share(const std::vector<int>& cell_first_node, int num_nodes, int rank, int ranks);
 
 }  // namespace rouleau

@@ -138,6 +138,14 @@ GmresSettings gmres_settings(const SolverConfig& s) {
 }
 }  // namespace
 
+namespace {
+// Whether the solver preconditions with BlockJacobi (one rank; across ranks it is
+// DistributedBlockJacobi).
+bool one_rank_block_jacobi(const FluidDistribution* distribution, const SolverConfig& settings) {
+  return !distribution && settings.preconditioner == PreconditionerType::block_jacobi;
+}
+}  // namespace
+
 FluidSolver::FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid,
                          const std::vector<FluidBoundary>& boundaries, const SolverConfig& settings,
                          const FluidScales& scales, bool stokes, const FluidDistribution* distribution)
@@ -152,7 +160,8 @@ FluidSolver::FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid,
       boundary_(distribution ? localize_boundary_conditions(build_boundary_conditions(mesh, boundaries, scales),
                                                             *distribution)
                              : build_boundary_conditions(mesh, boundaries, scales)),
-      block_jacobi_(operator_.mesh().num_dof_nodes),
+      // The one-rank point-block Jacobi's inverse blocks, only where it is the preconditioner.
+      block_jacobi_(one_rank_block_jacobi(distribution, settings) ? operator_.mesh().num_dof_nodes : 0),
       gmres_(distribution ? distribution->num_owned_unknowns() : mesh.num_unknowns(), gmres_settings(settings),
              distribution ? &distribution->communicator() : nullptr) {
   const FluidMesh& local_mesh = operator_.mesh();
@@ -164,7 +173,8 @@ FluidSolver::FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid,
   body_force_ = Vector("rouleau::FluidSolver::body_force", n);
   residual_ = Vector("rouleau::FluidSolver::residual", n);
   correction_ = Vector("rouleau::FluidSolver::correction", n);
-  blocks_ = Vector("rouleau::FluidSolver::blocks", 16 * local_mesh.num_dof_nodes);
+  if (one_rank_block_jacobi(distribution, settings))
+    blocks_ = Vector("rouleau::FluidSolver::blocks", 16 * local_mesh.num_dof_nodes);
   state_gradient_ = Vector("rouleau::FluidSolver::state_gradient", 9 * local_mesh.num_dof_nodes);
   if (distribution_) operator_.set_node_sums(distribution_->node_sums());
   operator_.set_dirichlet(boundary_.dirichlet_dofs, boundary_.dirichlet_values);

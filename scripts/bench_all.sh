@@ -45,10 +45,12 @@ for step in "${steps[@]}"; do
     mpi)
       /usr/bin/python3 bench/mpi_scaling.py
       # One thread per rank against one rank on one thread; point-block Jacobi is the same
-      # on any rank count (the contraction needs ILU(0): ILU(0) per rank on 2).
-      for preconditioner in block_jacobi ilu0; do
-        cases=rbc_shear,aggregation
+      # on any rank count (the contraction needs ILU(0): ILU(0) per rank on 2; the multigrid
+      # becomes the multigrid per rank).
+      for preconditioner in block_jacobi ilu0 multigrid; do
+        cases=rbc_shear,aggregation,twelve_cells
         [ "$preconditioner" = ilu0 ] && cases=contraction
+        [ "$preconditioner" = multigrid ] && cases=contraction,aggregation
         OMP_PROC_BIND=false /usr/bin/python3 bench/scene_skips.py --rouleau "$build/rouleau" --threads 1 --steps 5 \
           --cases "$cases" --baseline "solver.preconditioner=\"$preconditioner\"" \
           --variant "solver.preconditioner=\"$preconditioner\"" --variant-launcher "mpiexec -n 2 --oversubscribe" \

@@ -311,5 +311,22 @@ TEST(FluidDistribution, APointIsHeldByTheOwnerOfTheNearestNode) {
   }
 }
 
+TEST(FluidDistribution, TheNodesOfAnyRankAreTheUnionInOrderOnEveryRank) {
+  // Rank r lists the dof nodes n with n mod (P + 1) = r, backwards, and node 5 (some twice):
+  // every rank gets the union, ascending, each node once.
+  Distributed d;
+  const FluidDistribution distribution(d.world, d.mesh);
+  const int ranks = d.world.size(), nodes = d.mesh.num_dof_nodes;
+  std::vector<int> mine{5, 5};
+  for (int n = nodes - 1; n >= 0; --n)
+    if (n % (ranks + 1) == d.world.rank()) mine.push_back(n);
+  const auto all = Kokkos::create_mirror_view_and_copy(
+      Kokkos::HostSpace(), distribution.nodes_of_any_rank(device_copy(mine, "rouleau::test::mine")));
+  std::vector<int> expected;
+  for (int n = 0; n < nodes; ++n)
+    if (n % (ranks + 1) < ranks || n == 5) expected.push_back(n);
+  EXPECT_EQ(std::vector<int>(all.data(), all.data() + all.extent(0)), expected);
+}
+
 }  // namespace
 }  // namespace rouleau

@@ -280,6 +280,9 @@ TEST(SurfaceInteraction, SharesOfTheRowsSumToTheWhole) {
       SurfaceInteraction share = make_interaction(*scene.cells, potential, 0.3, half);
       share.share_rows(cells);
       energy += share.compute_forces_and_energy();
+      // A share bins the points of its cells and their partners alone: none for no cells,
+      // and never the far cube (cell 4).
+      EXPECT_LE(share.active_cell_count(), cells.empty() ? 0 : 4);
       const std::vector<Eigen::Vector3d> f = node_forces(*scene.cells, share);
       share.linearize();
       share.force_change(moves, change);

@@ -198,6 +198,60 @@ TEST(Rkpm, SupportNodesAreEveryNodeOfTheRowsOnce) {
   EXPECT_LT(found.size(), static_cast<std::size_t>(mesh.num_dof_nodes) / 2) << "the points fill the box";
 }
 
+TEST(Rkpm, RestrictedRowsAreTheFullRowsOfTheActivePointsAndEmptyElsewhere) {
+  // restrict_rows (a rank's own and ghost cells, issue 10): against the rows of every
+  // point, the active points' rows are the same nodes and shape functions bit for bit,
+  // the others are empty (interpolation gives them zero, spreading takes nothing from
+  // them), and a point outside the fluid is refused only when it is active.
+  const FluidMesh mesh = make_box_mesh({0, 0, 0}, {8, 6, 6}, {8, 6, 6}, {1, 1.3, 1}, {true, false, true});
+  const RkpmCoupler::PointVectors points = random_points(mesh, 40, 0.2, 17);
+  RkpmCoupler every(mesh), some(mesh);
+  every.update(points);
+  Kokkos::View<int*> active("active", 40);
+  auto ha = Kokkos::create_mirror_view(active);
+  for (int p = 0; p < 40; ++p) ha(p) = p % 3 == 1;
+  Kokkos::deep_copy(active, ha);
+  some.restrict_rows(active);
+  some.update(points);
+  const auto full_offsets = host_copy(every.offsets()), offsets = host_copy(some.offsets());
+  const auto full_nodes = host_copy(every.nodes()), nodes = host_copy(some.nodes());
+  const auto full_phi = host_copy(every.shape_functions()), phi = host_copy(some.shape_functions());
+  int mismatches = 0;
+  for (int p = 0; p < 40; ++p) {
+    const int count = offsets(p + 1) - offsets(p);
+    if (!ha(p)) {
+      mismatches += count != 0;
+      continue;
+    }
+    mismatches += count != full_offsets(p + 1) - full_offsets(p);
+    for (int k = 0; k < count && k < full_offsets(p + 1) - full_offsets(p); ++k)
+      mismatches += nodes(offsets(p) + k) != full_nodes(full_offsets(p) + k) ||
+                    phi(offsets(p) + k) != full_phi(full_offsets(p) + k);
+  }
+  EXPECT_EQ(mismatches, 0);
+  // A field linear across the walls (and constant along the periodic directions): the
+  // active points get it, the others zero.
+  const auto field = [](double, double y, double) { return std::array<double, 3>{1 + 0.5 * y, 2 - y, 3.0}; };
+  RkpmCoupler::PointVectors values("values", 40);
+  some.interpolate(nodal_field(mesh, field), 4, values);
+  const auto v = host_copy(values), x = host_copy(points);
+  double worst = 0.0;
+  for (int p = 0; p < 40; ++p) {
+    const auto exact = field(x(p, 0), x(p, 1), x(p, 2));
+    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(v(p, c) - (ha(p) ? exact[c] : 0.0)));
+  }
+  EXPECT_LT(worst, 1e-12);
+  // An inactive point outside the fluid is not refused; an active one is.
+  auto hx = Kokkos::create_mirror_view(points);
+  Kokkos::deep_copy(hx, points);
+  hx(0, 1) = -50.0;  // point 0 is inactive
+  Kokkos::deep_copy(points, hx);
+  EXPECT_NO_THROW(some.update(points));
+  hx(1, 1) = -50.0;  // point 1 is active
+  Kokkos::deep_copy(points, hx);
+  EXPECT_THROW(some.update(points), PointsOutsideFluidError);
+}
+
 TEST(Rkpm, ReproducesLinearFieldsNextToTheCurvedWallOfAVessel) {
   // A Gmsh contraction (3 → 1.5 μm) of tetrahedra: the supports are truncated by the
   // curved wall and the node spacing is irregular everywhere, so the correction runs at

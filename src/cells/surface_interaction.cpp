@@ -194,6 +194,7 @@ void BasicSurfaceInteraction<ExecSpace>::share_rows(const std::vector<int>& cell
     rows[c] = 1;
   }
   row_cells_ = device_copy(rows, "rouleau::SurfaceInteraction::row_cells");
+  row_cells_host_ = rows;
   rows_shared_ = true;
   built_ = false;  // the next force evaluation builds the list with these rows
   linearized_ = false;
@@ -209,6 +210,8 @@ void BasicSurfaceInteraction<ExecSpace>::rebuild() {
 
   // Broad phase: each cell's bounding box, then the pairs of cells whose boxes grown by
   // the search radius meet, by sweep and prune along x (sorted by lower x; O(N log N + K)).
+  // With shared rows only the pairs with a cell of the rows count: the other cells' points
+  // are left out of the bins.
   auto boxes = cell_boxes_;
   auto first_point = cell_first_point_device_;
   Kokkos::parallel_for(
@@ -241,7 +244,8 @@ void BasicSurfaceInteraction<ExecSpace>::rebuild() {
       bool meet = true;
       for (int d = 1; d < 3; ++d)
         meet = meet && host_boxes(q, d) <= host_boxes(p, 3 + d) + reach && host_boxes(p, d) <= host_boxes(q, 3 + d) + reach;
-      if (meet) cell_active[p] = cell_active[q] = 1;
+      // A shared list (share_rows) needs only the pairs with a cell of its rows.
+      if (meet && (!rows_shared_ || row_cells_host_[p] || row_cells_host_[q])) cell_active[p] = cell_active[q] = 1;
     }
   }
   Kokkos::View<int*> active_cells("rouleau::SurfaceInteraction::cell_active", n_cells);
@@ -383,8 +387,22 @@ void BasicSurfaceInteraction<ExecSpace>::rebuild() {
       KOKKOS_LAMBDA(const int i) {
         for (int c = 0; c < 3; ++c) at_build(i, c) = point_positions(i, c);
       });
+  // The cells of the list's rows and columns.
+  if (static_cast<int>(cells_in_list_.extent(0)) != n_cells)
+    cells_in_list_ = Kokkos::View<int*>("rouleau::SurfaceInteraction::cells_in_list", n_cells);
+  else
+    Kokkos::deep_copy(cells_in_list_, 0);
+  auto in_list = cells_in_list_;
+  Kokkos::parallel_for(
+      "rouleau::SurfaceInteraction::cells_in_list", Kokkos::RangePolicy<ExecSpace>(0, n_points),
+      KOKKOS_LAMBDA(const int i) {
+        if (offsets(i + 1) == offsets(i)) return;
+        Kokkos::atomic_fetch_max(&in_list(point_cell(i)), 1);
+        for (int k = offsets(i); k < offsets(i + 1); ++k) Kokkos::atomic_fetch_max(&in_list(point_cell(neighbors(k))), 1);
+      });
   built_ = true;
   ++rebuilds_;
+  ++list_version_;
 }
 
 template <class ExecSpace>

@@ -71,7 +71,13 @@ class BasicSurfaceInteraction {
   const Kokkos::View<int*>& neighbors() const { return neighbors_; }
   int num_list_entries() const { return list_entries_; }
   int rebuild_count() const { return rebuilds_; }
-  // Cells that take part in pair work after the last broad phase.
+  // Per cell: 1 when a point of it is a row or a column of the list (the cells whose nodes
+  // the pairs of this rank's rows move, share_rows), else 0; and how many times the list
+  // has been built by this object (the flags change only then).
+  const Kokkos::View<int*>& cells_in_list() const { return cells_in_list_; }
+  int list_version() const { return list_version_; }
+  // Cells that take part in pair work after the last broad phase (with shared rows: the
+  // rows' cells that have a partner, and their partners).
   int active_cell_count() const { return active_cells_; }
   double search_radius() const { return search_radius_; }
 
@@ -120,7 +126,10 @@ class BasicSurfaceInteraction {
   Kokkos::View<int*> neighbor_offsets_, neighbors_;
   BinGrid grid_{};
   int list_entries_ = 0, rebuilds_ = 0, active_cells_ = 0;
+  Kokkos::View<int*> cells_in_list_;  // cells_in_list()
+  int list_version_ = 0;
   Kokkos::View<int*> row_cells_;                 // (cell): 1 when its points are rows (share_rows)
+  std::vector<int> row_cells_host_;              // the same on the host
   bool rows_shared_ = false;                     // share_rows() was called
   bool built_ = false;
   using Scatter = Kokkos::Experimental::ScatterView<double* [3], typename PointVectors::array_layout,

@@ -31,6 +31,17 @@ std::vector<double> nodal_excess_mass(const CellPopulation& population, const Ca
   return mass;
 }
 
+// transferred(n) = 1 for the nodes whose fluid transfer (RKPM rows) this rank needs: those
+// of its own cells (computed(n)) and of the cells its Morse pairs reach (in_list of the
+// node's cell; none when `in_list` is empty).
+void mark_transferred_nodes(const Kokkos::View<const int*>& node_cell, const Kokkos::View<const int*>& computed,
+                            const Kokkos::View<const int*>& in_list, const Kokkos::View<int*>& transferred) {
+  const bool with_list = in_list.extent(0) > 0;
+  Kokkos::parallel_for(
+      "rouleau::ImmersedCoupling::transferred_nodes", Kokkos::RangePolicy<ExecSpace>(0, transferred.extent(0)),
+      KOKKOS_LAMBDA(const int n) { transferred(n) = computed(n) || (with_list && in_list(node_cell(n))); });
+}
+
 // Σ_i a_i b_i over a flat or a (node, 3) View pair.
 template <class View, class OtherView>
 double dot(const View& a, const OtherView& b) {
@@ -155,6 +166,7 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
   // ranks the cells read the fluid at their supports alone, and a share's forces are
   // summed there over the ranks.
   times.time(spread_stage, [&] {
+    if (shares_) restrict_transfers();
     try {
       rkpm_.update(population_.positions());
     } catch (const PointsOutsideFluidError& error) {
@@ -165,7 +177,11 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
            << error.count() << " cell nodes outside in all)";
       throw std::runtime_error(what.str());
     }
-    if (fluid_.distribution()) fluid_.set_replicated_nodes(rkpm_.support_nodes());
+    // Across ranks the union of the ranks' supports is replicated (each rank's own alone
+    // when every rank transfers every cell).
+    if (fluid_.distribution())
+      fluid_.set_replicated_nodes(shares_ ? fluid_.distribution()->nodes_of_any_rank(rkpm_.support_nodes())
+                                          : rkpm_.support_nodes());
     Kokkos::deep_copy(fluid_load_, 0.0);
     rkpm_.spread(fsi_forces_, fluid_load_, fluid_unknowns_per_node);
     if (shares_) fluid_.sum_over_ranks(fluid_load_);
@@ -206,9 +222,14 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
       if (shares_) fluid_.sum_over_ranks(fluid_load_);
       fluid_.set_immersed_forces(fluid_load_);
     });
-  // 4. interpolate
-  times.time(interpolate_stage,
-             [&] { rkpm_.interpolate(cell_carrier, fluid_unknowns_per_node, interpolated_); });
+  // 4. interpolate; across ranks each cell's velocities come from the rank computing it.
+  times.time(interpolate_stage, [&] {
+    rkpm_.interpolate(cell_carrier, fluid_unknowns_per_node, interpolated_);
+    if (shares_) {
+      keep_nodes(interpolated_, computed_nodes_);
+      sum_over_ranks(interpolated_);
+    }
+  });
   // 5. move
   double largest_speed2 = 0.0;
   times.time(move_stage, [&] {
@@ -240,6 +261,7 @@ void ImmersedCoupling::share_cells(const std::vector<int>& cells) {
   for (const int c : cells)
     for (int n = first[c]; n < first[c] + count[c]; ++n) computed[n] = 1;
   computed_nodes_ = device_copy(computed, "rouleau::ImmersedCoupling::computed_nodes");
+  transferred_nodes_ = Kokkos::View<int*>();  // marked anew at the next spread (restrict_transfers)
   // The inertia and buoyancy forces of this rank's nodes alone.
   if (excess_mass_.extent(0) > 0) {
     if (every_excess_mass_.extent(0) == 0) {
@@ -255,6 +277,25 @@ void ImmersedCoupling::share_cells(const std::vector<int>& cells) {
   }
   shares_ = true;
   fluid_.set_immersed_shares(true);
+}
+
+void ImmersedCoupling::restrict_transfers() {
+  const int version = interaction_ ? interaction_->list_version() : 0;
+  if (transferred_nodes_.extent(0) > 0 && version == transferred_list_version_) return;
+  if (transferred_nodes_.extent(0) == 0)
+    transferred_nodes_ = Kokkos::View<int*>("rouleau::ImmersedCoupling::transferred_nodes", population_.num_nodes());
+  mark_transferred_nodes(population_.node_cell(), computed_nodes_,
+                         interaction_ ? interaction_->cells_in_list() : Kokkos::View<int*>(), transferred_nodes_);
+  transferred_list_version_ = version;
+  rkpm_.restrict_rows(transferred_nodes_);
+}
+
+void ImmersedCoupling::sum_over_ranks(const NodeVectors& values) {
+  if (host_node_vectors_.extent(0) != values.extent(0))
+    host_node_vectors_ = Kokkos::create_mirror(values);  // a buffer of its own, also on the host
+  Kokkos::deep_copy(host_node_vectors_, values);
+  fluid_.distribution()->communicator().sum(host_node_vectors_.data(), 3 * static_cast<int>(values.extent(0)));
+  Kokkos::deep_copy(values, host_node_vectors_);
 }
 
 void ImmersedCoupling::save_state(CheckpointData& data) const {

@@ -85,6 +85,12 @@ class ImmersedCoupling {
   const RkpmCoupler& rkpm() const { return rkpm_; }
 
  private:
+  // Across ranks: marks transferred_nodes_ anew when the share or the Morse list changed,
+  // and restricts the RKPM rows to them.
+  void restrict_transfers();
+  // values ← Σ_ranks values (through host memory).
+  void sum_over_ranks(const NodeVectors& values);
+
   FluidSolver& fluid_;
   CellPopulation& population_;
   SurfaceInteraction* interaction_;
@@ -113,6 +119,12 @@ class ImmersedCoupling {
   std::unique_ptr<CellStiffness> stiffness_;  // the semi-implicit coupling's K, or null
   bool shares_ = false;                       // share_cells()
   Kokkos::View<int*> computed_nodes_;         // (node): 1 at this rank's cells' nodes (share_cells), else empty
+  // Across ranks: the nodes this rank transfers (its cells' and those its Morse pairs
+  // reach: the RKPM rows, RkpmCoupler::restrict_rows), marked for list version
+  // transferred_list_version_; a host buffer for sums of node vectors over the ranks.
+  Kokkos::View<int*> transferred_nodes_;
+  int transferred_list_version_ = -1;
+  NodeVectors::HostMirror host_node_vectors_;
   NodeVectors stiffness_scratch_;           // interaction or wall forces while K is differenced
   NodeVectors force_change_;                // K Δt I u^{n+1} [pN] of the semi-implicit step
 };

@@ -97,10 +97,16 @@ void BasicRkpmCoupler<ExecSpace>::fill_rows(const PointVectors& points, bool cou
   auto nodes = nodes_;
   auto phi = shape_functions_;
   const bool always_correct = always_correct_;
+  const bool restricted = active_points_.extent(0) > 0;
+  auto active = active_points_;
   int corrected = 0;
   Kokkos::parallel_reduce(
       "rouleau::RkpmCoupler::shape_functions", Kokkos::RangePolicy<ExecSpace>(0, num_points_),
       KOKKOS_LAMBDA(const int p, int& corrected_count) {
+        if (restricted && !active(p)) {  // an empty row (restrict_rows)
+          if (count_only) offsets(p + 1) = 0;
+          return;
+        }
         const double x[3] = {points(p, 0), points(p, 1), points(p, 2)};
         int home[3];
         for (int d = 0; d < 3; ++d) home[d] = search.bin_coordinate(x[d], d);
@@ -177,6 +183,9 @@ template <class ExecSpace>
 void BasicRkpmCoupler<ExecSpace>::update(const PointVectors& points) {
   ProfilingRegion region("rouleau::RkpmCoupler::update");
   num_points_ = static_cast<int>(points.extent(0));
+  if (active_points_.extent(0) > 0 && static_cast<int>(active_points_.extent(0)) != num_points_)
+    throw std::invalid_argument("rouleau::RkpmCoupler::update: " + std::to_string(num_points_) + " points, but " +
+                                std::to_string(active_points_.extent(0)) + " flags of restrict_rows()");
   if (static_cast<int>(offsets_.extent(0)) != num_points_ + 1)
     offsets_ = Kokkos::View<int*>("rouleau::RkpmCoupler::offsets", num_points_ + 1);
   Kokkos::deep_copy(offsets_, 0);
@@ -194,16 +203,20 @@ void BasicRkpmCoupler<ExecSpace>::update(const PointVectors& points) {
     nodes_ = Kokkos::View<int*>("rouleau::RkpmCoupler::nodes", entries + entries / 5);
     shape_functions_ = Kokkos::View<double*>("rouleau::RkpmCoupler::shape_functions", entries + entries / 5);
   }
+  // Active points with an empty support have left the fluid.
+  const bool restricted = active_points_.extent(0) > 0;
+  auto active = active_points_;
+  auto outside = KOKKOS_LAMBDA(const int p) { return offsets(p + 1) == offsets(p) && (!restricted || active(p)); };
   int empty = 0;
   Kokkos::parallel_reduce(
       "rouleau::RkpmCoupler::empty_supports", Kokkos::RangePolicy<ExecSpace>(0, num_points_),
-      KOKKOS_LAMBDA(const int p, int& n) { n += offsets(p + 1) == offsets(p) ? 1 : 0; }, empty);
+      KOKKOS_LAMBDA(const int p, int& n) { n += outside(p) ? 1 : 0; }, empty);
   if (empty > 0) {
     int first = num_points_;
     Kokkos::parallel_reduce(
         "rouleau::RkpmCoupler::first_empty_support", Kokkos::RangePolicy<ExecSpace>(0, num_points_),
         KOKKOS_LAMBDA(const int p, int& lowest) {
-          if (offsets(p + 1) == offsets(p) && p < lowest) lowest = p;
+          if (outside(p) && p < lowest) lowest = p;
         },
         Kokkos::Min<int>(first));
     throw PointsOutsideFluidError(empty, first);

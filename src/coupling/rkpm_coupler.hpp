@@ -45,6 +45,12 @@ class BasicRkpmCoupler {
   // Throws PointsOutsideFluidError when a point has no fluid node in its support (it is
   // outside the fluid domain).
   void update(const PointVectors& points);
+  // From the next update() on, rows only for the points p with active(p) ≠ 0 (a rank's
+  // cells and those its Morse pairs reach, issue 10): the others get empty rows, so
+  // interpolation gives them zero and spreading takes nothing from them, and only the
+  // active points are checked for leaving the fluid. An empty view: every point (the
+  // default).
+  void restrict_rows(const Kokkos::View<const int*>& active) { active_points_ = active; }
 
   // values(p, c) = Σ_J Φ_J(x_p) nodal(stride · J + c), c = 0, 1, 2.
   void interpolate(const Kokkos::View<const double*>& nodal, int stride, const PointVectors& values) const;
@@ -73,6 +79,7 @@ class BasicRkpmCoupler {
   Kokkos::View<double* [3]> node_support_;   // a_Jd [μm]
   Kokkos::View<int*> bin_offsets_, binned_nodes_;
   Kokkos::View<int*> offsets_, nodes_;
+  Kokkos::View<const int*> active_points_;  // restrict_rows()
   Kokkos::View<double*> shape_functions_;
   // Spreading's persistent buffers (per-thread copies on CPUs, the atomic target on GPUs).
   using Scatter = Kokkos::Experimental::ScatterView<double*, typename Kokkos::View<double*>::array_layout,

@@ -161,6 +161,40 @@ void FluidDistribution::localize(const ConstVector& global, const Vector& local)
   take_local(global_node_, global, local);
 }
 
+Kokkos::View<int*> FluidDistribution::nodes_of_any_rank(const Kokkos::View<const int*>& nodes) const {
+  const int global_nodes = partition_.num_global_nodes;
+  const int words = (global_nodes + 31) / 32;
+  if (static_cast<int>(node_bits_.extent(0)) != words) {
+    node_bits_ = Kokkos::View<unsigned*>("rouleau::FluidDistribution::node_bits", words);
+    host_node_bits_ = Kokkos::create_mirror_view(Kokkos::HostSpace(), node_bits_);
+  } else {
+    Kokkos::deep_copy(node_bits_, 0u);
+  }
+  auto bits = node_bits_;
+  Kokkos::parallel_for(
+      "rouleau::FluidDistribution::mark_nodes", Kokkos::RangePolicy<ExecSpace>(0, nodes.extent(0)),
+      KOKKOS_LAMBDA(const int k) { Kokkos::atomic_fetch_or(&bits(nodes(k) / 32), 1u << (nodes(k) % 32)); });
+  Kokkos::deep_copy(host_node_bits_, node_bits_);
+  communicator_.bitwise_or(host_node_bits_.data(), words);
+  Kokkos::deep_copy(node_bits_, host_node_bits_);
+  // The marked nodes in order: position = the number marked before.
+  auto marked = KOKKOS_LAMBDA(const int n) { return (bits(n / 32) >> (n % 32)) & 1u; };
+  int count = 0;
+  Kokkos::parallel_reduce(
+      "rouleau::FluidDistribution::count_nodes", Kokkos::RangePolicy<ExecSpace>(0, global_nodes),
+      KOKKOS_LAMBDA(const int n, int& sum) { sum += static_cast<int>(marked(n)); }, count);
+  if (static_cast<int>(nodes_of_any_rank_.extent(0)) < count)
+    nodes_of_any_rank_ = Kokkos::View<int*>("rouleau::FluidDistribution::nodes_of_any_rank", count + count / 5);
+  const auto all = Kokkos::subview(nodes_of_any_rank_, std::make_pair(0, count));
+  Kokkos::parallel_scan(
+      "rouleau::FluidDistribution::compact_nodes", Kokkos::RangePolicy<ExecSpace>(0, global_nodes),
+      KOKKOS_LAMBDA(const int n, int& before, const bool final) {
+        if (final && marked(n)) all(before) = n;
+        before += static_cast<int>(marked(n));
+      });
+  return all;
+}
+
 std::vector<int> FluidDistribution::rank_holding(const std::vector<std::array<double, 3>>& points) const {
   std::vector<double> distance(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) distance[i] = owned_node_positions_.nearest_distance(points[i]);

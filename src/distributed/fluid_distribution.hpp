@@ -64,6 +64,11 @@ class FluidDistribution {
   // each rank holds its share of a sum (the forces its cells spread); the other entries
   // are left as they are. One MPI_Allreduce of 4 values per node.
   void sum_at_nodes(const Vector& global, const Kokkos::View<const int*>& nodes) const;
+  // The union of every rank's `nodes` (global dof nodes: the supports of the cells each
+  // rank transfers), ascending, the same on every rank, as replicate() and sum_at_nodes()
+  // need: one MPI_Allreduce of a bit per global dof node. A view of a buffer the next call
+  // overwrites.
+  Kokkos::View<int*> nodes_of_any_rank(const Kokkos::View<const int*>& nodes) const;
   // local ← global at every local dof node, owned and copies.
   void localize(const ConstVector& global, const Vector& local) const;
   // The local dof node of a global one, or −1 when the rank holds none.
@@ -86,6 +91,10 @@ class FluidDistribution {
   Kokkos::View<int*> global_node_;  // local dof node → global dof node (device)
   Kokkos::View<int*> owned_local_;  // global dof node → its local node where this rank owns it, else −1 (device)
   mutable Vector node_buffer_;      // replicate() at some nodes
+  // nodes_of_any_rank(): one bit per global dof node (device and host), and the list.
+  mutable Kokkos::View<unsigned*> node_bits_;
+  mutable Kokkos::View<unsigned*, Kokkos::HostSpace> host_node_bits_;
+  mutable Kokkos::View<int*> nodes_of_any_rank_;
   mutable Kokkos::View<double*, Kokkos::HostSpace> host_buffer_;
   // The first 4·nodes entries of a persistent device buffer.
   Vector node_buffer(int nodes) const;

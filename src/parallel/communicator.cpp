@@ -50,6 +50,10 @@ double Communicator::max(double value) const {
   return largest;
 }
 
+void Communicator::bitwise_or(unsigned* values, const int count) const {
+  check(MPI_Allreduce(MPI_IN_PLACE, values, count, MPI_UNSIGNED, MPI_BOR, MPI_COMM_WORLD), "MPI_Allreduce");
+}
+
 std::vector<int> Communicator::rank_of_smallest(const std::vector<double>& values) const {
   struct ValueAndRank {
     double value;
@@ -133,6 +137,7 @@ double Communicator::sum(double value) const { return value; }
 long long Communicator::sum(long long value) const { return value; }
 double Communicator::max(double value) const { return value; }
 void Communicator::sum(double*, int) const {}
+void Communicator::bitwise_or(unsigned*, int) const {}
 std::vector<int> Communicator::rank_of_smallest(const std::vector<double>& values) const {
   return std::vector<int>(values.size(), 0);
 }

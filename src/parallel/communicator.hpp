@@ -24,6 +24,8 @@ class Communicator {
   double max(double value) const;
   // values[i] ← Σ_ranks values[i], i < count, in place (one MPI_Allreduce).
   void sum(double* values, int count) const;
+  // values[i] ← the bitwise OR over the ranks of values[i], i < count, in place.
+  void bitwise_or(unsigned* values, int count) const;
   // For each i, the rank whose values[i] is the smallest (the lowest such rank on ties):
   // one MPI_Allreduce with MPI_MINLOC. On one rank, zeros.
   std::vector<int> rank_of_smallest(const std::vector<double>& values) const;

@@ -7,8 +7,10 @@ point-block Jacobi GMRES; every figure is the median over repeats of the slowest
   strong   one box of --strong elements: 1 rank x 1 thread, 1 rank x 2 threads (OpenMP),
            2 ranks x 1 thread (MPI)
   weak     --weak elements per rank: 1 rank, then 2 ranks on the box doubled in x
-Columns: the distributed Stokes action, its halo exchange alone (update_copies +
-sum_into_owners), one MPI_Allreduce of 61 doubles, and a GMRES(30) iteration.
+Columns: the distributed Stokes action (its exchanges overlapped with the interior
+elements), the same action with the exchanges after the whole element loop, the halo
+exchange alone (update_copies + sum_into_owners), one MPI_Allreduce of 61 doubles, and a
+GMRES(30) iteration.
 
 Model (per GMRES iteration, P ranks, a cube of elements split into P cubic blocks of
 s^3 elements, s = (E/P)^(1/3)):
@@ -16,7 +18,14 @@ s^3 elements, s = (E/P)^(1/3)):
              thread (operator, preconditioner and vector work together);
   halo       3 exchanges per action (copies; then the sums to the owners and back) to 26
              neighbours (6 faces of (s+1)^2 nodes, 12 edges of s+1, 8 corners), 4 values of
-             8 bytes per node: 3 [26 alpha + 32 ((6 (s+1)^2 + 12 (s+1) + 8)) / beta];
+             8 bytes per node: 3 x, x = 26 alpha + 32 ((6 (s+1)^2 + 12 (s+1) + 8)) / beta;
+  overlap    the two exchanges of the sums travel while the interior elements ((s-2)^3 of
+             them, half behind each) are summed: exposed x + 2 max(0, x - t_a (s-2)^3 / 2),
+             t_a the measured action time per element (action_s on 1 rank x 1 thread). The
+             overlap needs the messages to progress while the rank computes: on GPUs the
+             kernels run asynchronously while the host waits in MPI; on CPU ranks it
+             takes an MPI with asynchronous progress (RDMA, or a progress thread) for
+             messages above the eager limit;
   reductions 3 MPI_Allreduce per iteration (CGS2; the norm comes with the last):
              3 x 2 log2(P) alpha.
 Network: a typical InfiniBand HDR100 fabric, alpha = 1.5 us latency, beta = 12 GB/s per
@@ -54,15 +63,19 @@ def run(binary, ranks, threads, elements, repeats):
     return next(csv.DictReader(io.StringIO("\n".join(lines))))
 
 
-def model(elements, ranks, seconds_per_element):
+def model(elements, ranks, seconds_per_element, action_seconds_per_element, speedup=1.0):
+    """(compute, halo without overlap, halo exposed with overlap, reductions) per iteration [s]."""
     side = (elements / ranks) ** (1 / 3)
-    compute = seconds_per_element * elements / ranks
+    compute = seconds_per_element * elements / ranks / speedup
     if ranks == 1:
-        return compute, 0.0, 0.0
+        return compute, 0.0, 0.0, 0.0
     nodes = 6 * (side + 1) ** 2 + 12 * (side + 1) + 8
-    halo = 3 * (26 * LATENCY_S + BYTES_PER_NODE * nodes / BANDWIDTH_B_S)
+    exchange = 26 * LATENCY_S + BYTES_PER_NODE * nodes / BANDWIDTH_B_S
+    halo = 3 * exchange
+    interior = action_seconds_per_element * max(0.0, side - 2) ** 3 / speedup
+    halo_exposed = exchange + 2 * max(0.0, exchange - interior / 2)
     reductions = 3 * 2 * math.log2(ranks) * LATENCY_S
-    return compute, halo, reductions
+    return compute, halo, halo_exposed, reductions
 
 
 def main():
@@ -83,17 +96,19 @@ def main():
 
     base = rows[0]
     seconds_per_element = float(base["iteration_s"]) / float(base["elements_per_rank"])
+    action_seconds_per_element = float(base["action_s"]) / float(base["elements_per_rank"])
     for row in rows:
         row["speedup_vs_1_rank_1_thread"] = ""
     for row in rows[:3]:
         row["speedup_vs_1_rank_1_thread"] = f"{float(base['iteration_s']) / float(row['iteration_s']):.3f}"
     rows[4]["speedup_vs_1_rank_1_thread"] = f"{float(rows[3]['iteration_s']) / float(rows[4]['iteration_s']):.3f}"
 
-    print(f"{'study':7} {'ranks':>5} {'thr':>3} {'unknowns':>9} {'action ms':>9} {'exchange ms':>11} "
-          f"{'allreduce us':>12} {'iteration ms':>12} {'speed-up':>8}")
+    print(f"{'study':7} {'ranks':>5} {'thr':>3} {'unknowns':>9} {'action ms':>9} {'no overlap':>10} "
+          f"{'exchange ms':>11} {'allreduce us':>12} {'iteration ms':>12} {'speed-up':>8}")
     for r in rows:
         print(f"{r['study']:7} {r['ranks']:>5} {r['threads']:>3} {r['unknowns']:>9} "
-              f"{1e3 * float(r['action_s']):9.3f} {1e3 * float(r['exchange_s']):11.3f} "
+              f"{1e3 * float(r['action_s']):9.3f} {1e3 * float(r['action_after_loop_s']):10.3f} "
+              f"{1e3 * float(r['exchange_s']):11.3f} "
               f"{1e6 * float(r['allreduce_s']):12.2f} {1e3 * float(r['iteration_s']):12.3f} "
               f"{r['speedup_vs_1_rank_1_thread']:>8}")
 
@@ -105,22 +120,34 @@ def main():
     for ranks in (1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1000):
         for study, elements in (("model strong 1e7 unknowns", strong_elements),
                                 ("model weak", weak_elements * ranks)):
-            compute, halo, reductions = model(elements, ranks, seconds_per_element)
+            compute, halo, exposed, reductions = model(elements, ranks, seconds_per_element,
+                                                       action_seconds_per_element)
             total = compute + halo + reductions
+            overlapped = compute + exposed + reductions
             # the same ranks as GPUs, GPU_SPEEDUP times faster per element, same network
-            gpu_total = compute / GPU_SPEEDUP + halo + reductions
+            gpu_compute, _, gpu_exposed, _ = model(elements, ranks, seconds_per_element,
+                                                   action_seconds_per_element, GPU_SPEEDUP)
+            gpu_total = gpu_compute + halo + reductions
+            gpu_overlapped = gpu_compute + gpu_exposed + reductions
             model_rows.append(dict(study=study, ranks=ranks, elements=int(elements), compute_s=compute, halo_s=halo,
-                                   reductions_s=reductions, iteration_s=total,
+                                   halo_exposed_s=exposed, reductions_s=reductions, iteration_s=total,
                                    communication_fraction=(halo + reductions) / total,
+                                   overlapped_iteration_s=overlapped,
+                                   overlapped_communication_fraction=(exposed + reductions) / overlapped,
                                    gpu_iteration_s=gpu_total,
-                                   gpu_communication_fraction=(halo + reductions) / gpu_total))
+                                   gpu_communication_fraction=(halo + reductions) / gpu_total,
+                                   gpu_overlapped_iteration_s=gpu_overlapped,
+                                   gpu_overlapped_communication_fraction=(gpu_exposed + reductions) / gpu_overlapped))
     print(f"\nmodel ({seconds_per_element * 1e9:.0f} ns per element per iteration, alpha {LATENCY_S * 1e6} us, "
           f"beta {BANDWIDTH_B_S / 1e9} GB/s)")
     for m in model_rows:
         if m["ranks"] in (1, 8, 64, 512, 1000):
             print(f"  {m['study']:26} P={m['ranks']:5d}: iteration {1e3 * m['iteration_s']:9.3f} ms, "
-                  f"communication {100 * m['communication_fraction']:5.1f} %; as GPU ranks "
-                  f"{1e3 * m['gpu_iteration_s']:8.3f} ms, communication {100 * m['gpu_communication_fraction']:5.1f} %")
+                  f"communication {100 * m['communication_fraction']:5.1f} % "
+                  f"({100 * m['overlapped_communication_fraction']:5.1f} % overlapped); as GPU ranks "
+                  f"{1e3 * m['gpu_iteration_s']:8.3f} ms, communication {100 * m['gpu_communication_fraction']:5.1f} % "
+                  f"({100 * m['gpu_overlapped_communication_fraction']:5.1f} % overlapped, "
+                  f"{1e3 * m['gpu_overlapped_iteration_s']:8.3f} ms)")
 
     measured_fields = list(rows[0].keys())
     model_fields = list(model_rows[0].keys())
@@ -142,6 +169,9 @@ def main():
         ax.loglog(ranks, [m["iteration_s"] for m in ms], "k-", label="model: total")
         ax.loglog(ranks, [m["compute_s"] for m in ms], "b--", label="compute")
         ax.loglog(ranks[1:], [m["halo_s"] + m["reductions_s"] for m in ms[1:]], "r:", label="communication")
+        ax.loglog(ranks[1:], [m["halo_exposed_s"] + m["reductions_s"] for m in ms[1:]], "r-", alpha=0.5,
+                  label="communication left exposed by the overlap")
+        ax.loglog(ranks, [m["gpu_overlapped_iteration_s"] for m in ms], "g-.", label="GPU ranks, overlapped: total")
         ax.set_xlabel("ranks")
         ax.set_ylabel("s per GMRES iteration")
         ax.set_title(title)

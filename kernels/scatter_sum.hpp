@@ -29,4 +29,18 @@ void gather_into(const Target& target, const Scatter& scatter) {
   }
 }
 
+// target += the scatter buffer's contributions.
+template <class Target, class Scatter>
+void add_into(const Target& target, const Scatter& scatter) {
+  if constexpr (IsDuplicated<Scatter>::value) {
+    scatter.contribute_into(target);
+  } else {
+    using ExecSpace = typename Scatter::execution_space;
+    const auto sums = scatter.subview();
+    Kokkos::parallel_for(
+        "rouleau::add_into", Kokkos::RangePolicy<ExecSpace>(0, target.extent(0)),
+        KOKKOS_LAMBDA(const int i) { target(i) += sums(i); });
+  }
+}
+
 }  // namespace rouleau

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <Kokkos_Core.hpp>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -187,30 +188,56 @@ TEST(NodeSums, MakeTheRankOperatorsWholeWithTheViscousReconstruction) {
   // gradient in the strong residual: a lumped L2 projection, whose element sums and mass at
   // a shared node need the other ranks' elements), on the box's blocks and on a METIS
   // partition of its tetrahedra. With the operator's node sums every local entry, owned or
-  // copy, is the global one to 1e-13 of the largest; without them the shared nodes are off.
+  // copy, is the global one to 1e-13 of the largest, whether the exchanges travel while the
+  // interior elements are summed (the default) or after the whole loop; without them the
+  // shared nodes are off. The point-block diagonal (16 values per node) the same way.
   for (const FluidMesh& mesh : partitioned_meshes()) {
     Distributed d(mesh);
     const int n = d.mesh.num_unknowns();
     const HostVector state = random_vector(n, 31), direction = random_vector(n, 32);
     const FluidCoefficients c = transient_coefficients(1, 1);
     const WholeMeshAction expected = whole_mesh_action(d.mesh, c, state, direction);
-    double differences[2];
-    for (const bool summed : {false, true}) {
+    if (d.world.size() > 1) {  // both kinds of element on every rank: the overlap has work to hide behind
+      EXPECT_GT(d.partition.num_boundary_elements, 0);
+      EXPECT_LT(d.partition.num_boundary_elements, static_cast<int>(d.partition.elements.size()));
+    }
+    enum Sums { none, after_the_loop, overlapped };
+    double differences[3];
+    Vector actions[3], blocks[3];
+    for (const Sums sums_mode : {none, after_the_loop, overlapped}) {
       FluidOperator local(d.local_mesh, 1.0);
       local.set_coefficients(c);
-      const NodeSums sums(d.world, d.partition);
-      if (summed) local.set_node_sums([&sums](const Vector& values, int components) { sums(values, components); });
-      Vector action("action", 4 * d.partition.num_local_nodes());
+      NodeSums sums(d.world, d.partition);
+      sums.set_overlap(sums_mode == overlapped);
+      if (sums_mode != none) local.set_node_sums(&sums);
+      Vector& action = actions[sums_mode] = Vector("action", 4 * d.partition.num_local_nodes());
+      blocks[sums_mode] = Vector("blocks", 16 * d.partition.num_local_nodes());
       local.jacobian_action(d.local_part(state), d.local_part(direction), action);
-      if (!summed) d.halo.sum_into_owners(action);  // the action's own sums, but not the gradient's
-      differences[summed] = d.largest_difference(action, expected.values);
+      local.diagonal_blocks(d.local_part(state), blocks[sums_mode]);
+      if (sums_mode == none) d.halo.sum_into_owners(action);  // the action's own sums, but not the gradient's
+      differences[sums_mode] = d.largest_difference(action, expected.values);
     }
+    // overlapped against after the loop: the same sums in another order
+    const auto largest_gap = [&](const Vector& a, const Vector& b) {
+      auto ha = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), a);
+      auto hb = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), b);
+      double gap = 0.0, size = 0.0;
+      for (std::size_t i = 0; i < ha.extent(0); ++i)
+        gap = std::max(gap, std::fabs(ha(i) - hb(i))), size = std::max(size, std::fabs(hb(i)));
+      return std::make_pair(d.world.max(gap), d.world.max(size));
+    };
+    const auto [block_gap, block_size] = largest_gap(blocks[overlapped], blocks[after_the_loop]);
     if (d.world.rank() == 0)
-      std::printf("%s, viscous reconstruction, %d ranks: largest difference from one rank %.2e with the node sums, "
-                  "%.2e without (entries up to %.3g)\n",
-                  partition_name(mesh), d.world.size(), differences[1], differences[0], expected.largest);
-    EXPECT_LT(differences[1], 1e-13 * expected.largest);
-    if (d.world.size() > 1) EXPECT_GT(differences[0], 1e-6 * expected.largest);
+      std::printf("%s, viscous reconstruction, %d ranks (%d of %zu elements on the boundary on rank 0): largest "
+                  "difference from one rank %.2e overlapped, %.2e after the loop, %.2e without node sums (entries up "
+                  "to %.3g); diagonal blocks overlapped against after the loop %.2e (entries up to %.3g)\n",
+                  partition_name(mesh), d.world.size(), d.partition.num_boundary_elements, d.partition.elements.size(),
+                  differences[overlapped], differences[after_the_loop], differences[none], expected.largest, block_gap,
+                  block_size);
+    EXPECT_LT(differences[overlapped], 1e-13 * expected.largest);
+    EXPECT_LT(differences[after_the_loop], 1e-13 * expected.largest);
+    EXPECT_LT(block_gap, 1e-13 * block_size);
+    if (d.world.size() > 1) EXPECT_GT(differences[none], 1e-6 * expected.largest);
   }
 }
 

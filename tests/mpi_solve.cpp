@@ -93,7 +93,7 @@ struct StokesSystem {
     global.set_coefficients(c);
     global.set_dirichlet(bc.dirichlet_dofs, bc.dirichlet_values);
     local.set_coefficients(c);
-    local.set_node_sums([this](const Vector& values, int components) { sums(values, components); });
+    local.set_node_sums(&sums);
     A = std::make_unique<DistributedStokesOperator>(local, halo, partition, dirichlet);
     // x* drawn on the host in order, the same on every rank
     auto exact_host = Kokkos::create_mirror_view(exact);

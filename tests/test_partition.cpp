@@ -106,6 +106,20 @@ TEST(ElementPartition, OwnsEveryElementAndNodeOnceAndSharesConsistently) {
         if (l < p.num_owned_nodes) ++node_owners[p.global_node[l]];
         if (l > 0 && l != p.num_owned_nodes) EXPECT_LT(p.global_node[l - 1], p.global_node[l]);
       }
+      // boundary elements first: they and only they touch a node another rank holds
+      // (checked against every other rank's nodes), each group in ascending global id
+      std::vector<char> held_elsewhere(mesh.num_dof_nodes, 0);
+      for (const ElementPartition& other : parts)
+        if (other.rank != p.rank)
+          for (const int g : other.global_node) held_elsewhere[g] = 1;
+      ASSERT_LE(p.num_boundary_elements, static_cast<int>(p.elements.size()));
+      if (ranks == 1) EXPECT_EQ(p.num_boundary_elements, 0);
+      for (std::size_t i = 0; i < p.elements.size(); ++i) {
+        bool touches = false;
+        for (int a = 0; a < mesh.nodes_per_element; ++a) touches = touches || held_elsewhere[connectivity(p.elements[i], a)];
+        EXPECT_EQ(touches, static_cast<int>(i) < p.num_boundary_elements) << "element " << p.elements[i];
+        if (i > 0 && static_cast<int>(i) != p.num_boundary_elements) EXPECT_LT(p.elements[i - 1], p.elements[i]);
+      }
       // what r sends s is what s expects from r, node for node
       for (const NeighborExchange& link : p.neighbors) {
         const ElementPartition& other = parts[link.rank];

@@ -14,7 +14,6 @@
 // rank, output, checkpoints), not for the solver's inner loop.
 #include <Kokkos_Core.hpp>
 #include <array>
-#include <functional>
 #include <vector>
 
 #include "distributed/node_halo.hpp"
@@ -41,9 +40,7 @@ class FluidDistribution {
   const ElementPartition& partition() const { return partition_; }
   const FluidMesh& local_mesh() const { return local_mesh_; }
   // The node sums for the rank's FluidOperator (FluidOperator::set_node_sums).
-  std::function<void(const Vector&, int)> node_sums() const {
-    return [this](const Vector& values, int components) { node_sums_(values, components); };
-  }
+  const NodeSums& node_sums() const { return node_sums_; }
 
   int num_owned_unknowns() const { return fluid_unknowns_per_node * partition_.num_owned_nodes; }
   int num_local_unknowns() const { return fluid_unknowns_per_node * partition_.num_local_nodes(); }

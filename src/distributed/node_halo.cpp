@@ -65,7 +65,8 @@ NodeHalo::NodeHalo(const Communicator& communicator, const ElementPartition& par
   recv_.resize(links_.size());
 }
 
-void NodeHalo::exchange(const Direction direction, const Vector& values) const {
+void NodeHalo::start(const Direction direction, const Vector& values) const {
+  if (in_flight_) throw std::logic_error("rouleau::NodeHalo: an exchange is already in flight");
   const bool to_copies = direction == Direction::owners_to_copies;
   for (std::size_t k = 0; k < links_.size(); ++k) {
     const Link& link = links_[k];
@@ -75,7 +76,16 @@ void NodeHalo::exchange(const Direction direction, const Vector& values) const {
     recv_[k].resize(to_copies ? link.copy_buffer.extent(0) : link.owned_buffer.extent(0));
     to_host(outgoing, send_[k]);
   }
-  communicator_.exchange(ranks_, send_, recv_);
+  pending_ = communicator_.start_exchange(ranks_, send_, recv_);
+  pending_direction_ = direction;
+  in_flight_ = true;
+}
+
+void NodeHalo::finish(const Vector& values) const {
+  if (!in_flight_) throw std::logic_error("rouleau::NodeHalo::finish: no exchange in flight");
+  pending_.wait();
+  in_flight_ = false;
+  const bool to_copies = pending_direction_ == Direction::owners_to_copies;
   // One link after the other (ascending rank): a node shared with several ranks takes
   // their partial sums in a fixed order.
   for (std::size_t k = 0; k < links_.size(); ++k) {
@@ -86,9 +96,19 @@ void NodeHalo::exchange(const Direction direction, const Vector& values) const {
   }
 }
 
-void NodeHalo::update_copies(const Vector& values) const { exchange(Direction::owners_to_copies, values); }
+void NodeHalo::start_update_copies(const Vector& values) const { start(Direction::owners_to_copies, values); }
 
-void NodeHalo::add_copies_to_owners(const Vector& values) const { exchange(Direction::copies_to_owners, values); }
+void NodeHalo::start_add_copies_to_owners(const Vector& values) const { start(Direction::copies_to_owners, values); }
+
+void NodeHalo::update_copies(const Vector& values) const {
+  start_update_copies(values);
+  finish(values);
+}
+
+void NodeHalo::add_copies_to_owners(const Vector& values) const {
+  start_add_copies_to_owners(values);
+  finish(values);
+}
 
 void NodeHalo::sum_into_owners(const Vector& values) const {
   add_copies_to_owners(values);

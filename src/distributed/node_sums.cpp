@@ -8,13 +8,34 @@ namespace rouleau {
 NodeSums::NodeSums(const Communicator& communicator, const ElementPartition& partition)
     : communicator_(communicator), partition_(partition) {}
 
-void NodeSums::operator()(const Kokkos::View<double*>& values, int components) const {
+const NodeHalo& NodeSums::halo(const Kokkos::View<double*>& values, int components) const {
   if (static_cast<long>(values.extent(0)) != static_cast<long>(components) * partition_.num_local_nodes())
     throw std::logic_error("rouleau::NodeSums: a vector of " + std::to_string(values.extent(0)) + " entries is not " +
                            std::to_string(components) + " per local node");
   std::unique_ptr<NodeHalo>& halo = halos_[components];
   if (!halo) halo = std::make_unique<NodeHalo>(communicator_, partition_, components);
-  halo->sum_into_owners(values);
+  return *halo;
+}
+
+void NodeSums::complete(const Kokkos::View<double*>& values, int components) const {
+  halo(values, components).sum_into_owners(values);
+}
+
+// The partial sums at the shared nodes go to their owners.
+void NodeSums::start(const Kokkos::View<double*>& values, int components) const {
+  halo(values, components).start_add_copies_to_owners(values);
+}
+
+// The owners add them (ascending rank) and send the totals to the copies.
+void NodeSums::advance(const Kokkos::View<double*>& values, int components) const {
+  const NodeHalo& h = halo(values, components);
+  h.finish(values);
+  h.start_update_copies(values);
+}
+
+// The copies take the totals.
+void NodeSums::finish(const Kokkos::View<double*>& values, int components) const {
+  halo(values, components).finish(values);
 }
 
 }  // namespace rouleau

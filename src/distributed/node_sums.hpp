@@ -1,29 +1,43 @@
 #pragma once
 // The element sums of a rank's mesh completed across ranks, for
-// FluidOperator::set_node_sums (issue 10): after an element loop, each shared node's
-// partial sums are added at its owner and the total goes back to the copies
-// (NodeHalo::sum_into_owners), so every local entry, owned or copy, holds what one rank
-// with the whole mesh would have. One NodeHalo per number of components per node (1, 4,
-// 9, 16), made on first use.
+// FluidOperator::set_node_sums (issue 10; the protocol in fluid/element_sum_exchange.hpp):
+// each shared node's partial sums are added at its owner (NodeHalo::add_copies_to_owners)
+// and the total goes back to the copies (NodeHalo::update_copies), so every local entry,
+// owned or copy, holds what one rank with the whole mesh would have. The two exchanges
+// travel while the rank's interior elements are summed (start/advance/finish), unless
+// overlap is switched off (then the loop ends first, as a baseline). One NodeHalo per
+// number of components per node (1, 4, 9, 16), made on first use.
 #include <Kokkos_Core.hpp>
 #include <map>
 #include <memory>
 
 #include "distributed/node_halo.hpp"
+#include "fluid/element_sum_exchange.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/element_partition.hpp"
 
 namespace rouleau {
 
-class NodeSums {
+class NodeSums final : public ElementSumExchange {
  public:
   // `partition` must outlive this.
   NodeSums(const Communicator& communicator, const ElementPartition& partition);
-  void operator()(const Kokkos::View<double*>& values, int components) const;
+  // Whole, at once.
+  void operator()(const Kokkos::View<double*>& values, int components) const { complete(values, components); }
+
+  int boundary_elements() const override { return partition_.num_boundary_elements; }
+  bool overlaps() const override { return overlap_; }
+  void set_overlap(bool overlap) { overlap_ = overlap; }
+  void complete(const Kokkos::View<double*>& values, int components) const override;
+  void start(const Kokkos::View<double*>& values, int components) const override;
+  void advance(const Kokkos::View<double*>& values, int components) const override;
+  void finish(const Kokkos::View<double*>& values, int components) const override;
 
  private:
+  const NodeHalo& halo(const Kokkos::View<double*>& values, int components) const;
   Communicator communicator_;
   const ElementPartition& partition_;
+  bool overlap_ = true;
   mutable std::map<int, std::unique_ptr<NodeHalo>> halos_;  // by components per node
 };
 

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <utility>
 #include <stdexcept>
+#include <string>
 
 #include "kernels/fluid_assembly.hpp"
 #include "fluid/fluid_element_types.hpp"
@@ -330,25 +331,47 @@ void BasicFluidOperator<ExecSpace>::color_elements() const {
   Kokkos::deep_copy(colored_elements_, host);
 }
 
-// Runs the element functor `f` over every element, then gathers its scatter buffer into
-// `target`.
+// Runs the element functor `f` over every element and gathers its scatter buffer into
+// `target`, completed across ranks when there are ranks: then the boundary elements come
+// first, and their sums travel while the interior elements are summed (the protocol in
+// fluid/element_sum_exchange.hpp).
 template <class ExecSpace>
 template <class Functor>
 void BasicFluidOperator<ExecSpace>::for_each_element(const char* label, const Functor& f, const Scatter& scatter,
                                                      const Vector& target) const {
-  Kokkos::parallel_for(label, Kokkos::RangePolicy<ExecSpace>(0, mesh_.num_elements), f);
-  gather_into(target, scatter);
-  complete_node_sums(target);
+  const int elements = mesh_.num_elements;
+  if (!node_sums_ || !node_sums_->overlaps()) {
+    Kokkos::parallel_for(label, Kokkos::RangePolicy<ExecSpace>(0, elements), f);
+    gather_into(target, scatter);
+    complete_node_sums(target);
+    return;
+  }
+  const int components = static_cast<int>(target.extent(0)) / mesh_.num_dof_nodes;
+  const int boundary = node_sums_->boundary_elements();
+  const int middle = boundary + (elements - boundary) / 2;
+  Kokkos::parallel_for(label, Kokkos::RangePolicy<ExecSpace>(0, boundary), f);
+  gather_into(target, scatter);  // final at the shared nodes: no interior element reaches them
+  node_sums_->start(target, components);
+  Scatter interior = scatter;  // the same buffer, emptied for the interior's sums
+  interior.reset();
+  Kokkos::parallel_for(label, Kokkos::RangePolicy<ExecSpace>(boundary, middle), f);
+  node_sums_->advance(target, components);
+  Kokkos::parallel_for(label, Kokkos::RangePolicy<ExecSpace>(middle, elements), f);
+  node_sums_->finish(target, components);
+  add_into(target, scatter);  // zero at the shared nodes
 }
 
 template <class ExecSpace>
 void BasicFluidOperator<ExecSpace>::complete_node_sums(const Vector& target) const {
-  if (node_sums_) node_sums_(target, static_cast<int>(target.extent(0)) / mesh_.num_dof_nodes);
+  if (node_sums_) node_sums_->complete(target, static_cast<int>(target.extent(0)) / mesh_.num_dof_nodes);
 }
 
 template <class ExecSpace>
-void BasicFluidOperator<ExecSpace>::set_node_sums(NodeSums sums) {
-  node_sums_ = std::move(sums);
+void BasicFluidOperator<ExecSpace>::set_node_sums(const ElementSumExchange* sums) {
+  if (sums && (sums->boundary_elements() < 0 || sums->boundary_elements() > mesh_.num_elements))
+    throw std::logic_error("rouleau::FluidOperator::set_node_sums: " + std::to_string(sums->boundary_elements()) +
+                           " boundary elements on a mesh of " + std::to_string(mesh_.num_elements));
+  node_sums_ = sums;
   complete_node_sums(lumped_mass_);  // the lumped mass summed in the constructor, rank-local so far
 }
 

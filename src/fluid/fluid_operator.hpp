@@ -11,10 +11,10 @@
 // Quadrature geometry is computed once, at construction: the mesh never moves.
 #include <Kokkos_Core.hpp>
 #include <Kokkos_ScatterView.hpp>
-#include <functional>
 #include <string>
 #include <vector>
 
+#include "fluid/element_sum_exchange.hpp"
 #include "fluid/fluid_matrix.hpp"
 #include "fluid/uniform_box_stencil.hpp"
 #include "kernels/fluid_assembly.hpp"
@@ -104,16 +104,18 @@ class BasicFluidOperator {
   // gradient(9·node + 3i + j) = G_node,ij ≈ ∂_j u_i (scaled).
   void project_gradient(const ConstVector& state, const Vector& gradient) const;
 
-  // Distributed runs (issue 10): `sums(values, components)` completes every vector of
-  // element sums (node-interleaved, `components` per dof node: 1 lumped mass, 4 residuals
-  // and actions, 9 projected gradients, 16 diagonal blocks) right after its element loop
-  // and before any constrained row, load or division reads it: on a rank's mesh it adds
-  // the other ranks' partial sums at the shared nodes (distributed/node_sums.hpp). The
-  // lumped mass is completed when it is set. Null (the default): one rank, nothing to add.
-  // The assembled Jacobian (assemble_jacobian) is not completed this way.
-  using NodeSums = std::function<void(const Vector& values, int components)>;
-  void set_node_sums(NodeSums sums);
-  bool has_node_sums() const { return static_cast<bool>(node_sums_); }
+  // Distributed runs (issue 10): `sums` completes every vector of element sums
+  // (node-interleaved, `components` per dof node: 1 lumped mass, 4 residuals and actions,
+  // 9 projected gradients, 16 diagonal blocks) right after its element loop and before any
+  // constrained row, load or division reads it: on a rank's mesh it adds the other ranks'
+  // partial sums at the shared nodes (distributed/node_sums.hpp). The element loops of the
+  // actions, projections and blocks overlap its exchanges with the interior elements
+  // (fluid/element_sum_exchange.hpp); the residual's loop completes after it. The lumped
+  // mass is completed when it is set. Null (the default): one rank, nothing to add. `sums`
+  // must outlive the operator. The assembled Jacobian (assemble_jacobian) is not completed
+  // this way.
+  void set_node_sums(const ElementSumExchange* sums);
+  bool has_node_sums() const { return node_sums_ != nullptr; }
 
   // Geometry stored per quadrature point (scaled): [e][q][(J⁻¹)_kd, det J·w].
   const Kokkos::View<double***>& geometry() const { return geometry_; }
@@ -131,7 +133,7 @@ class BasicFluidOperator {
   void for_each_element(const char* label, const Functor& f, const Scatter& scatter, const Vector& target) const;
   // target's element sums completed across ranks (node_sums_), when there are ranks
   void complete_node_sums(const Vector& target) const;
-  NodeSums node_sums_;
+  const ElementSumExchange* node_sums_ = nullptr;
   FluidMesh mesh_;
   double length_scale_;
   int num_unknowns_;

@@ -176,7 +176,7 @@ FluidSolver::FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid,
   if (one_rank_block_jacobi(distribution, settings))
     blocks_ = Vector("rouleau::FluidSolver::blocks", 16 * local_mesh.num_dof_nodes);
   state_gradient_ = Vector("rouleau::FluidSolver::state_gradient", 9 * local_mesh.num_dof_nodes);
-  if (distribution_) operator_.set_node_sums(distribution_->node_sums());
+  if (distribution_) operator_.set_node_sums(&distribution_->node_sums());
   operator_.set_dirichlet(boundary_.dirichlet_dofs, boundary_.dirichlet_values);
   operator_.set_nodal_load(boundary_.traction_load);
   if (distribution_) {

@@ -69,12 +69,26 @@ std::vector<int> Communicator::rank_of_smallest(const std::vector<double>& value
   return ranks;
 }
 
-void Communicator::exchange(const std::vector<int>& ranks, const std::vector<std::vector<double>>& send,
-                            std::vector<std::vector<double>>& recv) const {
+struct PendingExchange::Requests {
+  std::vector<MPI_Request> handles;
+};
+
+void PendingExchange::wait() {
+  if (!requests_ || requests_->handles.empty()) return;
+  check(MPI_Waitall(static_cast<int>(requests_->handles.size()), requests_->handles.data(), MPI_STATUSES_IGNORE),
+        "MPI_Waitall");
+  requests_->handles.clear();
+}
+
+PendingExchange Communicator::start_exchange(const std::vector<int>& ranks,
+                                             const std::vector<std::vector<double>>& send,
+                                             std::vector<std::vector<double>>& recv) const {
   const std::size_t n = ranks.size();
   if (send.size() != n || recv.size() != n)
     throw std::invalid_argument("rouleau::Communicator::exchange: one send and one receive buffer per rank");
-  std::vector<MPI_Request> requests(2 * n, MPI_REQUEST_NULL);
+  PendingExchange pending;
+  std::vector<MPI_Request>& requests = pending.requests_->handles;
+  requests.assign(2 * n, MPI_REQUEST_NULL);
   constexpr int tag = 7;
   for (std::size_t k = 0; k < n; ++k)
     check(MPI_Irecv(recv[k].data(), static_cast<int>(recv[k].size()), MPI_DOUBLE, ranks[k], tag, MPI_COMM_WORLD,
@@ -84,7 +98,7 @@ void Communicator::exchange(const std::vector<int>& ranks, const std::vector<std
     check(MPI_Isend(send[k].data(), static_cast<int>(send[k].size()), MPI_DOUBLE, ranks[k], tag, MPI_COMM_WORLD,
                     &requests[n + k]),
           "MPI_Isend");
-  check(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE), "MPI_Waitall");
+  return pending;
 }
 
 void Communicator::barrier() const { check(MPI_Barrier(MPI_COMM_WORLD), "MPI_Barrier"); }
@@ -141,9 +155,14 @@ void Communicator::bitwise_or(unsigned*, int) const {}
 std::vector<int> Communicator::rank_of_smallest(const std::vector<double>& values) const {
   return std::vector<int>(values.size(), 0);
 }
-void Communicator::exchange(const std::vector<int>& ranks, const std::vector<std::vector<double>>&,
-                            std::vector<std::vector<double>>&) const {
+struct PendingExchange::Requests {};
+
+void PendingExchange::wait() {}
+
+PendingExchange Communicator::start_exchange(const std::vector<int>& ranks, const std::vector<std::vector<double>>&,
+                                             std::vector<std::vector<double>>&) const {
   if (!ranks.empty()) throw std::logic_error("rouleau::Communicator::exchange: no other rank in a build without MPI");
+  return PendingExchange();
 }
 void Communicator::barrier() const {}
 std::vector<double> Communicator::gather(const std::vector<double>& mine, int) const { return mine; }
@@ -153,5 +172,26 @@ std::vector<double> Communicator::scatter(const std::vector<double>& all, const 
 }
 
 #endif
+
+PendingExchange::PendingExchange() : requests_(std::make_unique<Requests>()) {}
+PendingExchange::PendingExchange(PendingExchange&&) noexcept = default;
+PendingExchange& PendingExchange::operator=(PendingExchange&& other) noexcept {
+  if (this != &other) {
+    wait();
+    requests_ = std::move(other.requests_);
+  }
+  return *this;
+}
+PendingExchange::~PendingExchange() {
+  try {
+    wait();
+  } catch (...) {  // a failed MPI_Waitall in a destructor: MPI_ERRORS_ARE_FATAL stops the run anyway
+  }
+}
+
+void Communicator::exchange(const std::vector<int>& ranks, const std::vector<std::vector<double>>& send,
+                            std::vector<std::vector<double>>& recv) const {
+  start_exchange(ranks, send, recv).wait();
+}
 
 }  // namespace rouleau

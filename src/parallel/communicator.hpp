@@ -3,9 +3,27 @@
 // build has MPI (ROULEAU_HAS_MPI, CMake option ROULEAU_MPI), otherwise one rank on its own.
 // Host-only: no Kokkos; the buffers are host memory (device data is staged by the caller,
 // distributed/node_halo.hpp).
+#include <memory>
 #include <vector>
 
 namespace rouleau {
+
+// Point-to-point messages under way (Communicator::start_exchange): wait() returns when
+// every one has arrived and been sent; the destructor waits for any not waited for. The
+// send and receive buffers must stay in place until then.
+class PendingExchange {
+ public:
+  PendingExchange();
+  PendingExchange(PendingExchange&&) noexcept;
+  PendingExchange& operator=(PendingExchange&&) noexcept;
+  ~PendingExchange();
+  void wait();
+
+ private:
+  friend class Communicator;
+  struct Requests;  // MPI_Request handles (none in a build without MPI)
+  std::unique_ptr<Requests> requests_;
+};
 
 class Communicator {
  public:
@@ -34,6 +52,10 @@ class Communicator {
   // caller to what ranks[k] sends) is filled from ranks[k]. Returns when all are done.
   void exchange(const std::vector<int>& ranks, const std::vector<std::vector<double>>& send,
                 std::vector<std::vector<double>>& recv) const;
+  // The same, started: returns with the messages posted (MPI_Irecv, MPI_Isend), so the
+  // caller can compute while they travel, then wait()s on the result.
+  PendingExchange start_exchange(const std::vector<int>& ranks, const std::vector<std::vector<double>>& send,
+                                 std::vector<std::vector<double>>& recv) const;
 
   // Gathers every rank's `mine` on `root`, rank after rank (MPI_Gatherv); empty elsewhere.
   std::vector<double> gather(const std::vector<double>& mine, int root) const;

@@ -156,6 +156,17 @@ ElementPartition make_element_partition(int rank, int num_ranks, const std::vect
       by_rank[r].rank = r;
       p.neighbors.push_back(std::move(by_rank[r]));
     }
+
+  // Boundary elements (touching a shared node: a copy, or an owned node others copy) first.
+  const auto touches_shared = [&](int e) {
+    for (int a = 0; a < nodes_per_element; ++a) {
+      const int l = local[element_dof_nodes[e * nodes_per_element + a]];
+      if (l >= p.num_owned_nodes || !copied_by[l].empty()) return true;
+    }
+    return false;
+  };
+  const auto interior = std::stable_partition(p.elements.begin(), p.elements.end(), touches_shared);
+  p.num_boundary_elements = static_cast<int>(interior - p.elements.begin());
   return p;
 }
 

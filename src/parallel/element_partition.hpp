@@ -53,7 +53,12 @@ struct NeighborExchange {
 
 struct ElementPartition {
   int rank = 0, num_ranks = 1;
-  std::vector<int> elements;                // global ids of the elements this rank owns, ascending
+  // Global ids of the elements this rank owns: first the `num_boundary_elements` that touch
+  // a node shared with another rank, then the interior ones (no shared node), each group
+  // ascending. The rank's mesh keeps this order (make_local_mesh), so its element loops can
+  // sum the boundary first and exchange while the interior is summed (NodeSums).
+  std::vector<int> elements;
+  int num_boundary_elements = 0;
   std::vector<int> global_node;             // local dof node → global dof node
   int num_owned_nodes = 0;                  // local nodes [0, num_owned_nodes) are owned
   std::vector<int> node_owner;              // local dof node → its owner's rank

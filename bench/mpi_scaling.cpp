@@ -89,7 +89,7 @@ int run(int argc, char** argv) {
   local.set_node_sums(&sums);
   const NodeHalo halo(world, partition, 4);
   const std::vector<int> dirichlet = owned_local_unknowns(partition, bc.dirichlet_dofs);
-  const DistributedStokesOperator A(local, halo, partition, dirichlet);
+  const DistributedStokesOperator A(local, partition, dirichlet);
   DistributedBlockJacobi jacobi(world, partition, dirichlet);
   Vector local_zero("local_zero", 4 * partition.num_local_nodes());
   jacobi.factor(local, local_zero);

@@ -24,7 +24,6 @@
 #include "distributed/additive_schwarz.hpp"
 #include "distributed/distributed_fluid_operator.hpp"
 #include "distributed/local_mesh.hpp"
-#include "distributed/node_halo.hpp"
 #include "distributed/node_sums.hpp"
 #include "distributed/root_gather.hpp"
 #include "fluid/boundary_conditions.hpp"
@@ -81,7 +80,6 @@ struct StokesSystem {
   FluidMesh local_mesh = make_local_mesh(mesh, partition);
   FluidOperator local{local_mesh, 1.0};
   NodeSums sums{world, partition};
-  NodeHalo halo{world, partition, 4};
   std::vector<int> dirichlet = owned_local_unknowns(partition, bc.dirichlet_dofs);
   std::unique_ptr<DistributedStokesOperator> A;
   Vector b_owned{"b_owned", static_cast<std::size_t>(4 * partition.num_owned_nodes)};
@@ -94,7 +92,7 @@ struct StokesSystem {
     global.set_dirichlet(bc.dirichlet_dofs, bc.dirichlet_values);
     local.set_coefficients(c);
     local.set_node_sums(&sums);
-    A = std::make_unique<DistributedStokesOperator>(local, halo, partition, dirichlet);
+    A = std::make_unique<DistributedStokesOperator>(local, partition, dirichlet);
     // x* drawn on the host in order, the same on every rank
     auto exact_host = Kokkos::create_mirror_view(exact);
     std::mt19937 generator(77);

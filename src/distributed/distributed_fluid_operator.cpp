@@ -47,11 +47,9 @@ std::vector<int> owned_local_unknowns(const ElementPartition& partition, const s
   return local;
 }
 
-DistributedStokesOperator::DistributedStokesOperator(const FluidOperator& local, const NodeHalo& halo,
-                                                     const ElementPartition& partition,
+DistributedStokesOperator::DistributedStokesOperator(const FluidOperator& local, const ElementPartition& partition,
                                                      const std::vector<int>& dirichlet)
     : local_(local),
-      halo_(halo),
       owned_(4 * partition.num_owned_nodes),
       dirichlet_(device_copy(dirichlet, "rouleau::DistributedStokesOperator::dirichlet")),
       local_x_("rouleau::DistributedStokesOperator::local_x", 4 * partition.num_local_nodes()),
@@ -67,7 +65,7 @@ void DistributedStokesOperator::owned_part(const Kokkos::View<const double*>& lo
 void DistributedStokesOperator::apply(const Kokkos::View<const double*>& x, const Kokkos::View<double*>& y) const {
   // y = Σ_ranks Σ_e K_e x (the operator's node sums), then y_d = x_d
   Kokkos::deep_copy(Kokkos::subview(local_x_, Kokkos::make_pair(0, owned_)), x);
-  halo_.update_copies(local_x_);
+  local_.start_filling_copies(local_x_);  // completed inside the element loop
   local_.linear_action(local_x_, local_y_);
   owned_part(local_y_, y);
   identity_rows(dirichlet_, x, y);

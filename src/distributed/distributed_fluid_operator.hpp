@@ -6,9 +6,10 @@
 // vectors). The rank's operator must complete its element sums across ranks
 // (FluidOperator::set_node_sums with a NodeSums): then its outputs hold the whole mesh's
 // values at every local node, the viscous reconstruction's projected gradient included.
-// The action: copy into a local vector, fill the copies (update_copies), apply the rank's
-// operator (FluidOperator::linear_action on the rank's mesh, which carries no Dirichlet
-// rows), keep the owned entries, and set the Dirichlet rows to the identity, y_d = x_d —
+// The action: copy into a local vector, fill the copies (FluidOperator::start_filling_copies:
+// they travel while the rank's interior elements are summed), apply the rank's operator
+// (FluidOperator::linear_action on the rank's mesh, which carries no Dirichlet rows), keep
+// the owned entries, and set the Dirichlet rows to the identity, y_d = x_d —
 // as the single-rank operator does.
 #include <Kokkos_Core.hpp>
 #include <vector>
@@ -33,7 +34,7 @@ class DistributedStokesOperator final : public LinearOperator {
  public:
   // `local`: the operator on the rank's mesh (make_local_mesh), without Dirichlet rows;
   // `dirichlet`: the owned constrained unknowns (local indices). All must outlive this.
-  DistributedStokesOperator(const FluidOperator& local, const NodeHalo& halo, const ElementPartition& partition,
+  DistributedStokesOperator(const FluidOperator& local, const ElementPartition& partition,
                             const std::vector<int>& dirichlet);
   void apply(const Kokkos::View<const double*>& x, const Kokkos::View<double*>& y) const override;
   int num_owned_unknowns() const { return owned_; }
@@ -42,7 +43,6 @@ class DistributedStokesOperator final : public LinearOperator {
 
  private:
   const FluidOperator& local_;
-  const NodeHalo& halo_;
   int owned_;
   Kokkos::View<int*> dirichlet_;
   Vector local_x_, local_y_;

@@ -38,4 +38,23 @@ void NodeSums::finish(const Kokkos::View<double*>& values, int components) const
   halo(values, components).finish(values);
 }
 
+// The input's copies take their owners' values (the ghost exchange before an action).
+void NodeSums::start_copies(const Kokkos::View<double*>& input) const {
+  const NodeHalo& h = halo(input, 4);
+  if (!overlap_) {
+    h.update_copies(input);
+    return;
+  }
+  h.start_update_copies(input);
+  input_ = input;
+  input_in_flight_ = true;
+}
+
+void NodeSums::await_copies() const {
+  if (!input_in_flight_) return;
+  input_in_flight_ = false;
+  halo(input_, 4).finish(input_);
+  input_ = Kokkos::View<double*>();
+}
+
 }  // namespace rouleau

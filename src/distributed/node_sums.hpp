@@ -3,9 +3,10 @@
 // FluidOperator::set_node_sums (issue 10; the protocol in fluid/element_sum_exchange.hpp):
 // each shared node's partial sums are added at its owner (NodeHalo::add_copies_to_owners)
 // and the total goes back to the copies (NodeHalo::update_copies), so every local entry,
-// owned or copy, holds what one rank with the whole mesh would have. The two exchanges
-// travel while the rank's interior elements are summed (start/advance/finish), unless
-// overlap is switched off (then the loop ends first, as a baseline). One NodeHalo per
+// owned or copy, holds what one rank with the whole mesh would have. The two exchanges,
+// and the ghost exchange of an action's input (start_copies), travel while the rank's
+// interior elements are summed, unless overlap is switched off (then each exchange
+// completes before the loop goes on: the baseline). One NodeHalo per
 // number of components per node (1, 4, 9, 16), made on first use.
 #include <Kokkos_Core.hpp>
 #include <map>
@@ -32,6 +33,9 @@ class NodeSums final : public ElementSumExchange {
   void start(const Kokkos::View<double*>& values, int components) const override;
   void advance(const Kokkos::View<double*>& values, int components) const override;
   void finish(const Kokkos::View<double*>& values, int components) const override;
+  void start_copies(const Kokkos::View<double*>& input) const override;
+  bool copies_in_flight() const override { return input_in_flight_; }
+  void await_copies() const override;
 
  private:
   const NodeHalo& halo(const Kokkos::View<double*>& values, int components) const;
@@ -39,6 +43,8 @@ class NodeSums final : public ElementSumExchange {
   const ElementPartition& partition_;
   bool overlap_ = true;
   mutable std::map<int, std::unique_ptr<NodeHalo>> halos_;  // by components per node
+  mutable Kokkos::View<double*> input_;                    // the input whose copies travel
+  mutable bool input_in_flight_ = false;
 };
 
 }  // namespace rouleau

@@ -133,6 +133,7 @@ template <class ExecSpace>
 void BasicFluidOperator<ExecSpace>::residual(const ConstVector& state, const ConstVector& frozen, const Vector& result,
                              bool constrained_rows) const {
   ProfilingRegion region("rouleau::FluidOperator::residual");
+  await_copies();
   if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_);
   Scatter& scatter = zeroed_scatter(unknowns_scatter_, result.extent(0), "rouleau::FluidOperator::unknowns_scatter");
   const bool stabilized_load = immersed_load_.extent(0) > 0 && immersed_load_in_stabilization_;
@@ -273,6 +274,7 @@ void BasicFluidOperator<ExecSpace>::diagonal_blocks(const ConstVector& state, co
 
 template <class ExecSpace>
 void BasicFluidOperator<ExecSpace>::element_matrices(const ConstVector& state, const Kokkos::View<double***>& matrices) const {
+  await_copies();
   if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_);
   visit_fluid_element(mesh_.element_type, [&](auto element) {
     FluidElementJacobianFunctor<decltype(element), JacobianSink::element_matrices, Scatter> f{
@@ -286,6 +288,7 @@ template <class ExecSpace>
 void BasicFluidOperator<ExecSpace>::assemble_jacobian(const ConstVector& state, const FluidMatrixGraph& graph,
                                       const Vector& values) const {
   ProfilingRegion region("rouleau::FluidOperator::assemble_jacobian");
+  await_copies();
   if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_);
   Kokkos::deep_copy(values, 0.0);
   if (color_offsets_.empty()) color_elements();
@@ -341,6 +344,7 @@ void BasicFluidOperator<ExecSpace>::for_each_element(const char* label, const Fu
                                                      const Vector& target) const {
   const int elements = mesh_.num_elements;
   if (!node_sums_ || !node_sums_->overlaps()) {
+    await_copies();
     Kokkos::parallel_for(label, Kokkos::RangePolicy<ExecSpace>(0, elements), f);
     gather_into(target, scatter);
     complete_node_sums(target);
@@ -348,17 +352,34 @@ void BasicFluidOperator<ExecSpace>::for_each_element(const char* label, const Fu
   }
   const int components = static_cast<int>(target.extent(0)) / mesh_.num_dof_nodes;
   const int boundary = node_sums_->boundary_elements();
-  const int middle = boundary + (elements - boundary) / 2;
-  Kokkos::parallel_for(label, Kokkos::RangePolicy<ExecSpace>(0, boundary), f);
+  const auto run = [&](int begin, int end) {
+    Kokkos::parallel_for(label, Kokkos::RangePolicy<ExecSpace>(begin, end), f);
+  };
+  // interior [boundary, elements): a third before the boundary when the input's copies travel
+  const int first = boundary + (node_sums_->copies_in_flight() ? (elements - boundary) / 3 : 0);
+  const int second = first + (elements - first) / 2;
+  run(boundary, first);
+  node_sums_->await_copies();
+  run(0, boundary);
   gather_into(target, scatter);  // final at the shared nodes: no interior element reaches them
   node_sums_->start(target, components);
-  Scatter interior = scatter;  // the same buffer, emptied for the interior's sums
+  Scatter interior = scatter;  // the same buffer, emptied for the rest of the interior
   interior.reset();
-  Kokkos::parallel_for(label, Kokkos::RangePolicy<ExecSpace>(boundary, middle), f);
+  run(first, second);
   node_sums_->advance(target, components);
-  Kokkos::parallel_for(label, Kokkos::RangePolicy<ExecSpace>(middle, elements), f);
+  run(second, elements);
   node_sums_->finish(target, components);
   add_into(target, scatter);  // zero at the shared nodes
+}
+
+template <class ExecSpace>
+void BasicFluidOperator<ExecSpace>::await_copies() const {
+  if (node_sums_) node_sums_->await_copies();
+}
+
+template <class ExecSpace>
+void BasicFluidOperator<ExecSpace>::start_filling_copies(const Vector& input) const {
+  if (node_sums_) node_sums_->start_copies(input);
 }
 
 template <class ExecSpace>

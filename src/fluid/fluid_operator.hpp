@@ -115,6 +115,10 @@ class BasicFluidOperator {
   // must outlive the operator. The assembled Jacobian (assemble_jacobian) is not completed
   // this way.
   void set_node_sums(const ElementSumExchange* sums);
+  // Across ranks: the copies of `input` (a local vector, 4 per dof node) take their owners'
+  // values while the next element loop sums interior elements, before it reads a copy. One
+  // rank: nothing to fill.
+  void start_filling_copies(const Vector& input) const;
   bool has_node_sums() const { return node_sums_ != nullptr; }
 
   // Geometry stored per quadrature point (scaled): [e][q][(J⁻¹)_kd, det J·w].
@@ -132,6 +136,7 @@ class BasicFluidOperator {
   template <class Functor>
   void for_each_element(const char* label, const Functor& f, const Scatter& scatter, const Vector& target) const;
   // target's element sums completed across ranks (node_sums_), when there are ranks
+  void await_copies() const;
   void complete_node_sums(const Vector& target) const;
   const ElementSumExchange* node_sums_ = nullptr;
   FluidMesh mesh_;

@@ -26,7 +26,7 @@ using ExecSpace = Kokkos::DefaultExecutionSpace;
 // plus the immersed stiffness Ŝ x when the coupling is semi-implicit.
 // The state's projected gradient is computed once: U is fixed during the Krylov solve.
 // Across ranks x and y are the owned entries: x is lifted to a local vector (its copies
-// filled from their owners), the rank's operator applied (its sums completed across
+// filled from their owners while the operator sums its interior elements), the rank's operator applied (its sums completed across
 // ranks), and y is the owned part of the result.
 class FluidJacobian final : public LinearOperator {
  public:
@@ -48,7 +48,7 @@ class FluidJacobian final : public LinearOperator {
     }
     const auto owned = std::make_pair(0, static_cast<int>(x.extent(0)));
     Kokkos::deep_copy(Kokkos::subview(lift_.direction, owned), x);
-    lift_.distribution->update_copies(lift_.direction);
+    op_.start_filling_copies(lift_.direction);  // completed inside the operator's first element loop
     apply_local(lift_.direction, lift_.action);
     Kokkos::deep_copy(y, Kokkos::subview(lift_.action, owned));
   }

@@ -19,8 +19,8 @@ s^3 elements, s = (E/P)^(1/3)):
   halo       3 exchanges per action (copies; then the sums to the owners and back) to 26
              neighbours (6 faces of (s+1)^2 nodes, 12 edges of s+1, 8 corners), 4 values of
              8 bytes per node: 3 x, x = 26 alpha + 32 ((6 (s+1)^2 + 12 (s+1) + 8)) / beta;
-  overlap    the two exchanges of the sums travel while the interior elements ((s-2)^3 of
-             them, half behind each) are summed: exposed x + 2 max(0, x - t_a (s-2)^3 / 2),
+  overlap    each of the 3 exchanges travels while a third of the interior elements
+             ((s-2)^3 of them) is summed: exposed 3 max(0, x - t_a (s-2)^3 / 3),
              t_a the measured action time per element (action_s on 1 rank x 1 thread). The
              overlap needs the messages to progress while the rank computes: on GPUs the
              kernels run asynchronously while the host waits in MPI; on CPU ranks it
@@ -73,7 +73,7 @@ def model(elements, ranks, seconds_per_element, action_seconds_per_element, spee
     exchange = 26 * LATENCY_S + BYTES_PER_NODE * nodes / BANDWIDTH_B_S
     halo = 3 * exchange
     interior = action_seconds_per_element * max(0.0, side - 2) ** 3 / speedup
-    halo_exposed = exchange + 2 * max(0.0, exchange - interior / 2)
+    halo_exposed = 3 * max(0.0, exchange - interior / 3)
     reductions = 3 * 2 * math.log2(ranks) * LATENCY_S
     return compute, halo, halo_exposed, reductions
 
@@ -136,6 +136,7 @@ def main():
                                    overlapped_communication_fraction=(exposed + reductions) / overlapped,
                                    gpu_iteration_s=gpu_total,
                                    gpu_communication_fraction=(halo + reductions) / gpu_total,
+                                   gpu_halo_exposed_s=gpu_exposed,
                                    gpu_overlapped_iteration_s=gpu_overlapped,
                                    gpu_overlapped_communication_fraction=(gpu_exposed + reductions) / gpu_overlapped))
     print(f"\nmodel ({seconds_per_element * 1e9:.0f} ns per element per iteration, alpha {LATENCY_S * 1e6} us, "
@@ -170,8 +171,10 @@ def main():
         ax.loglog(ranks, [m["compute_s"] for m in ms], "b--", label="compute")
         ax.loglog(ranks[1:], [m["halo_s"] + m["reductions_s"] for m in ms[1:]], "r:", label="communication")
         ax.loglog(ranks[1:], [m["halo_exposed_s"] + m["reductions_s"] for m in ms[1:]], "r-", alpha=0.5,
-                  label="communication left exposed by the overlap")
+                  label="communication left exposed by the overlap (CPU ranks)")
         ax.loglog(ranks, [m["gpu_overlapped_iteration_s"] for m in ms], "g-.", label="GPU ranks, overlapped: total")
+        ax.loglog(ranks[1:], [m["gpu_halo_exposed_s"] + m["reductions_s"] for m in ms[1:]], "g:",
+                  label="GPU ranks: communication left exposed")
         ax.set_xlabel("ranks")
         ax.set_ylabel("s per GMRES iteration")
         ax.set_title(title)

@@ -2,11 +2,18 @@
 
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace rouleau {
 
+namespace {
+// Whether the element loops run on a device (their scatter buffers are atomic, not per thread).
+constexpr bool loops_on_a_device =
+    !std::is_same<Kokkos::DefaultExecutionSpace::memory_space, Kokkos::HostSpace>::value;
+}  // namespace
+
 NodeSums::NodeSums(const Communicator& communicator, const ElementPartition& partition)
-    : communicator_(communicator), partition_(partition) {}
+    : communicator_(communicator), partition_(partition), overlap_(loops_on_a_device) {}
 
 const NodeHalo& NodeSums::halo(const Kokkos::View<double*>& values, int components) const {
   if (static_cast<long>(values.extent(0)) != static_cast<long>(components) * partition_.num_local_nodes())

@@ -3,10 +3,15 @@
 // FluidOperator::set_node_sums (issue 10; the protocol in fluid/element_sum_exchange.hpp):
 // each shared node's partial sums are added at its owner (NodeHalo::add_copies_to_owners)
 // and the total goes back to the copies (NodeHalo::update_copies), so every local entry,
-// owned or copy, holds what one rank with the whole mesh would have. The two exchanges,
-// and the ghost exchange of an action's input (start_copies), travel while the rank's
-// interior elements are summed, unless overlap is switched off (then each exchange
-// completes before the loop goes on: the baseline). One NodeHalo per
+// owned or copy, holds what one rank with the whole mesh would have. With overlap on, the
+// two exchanges, and the ghost exchange of an action's input (start_copies), travel while
+// the rank's interior elements are summed; off, each exchange completes where it is posted.
+// On by default where the element loops run on a GPU: a loop's kernels run while the host
+// waits in MPI, and the one extra pass over the sums (the interior's, added at the end)
+// touches one atomic buffer. Off by default on CPU threads: there the extra pass runs over
+// every thread's copy of the sums and cost 1-3 % of an action on this project's machine,
+// while the exchanges it would hide were 0.3 % of it (bench/README.md, "Scaling across MPI
+// ranks"); set_overlap(true) where a network's latency outweighs that. One NodeHalo per
 // number of components per node (1, 4, 9, 16), made on first use.
 #include <Kokkos_Core.hpp>
 #include <map>
@@ -41,7 +46,7 @@ class NodeSums final : public ElementSumExchange {
   const NodeHalo& halo(const Kokkos::View<double*>& values, int components) const;
   Communicator communicator_;
   const ElementPartition& partition_;
-  bool overlap_ = true;
+  bool overlap_;
   mutable std::map<int, std::unique_ptr<NodeHalo>> halos_;  // by components per node
   mutable Kokkos::View<double*> input_;                    // the input whose copies travel
   mutable bool input_in_flight_ = false;

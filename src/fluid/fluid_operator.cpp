@@ -237,6 +237,7 @@ void BasicFluidOperator<ExecSpace>::linear_action(const ConstVector& direction, 
   if (coefficients_.convection)
     throw std::logic_error("rouleau::FluidOperator::linear_action: the residual is not affine with convection on");
   if (uses_stencil()) {
+    await_copies();  // the stencil reads every node, copies included
     stencil_.apply(coefficients_, direction, result);
     apply_dirichlet_rows<ExecSpace>(dirichlet_dofs_, dirichlet_values_, direction, direction, false, result);
     return;

@@ -115,6 +115,14 @@ TEST(MpiRun, VesselOnTwoRanksAgreesWithOneRankToTheSolverTolerance) {
   const Outcome split = run_rouleau("run " + contraction + " --out " + two + settings, on_ranks(2));
   ASSERT_EQ(split.exit_code, 0) << split.err;
   expect_states_agree(one, two, 1, 1e-7);
+  // The diagnostics sum the ranks' shares: the cell nodes whose RKPM weights needed the
+  // wall correction, counted once (1038 in this contraction at its first step).
+  const auto rows_one = rouleau::read_diagnostics(one + "/diagnostics.csv");
+  const auto rows_two = rouleau::read_diagnostics(two + "/diagnostics.csv");
+  ASSERT_FALSE(rows_one.empty());
+  ASSERT_EQ(rows_one.size(), rows_two.size());
+  EXPECT_GT(rows_one.back().at("rkpm_corrected_points"), 0.0);
+  EXPECT_EQ(rows_one.back().at("rkpm_corrected_points"), rows_two.back().at("rkpm_corrected_points"));
 }
 
 TEST(MpiRun, ACellCrossingIntoTheOtherRanksPartKeepsItsVolumeAndForces) {

@@ -187,7 +187,10 @@ ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme sch
     if (shares_) fluid_.sum_over_ranks(fluid_load_);
     fluid_.set_immersed_forces(fluid_load_);
   });
-  report.corrected_points = rkpm_.corrected_points();
+  // across ranks each rank counts its own cells' points
+  report.corrected_points = shares_ ? static_cast<int>(fluid_.distribution()->communicator().sum(
+                                          static_cast<long long>(rkpm_.corrected_points())))
+                                    : rkpm_.corrected_points();
   // 3. the fluid
   if (stiffness_) {
     times.time(stiffness_stage, [&] { stiffness_->linearize(dt); });
@@ -287,7 +290,7 @@ void ImmersedCoupling::restrict_transfers() {
   mark_transferred_nodes(population_.node_cell(), computed_nodes_,
                          interaction_ ? interaction_->cells_in_list() : Kokkos::View<int*>(), transferred_nodes_);
   transferred_list_version_ = version;
-  rkpm_.restrict_rows(transferred_nodes_);
+  rkpm_.restrict_rows(transferred_nodes_, computed_nodes_);
 }
 
 void ImmersedCoupling::sum_over_ranks(const NodeVectors& values) {

@@ -99,6 +99,8 @@ void BasicRkpmCoupler<ExecSpace>::fill_rows(const PointVectors& points, bool cou
   const bool always_correct = always_correct_;
   const bool restricted = active_points_.extent(0) > 0;
   auto active = active_points_;
+  const bool counting_some = counted_points_.extent(0) > 0;
+  auto counted = counted_points_;
   int corrected = 0;
   Kokkos::parallel_reduce(
       "rouleau::RkpmCoupler::shape_functions", Kokkos::RangePolicy<ExecSpace>(0, num_points_),
@@ -173,7 +175,7 @@ void BasicRkpmCoupler<ExecSpace>::fill_rows(const PointVectors& points, bool cou
           for (int d = 0; d < 3; ++d) y[d] = search.offset(node_position(node, d), x[d], d);
           phi(k) *= c[0] + c[1] * y[0] + c[2] * y[1] + c[3] * y[2];
         }
-        ++corrected_count;
+        if (!counting_some || counted(p)) ++corrected_count;
       },
       corrected);
   if (!count_only) corrected_points_ = corrected;

@@ -50,7 +50,13 @@ class BasicRkpmCoupler {
   // interpolation gives them zero and spreading takes nothing from them, and only the
   // active points are checked for leaving the fluid. An empty view: every point (the
   // default).
-  void restrict_rows(const Kokkos::View<const int*>& active) { active_points_ = active; }
+  // `counted` (empty: every active point) marks the points whose corrections
+  // corrected_points() counts: a rank's own cells, so that the ranks' counts sum to one
+  // rank's.
+  void restrict_rows(const Kokkos::View<const int*>& active, const Kokkos::View<const int*>& counted = {}) {
+    active_points_ = active;
+    counted_points_ = counted;
+  }
 
   // values(p, c) = Σ_J Φ_J(x_p) nodal(stride · J + c), c = 0, 1, 2.
   void interpolate(const Kokkos::View<const double*>& nodal, int stride, const PointVectors& values) const;
@@ -66,7 +72,8 @@ class BasicRkpmCoupler {
   // only fluid values interpolation reads and the only ones spreading writes. A view of a
   // buffer the next call overwrites.
   Kokkos::View<int*> support_nodes() const;
-  // How many points needed the linear correction at the last update.
+  // How many points (of those counted, restrict_rows) needed the linear correction at the
+  // last update.
   int corrected_points() const { return corrected_points_; }
   // Forces the correction everywhere (tests: both paths agree where both apply).
   void always_correct(bool yes) { always_correct_ = yes; }
@@ -79,7 +86,7 @@ class BasicRkpmCoupler {
   Kokkos::View<double* [3]> node_support_;   // a_Jd [μm]
   Kokkos::View<int*> bin_offsets_, binned_nodes_;
   Kokkos::View<int*> offsets_, nodes_;
-  Kokkos::View<const int*> active_points_;  // restrict_rows()
+  Kokkos::View<const int*> active_points_, counted_points_;  // restrict_rows()
   Kokkos::View<double*> shape_functions_;
   // Spreading's persistent buffers (per-thread copies on CPUs, the atomic target on GPUs).
   using Scatter = Kokkos::Experimental::ScatterView<double*, typename Kokkos::View<double*>::array_layout,

@@ -14,8 +14,8 @@
 #include <Kokkos_Core.hpp>
 #include <vector>
 
-#include "distributed/node_halo.hpp"
 #include "fluid/fluid_operator.hpp"
+#include "parallel/communicator.hpp"
 #include "parallel/element_partition.hpp"
 #include "solver/block_jacobi.hpp"
 #include "solver/linear_operator.hpp"

@@ -9,8 +9,9 @@
 // On by default where the element loops run on a GPU: a loop's kernels run while the host
 // waits in MPI, and the one extra pass over the sums (the interior's, added at the end)
 // touches one atomic buffer. Off by default on CPU threads: there the extra pass runs over
-// every thread's copy of the sums and cost 1-3 % of an action on this project's machine,
-// while the exchanges it would hide were 0.3 % of it (bench/README.md, "Scaling across MPI
+// every thread's copy of the sums, and between two ranks of this project's machine the
+// overlapped action ran 0.94-1.07x the baseline's time (paired medians, no gain), the
+// exchanges it would hide being 0.3-0.5 % of it (bench/README.md, "Scaling across MPI
 // ranks"); set_overlap(true) where a network's latency outweighs that. One NodeHalo per
 // number of components per node (1, 4, 9, 16), made on first use.
 #include <Kokkos_Core.hpp>
@@ -28,9 +29,6 @@ class NodeSums final : public ElementSumExchange {
  public:
   // `partition` must outlive this.
   NodeSums(const Communicator& communicator, const ElementPartition& partition);
-  // Whole, at once.
-  void operator()(const Kokkos::View<double*>& values, int components) const { complete(values, components); }
-
   int boundary_elements() const override { return partition_.num_boundary_elements; }
   bool overlaps() const override { return overlap_; }
   void set_overlap(bool overlap) { overlap_ = overlap; }

@@ -313,7 +313,7 @@ void BasicSurfaceInteraction<ExecSpace>::rebuild() {
       "rouleau::SurfaceInteraction::bin_counts", Kokkos::RangePolicy<ExecSpace>(0, n_active),
       KOKKOS_LAMBDA(const int k) {
         sorted_points(k) = static_cast<int>(keys(k) % n_points);
-        Kokkos::atomic_increment(&bin_offsets(static_cast<int>(keys(k) / n_points) + 1));
+        Kokkos::atomic_add(&bin_offsets(static_cast<int>(keys(k) / n_points) + 1), 1);
       });
   Kokkos::parallel_scan(
       "rouleau::SurfaceInteraction::bin_offsets", Kokkos::RangePolicy<ExecSpace>(0, n_bins + 1),

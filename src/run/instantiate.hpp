@@ -7,7 +7,9 @@
 
 #if defined(KOKKOS_ENABLE_CUDA)
 #define ROULEAU_INSTANTIATE_FOR_EXECUTION_SPACES(Template) template class Template<Kokkos::Cuda>;
-#elif defined(KOKKOS_ENABLE_HIP)
+#elif defined(KOKKOS_ENABLE_HIP) && KOKKOS_VERSION >= 40000
+#define ROULEAU_INSTANTIATE_FOR_EXECUTION_SPACES(Template) template class Template<Kokkos::HIP>;
+#elif defined(KOKKOS_ENABLE_HIP)  // Kokkos 3.x: HIP was still Experimental
 #define ROULEAU_INSTANTIATE_FOR_EXECUTION_SPACES(Template) template class Template<Kokkos::Experimental::HIP>;
 #else
 #if defined(KOKKOS_ENABLE_SERIAL)

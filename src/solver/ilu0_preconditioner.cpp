@@ -1,5 +1,6 @@
 #include "solver/ilu0_preconditioner.hpp"
 
+#include <KokkosKernels_config.h>
 #include <KokkosSparse_spiluk.hpp>
 
 #include "run/profiling_region.hpp"
@@ -7,6 +8,14 @@
 namespace rouleau {
 
 namespace {
+// spiluk_symbolic/spiluk_numeric left KokkosSparse::Experimental in KokkosKernels 4.6 (the
+// old names are deprecated there). KOKKOSKERNELS_VERSION (KokkosKernels_config.h) exists
+// from 4.0 on; 3.4.01 defines no version macro. SPILUKAlgorithm stays in Experimental.
+#if defined(KOKKOSKERNELS_VERSION) && KOKKOSKERNELS_VERSION >= 40600
+namespace spiluk_api = KokkosSparse;
+#else
+namespace spiluk_api = KokkosSparse::Experimental;
+#endif
 using KokkosSparse::Experimental::SPILUKAlgorithm;
 }  // namespace
 
@@ -21,8 +30,8 @@ Ilu0Preconditioner::Ilu0Preconditioner(const Kokkos::View<std::size_t*>& row_map
   lower_entries_ = Kokkos::View<int*>("rouleau::Ilu0Preconditioner::lower_entries", spiluk->get_nnzL());
   upper_entries_ = Kokkos::View<int*>("rouleau::Ilu0Preconditioner::upper_entries", spiluk->get_nnzU());
   const int fill_level = 0;
-  KokkosSparse::Experimental::spiluk_symbolic(&factor_handle_, fill_level, row_map_, entries_, lower_row_map_,
-                                              lower_entries_, upper_row_map_, upper_entries_);
+  spiluk_api::spiluk_symbolic(&factor_handle_, fill_level, row_map_, entries_, lower_row_map_, lower_entries_,
+                              upper_row_map_, upper_entries_);
   Kokkos::resize(lower_entries_, spiluk->get_nnzL());
   Kokkos::resize(upper_entries_, spiluk->get_nnzU());
   lower_values_ = Kokkos::View<double*>("rouleau::Ilu0Preconditioner::lower_values", spiluk->get_nnzL());
@@ -37,9 +46,8 @@ Ilu0Preconditioner::~Ilu0Preconditioner() { factor_handle_.destroy_spiluk_handle
 void Ilu0Preconditioner::factor(const Kokkos::View<double*>& values) {
   ProfilingRegion region("rouleau::Ilu0Preconditioner::numeric");
   const int fill_level = 0;
-  KokkosSparse::Experimental::spiluk_numeric(&factor_handle_, fill_level, row_map_, entries_, values, lower_row_map_,
-                                             lower_entries_, lower_values_, upper_row_map_, upper_entries_,
-                                             upper_values_);
+  spiluk_api::spiluk_numeric(&factor_handle_, fill_level, row_map_, entries_, values, lower_row_map_, lower_entries_,
+                             lower_values_, upper_row_map_, upper_entries_, upper_values_);
 }
 
 void Ilu0Preconditioner::apply(const Kokkos::View<const double*>& r, const Kokkos::View<double*>& z) const {

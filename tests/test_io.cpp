@@ -330,6 +330,49 @@ const XmlElement& temporal_collection(const XmlElement& xdmf) {
   return *grids.at(0);
 }
 
+// The blocks ParaView's XDMF readers make of a multi-mesh .xdmf, by time (the text of the
+// Time values): the block names a user sees in the Multiblock Inspector and selects with
+// Extract Block, in order. The readers (ParaView 5.11, measured) name a block after its
+// grid, and number a grid name used before in the same document ("fluid", "fluid[1]",
+// "fluid[2]", ...); a temporal collection inside a spatial collection is one block, named
+// by the "XDMF Reader" after the collection. Covers the two layouts a writer can choose:
+// a temporal collection of per-step spatial collections, and a spatial collection of
+// per-mesh temporal collections.
+std::map<std::string, std::vector<std::string>> block_names_by_time(const XmlElement& xdmf) {
+  std::map<std::string, std::vector<std::string>> names;
+  std::map<std::string, int> uses;
+  const auto numbered = [&](const std::string& name) {
+    const int earlier = uses[name]++;
+    return earlier == 0 ? name : name + "[" + std::to_string(earlier) + "]";
+  };
+  const auto time_of = [](const XmlElement& grid) {
+    const auto times = grid.children_named("Time");
+    return times.empty() ? std::string("(no time)") : times[0]->attribute("Value");
+  };
+  const auto domains = xdmf.children_named("Domain");
+  if (domains.size() != 1 || domains[0]->children_named("Grid").size() != 1) {
+    ADD_FAILURE() << "expected one Domain with one Grid";
+    return names;
+  }
+  const XmlElement& top = *domains[0]->children_named("Grid")[0];
+  if (top.attribute("CollectionType") == "Temporal") {
+    for (const XmlElement* step : top.children_named("Grid"))
+      for (const XmlElement* grid : step->children_named("Grid"))
+        names[time_of(*step)].push_back(numbered(grid->attribute("Name")));
+  } else if (top.attribute("CollectionType") == "Spatial") {
+    for (const XmlElement* mesh : top.children_named("Grid")) {
+      if (mesh->attribute("CollectionType") != "Temporal") {
+        ADD_FAILURE() << "grid \"" << mesh->attribute("Name") << "\" of the spatial collection is not a time series";
+        continue;
+      }
+      for (const XmlElement* grid : mesh->children_named("Grid")) names[time_of(*grid)].push_back(mesh->attribute("Name"));
+    }
+  } else {
+    ADD_FAILURE() << "the Domain's grid is not a collection";
+  }
+  return names;
+}
+
 bool no_temporary_files(const std::set<std::string>& names) {
   for (const std::string& name : names)
     if (name.size() >= 4 && name.compare(name.size() - 4, 4, ".tmp") == 0) return false;
@@ -413,6 +456,14 @@ TEST_F(IoTest, HexAndTetSeriesReadsBackExactlyAndXdmfReferencesResolve) {
     EXPECT_EQ(grids[0]->attribute("CollectionType"), "Spatial");
     EXPECT_EQ(grids[0]->children_named("Grid").size(), 2u);
     EXPECT_EQ(check_hdf5_references(xdmf, directory_), std::set<std::string>{"run_mesh.h5"});
+    for (const char* name : {"run_fluid.xdmf", "run_cells.xdmf"}) {  // and each alone
+      const XmlElement single = parse_xdmf(path(name));
+      const auto bare = single.children_named("Domain").at(0)->children_named("Grid");
+      ASSERT_EQ(bare.size(), 1u) << name;
+      EXPECT_EQ(bare[0]->attribute("GridType"), "Uniform") << name;
+      EXPECT_TRUE(bare[0]->children_named("Time").empty()) << name;
+      EXPECT_EQ(check_hdf5_references(single, directory_), std::set<std::string>{"run_mesh.h5"}) << name;
+    }
   }
 
   const std::vector<double> times{0.0, 0.1, 1.0 / 3.0};
@@ -427,8 +478,9 @@ TEST_F(IoTest, HexAndTetSeriesReadsBackExactlyAndXdmfReferencesResolve) {
                       {nullptr, f.cell_coordinates.data()});
   }
   EXPECT_EQ(series.step_count(), 3u);
-  EXPECT_EQ(files(), (std::set<std::string>{"run.xdmf", "run_mesh.h5", "run_000001.h5", "run_000002.h5",
-                                            "run_000003.h5"}));
+  EXPECT_EQ(files(), (std::set<std::string>{"run.xdmf", "run_fluid.xdmf", "run_cells.xdmf", "run_mesh.h5",
+                                            "run_000001.h5", "run_000002.h5", "run_000003.h5"}));
+  EXPECT_EQ(series.mesh_xdmf_path("cells"), path("run_cells.xdmf"));
 
   // Static mesh file.
   const std::string mesh_file = series.mesh_path();
@@ -482,17 +534,28 @@ TEST_F(IoTest, HexAndTetSeriesReadsBackExactlyAndXdmfReferencesResolve) {
   EXPECT_EQ(information.at("case"), "test <io> & \"quotes\"");  // escaped and read back
   EXPECT_EQ(information.at("git_hash"), ROULEAU_GIT_HASH);
 
-  const XmlElement& temporal = temporal_collection(xdmf);
-  const auto steps = temporal.children_named("Grid");
-  ASSERT_EQ(steps.size(), 3u);
-  for (std::size_t s = 0; s < steps.size(); ++s) {
-    const XmlElement& spatial = *steps[s];
-    EXPECT_EQ(spatial.attribute("CollectionType"), "Spatial");
-    ASSERT_EQ(spatial.children_named("Time").size(), 1u);
-    EXPECT_EQ(std::strtod(spatial.children_named("Time")[0]->attribute("Value").c_str(), nullptr), times[s]);
-    const auto grids = spatial.children_named("Grid");
-    ASSERT_EQ(grids.size(), 2u);
-    EXPECT_EQ(grids[0]->attribute("Name"), "fluid");
+  // A spatial collection of one temporal collection per mesh, each with a uniform grid per
+  // step (why this layout: EveryStepOfATwoMeshSeriesShowsTheSameBlocks).
+  const auto tops = xdmf.children_named("Domain").at(0)->children_named("Grid");
+  ASSERT_EQ(tops.size(), 1u);
+  EXPECT_EQ(tops[0]->attribute("GridType"), "Collection");
+  EXPECT_EQ(tops[0]->attribute("CollectionType"), "Spatial");
+  const auto mesh_series = tops[0]->children_named("Grid");
+  ASSERT_EQ(mesh_series.size(), 2u);
+  for (std::size_t m = 0; m < mesh_series.size(); ++m) {
+    EXPECT_EQ(mesh_series[m]->attribute("Name"), m == 0 ? "fluid" : "cells");
+    EXPECT_EQ(mesh_series[m]->attribute("CollectionType"), "Temporal");
+    ASSERT_EQ(mesh_series[m]->children_named("Grid").size(), 3u);
+  }
+  for (std::size_t s = 0; s < 3; ++s) {
+    const std::vector<const XmlElement*> grids{mesh_series[0]->children_named("Grid")[s],
+                                               mesh_series[1]->children_named("Grid")[s]};
+    for (std::size_t m = 0; m < grids.size(); ++m) {
+      EXPECT_EQ(grids[m]->attribute("GridType"), "Uniform");
+      EXPECT_EQ(grids[m]->attribute("Name"), m == 0 ? "fluid" : "cells");
+      ASSERT_EQ(grids[m]->children_named("Time").size(), 1u);
+      EXPECT_EQ(std::strtod(grids[m]->children_named("Time")[0]->attribute("Value").c_str(), nullptr), times[s]);
+    }
     EXPECT_EQ(grids[0]->children_named("Topology").at(0)->attribute("TopologyType"), "Hexahedron");
     EXPECT_EQ(grids[0]->children_named("Topology").at(0)->attribute("NumberOfElements"), "8");
     EXPECT_EQ(grids[1]->children_named("Topology").at(0)->attribute("TopologyType"), "Tetrahedron");
@@ -509,6 +572,105 @@ TEST_F(IoTest, HexAndTetSeriesReadsBackExactlyAndXdmfReferencesResolve) {
     EXPECT_EQ(fluid_attributes, (std::map<std::string, std::string>{
                                     {"velocity", "Vector Node"}, {"pressure", "Scalar Node"}, {"volume", "Scalar Cell"}}));
   }
+  // Each mesh's own .xdmf holds the same grids, with the same provenance.
+  for (std::size_t m = 0; m < mesh_series.size(); ++m) {
+    const std::string name = mesh_series[m]->attribute("Name");
+    const XmlElement single = parse_xdmf(path("run_" + name + ".xdmf"));
+    const XmlElement& temporal = temporal_collection(single);
+    EXPECT_EQ(temporal.attribute("Name"), name);
+    const auto grids = temporal.children_named("Grid");
+    ASSERT_EQ(grids.size(), 3u);
+    for (std::size_t s = 0; s < grids.size(); ++s) {
+      const XmlElement& in_all = *mesh_series[m]->children_named("Grid")[s];
+      EXPECT_EQ(grids[s]->attribute("Name"), name);
+      EXPECT_EQ(grids[s]->children_named("Time").at(0)->attribute("Value"),
+                in_all.children_named("Time").at(0)->attribute("Value"));
+      std::vector<const XmlElement*> items, items_in_all;
+      grids[s]->collect("DataItem", items);
+      in_all.collect("DataItem", items_in_all);
+      ASSERT_EQ(items.size(), items_in_all.size());
+      for (std::size_t i = 0; i < items.size(); ++i) EXPECT_EQ(trimmed(items[i]->text), trimmed(items_in_all[i]->text));
+    }
+    std::map<std::string, std::string> single_information;
+    for (const XmlElement* item : single.children_named("Domain").at(0)->children_named("Information"))
+      single_information[item->attribute("Name")] = item->attribute("Value");
+    EXPECT_EQ(single_information, information) << name;
+  }
+  EXPECT_TRUE(no_temporary_files(files()));
+}
+
+TEST_F(IoTest, EveryStepOfATwoMeshSeriesShowsTheSameBlocks) {
+  // ParaView must show the fluid and the cells as the same two blocks at every step, so that
+  // a block extracted at t = 0 keeps its mesh while the series plays. Per-step spatial
+  // collections of "fluid" and "cells" (this writer's former layout) came out of ParaView 5.11
+  // as fluid, fluid[1], fluid[2], ...: a block extracted at t = 0 was empty at later times.
+  const XmlElement former = XmlReader(
+      "<Xdmf><Domain><Grid Name=\"run\" GridType=\"Collection\" CollectionType=\"Temporal\">"
+      "<Grid Name=\"step_0\" GridType=\"Collection\" CollectionType=\"Spatial\"><Time Value=\"0\"/>"
+      "<Grid Name=\"fluid\" GridType=\"Uniform\"/><Grid Name=\"cells\" GridType=\"Uniform\"/></Grid>"
+      "<Grid Name=\"step_5\" GridType=\"Collection\" CollectionType=\"Spatial\"><Time Value=\"0.5\"/>"
+      "<Grid Name=\"fluid\" GridType=\"Uniform\"/><Grid Name=\"cells\" GridType=\"Uniform\"/></Grid>"
+      "</Grid></Domain></Xdmf>").parse();
+  EXPECT_EQ(block_names_by_time(former), (std::map<std::string, std::vector<std::string>>{
+                                             {"0", {"fluid", "cells"}}, {"0.5", {"fluid[1]", "cells[1]"}}}));
+
+  const MeshDescription fluid = hex_mesh_2x2x2(), cells = tet_mesh_cube();
+  const Provenance provenance = build_provenance({{"case", "two meshes"}});
+  std::vector<double> times;
+  std::set<std::string> step_files{"run_mesh.h5"};
+  {
+    XdmfTimeSeries series(directory_.string(), "run", {fluid, cells}, provenance);
+    for (int step : {0, 5, 10, 15}) {
+      const StepFields f(step, fluid, cells);
+      times.push_back(1e-4 * step);
+      series.write_step(step, times.back(),
+                        {{{"velocity", 3, f.fluid_velocity.data()}, {"pressure", 1, f.fluid_pressure.data()}},
+                         {{"velocity", 3, f.cell_velocity.data()}}},
+                        {}, {nullptr, f.cell_coordinates.data()});
+      step_files.insert(fs::path(series.step_path(step)).filename().string());
+    }
+  }
+  // The same blocks, in the same order, under the same names, at every step written.
+  const auto expect_blocks_at_every_step = [&](std::size_t step_count) {
+    const auto names = block_names_by_time(parse_xdmf(path("run.xdmf")));
+    std::vector<double> listed;
+    for (const auto& [time, blocks] : names) {
+      listed.push_back(std::strtod(time.c_str(), nullptr));
+      EXPECT_EQ(blocks, (std::vector<std::string>{"fluid", "cells"})) << "at t = " << time;
+    }
+    EXPECT_EQ(listed, std::vector<double>(times.begin(), times.begin() + static_cast<std::ptrdiff_t>(step_count)));
+  };
+  expect_blocks_at_every_step(4);
+
+  // One .xdmf per mesh, each a temporal collection of that mesh alone (one uniform grid per
+  // step, nothing nested): every reader opens it as one dataset that plays.
+  const auto expect_mesh_files = [&](std::size_t step_count, const std::set<std::string>& files_listed) {
+    for (const MeshDescription* mesh : {&fluid, &cells}) {
+      const std::string name = "run_" + mesh->name + ".xdmf";
+      const XmlElement single = parse_xdmf(path(name));
+      const XmlElement& temporal = temporal_collection(single);
+      EXPECT_EQ(temporal.attribute("Name"), mesh->name) << name;
+      const auto grids = temporal.children_named("Grid");
+      ASSERT_EQ(grids.size(), step_count) << name;
+      for (std::size_t s = 0; s < grids.size(); ++s) {
+        EXPECT_EQ(grids[s]->attribute("GridType"), "Uniform") << name;
+        EXPECT_EQ(grids[s]->attribute("Name"), mesh->name) << name;
+        ASSERT_EQ(grids[s]->children_named("Time").size(), 1u) << name;
+        EXPECT_EQ(std::strtod(grids[s]->children_named("Time")[0]->attribute("Value").c_str(), nullptr), times[s]);
+      }
+      EXPECT_EQ(check_hdf5_references(single, directory_), files_listed) << name;
+    }
+  };
+  expect_mesh_files(4, step_files);
+
+  // A run restarted from step 10 lists steps 0 to 10 in every .xdmf, in the same layout.
+  XdmfTimeSeries resumed(directory_.string(), "run", {fluid, cells}, provenance);
+  resumed.adopt_written_steps(10);
+  step_files.erase("run_000015.h5");
+  EXPECT_FALSE(fs::exists(path("run_000015.h5")));
+  expect_blocks_at_every_step(3);
+  expect_mesh_files(3, step_files);
+  EXPECT_EQ(check_hdf5_references(parse_xdmf(path("run.xdmf")), directory_), step_files);
   EXPECT_TRUE(no_temporary_files(files()));
 }
 
@@ -596,7 +758,7 @@ TEST_F(IoTest, RejectsInconsistentInputBeforeWriting) {
   series.write_step(5, 0.0, {{{"p", 1, values.data()}}}, {});
   EXPECT_THROW(series.write_step(5, 1.0, {{{"p", 1, values.data()}}}, {}), std::invalid_argument);
   EXPECT_THROW(series.write_step(4, 1.0, {{{"p", 1, values.data()}}}, {}), std::invalid_argument);
-  EXPECT_EQ(files(), (std::set<std::string>{"run.xdmf", "run_mesh.h5", "run_000005.h5"}));
+  EXPECT_EQ(files(), (std::set<std::string>{"run.xdmf", "run_fluid.xdmf", "run_mesh.h5", "run_000005.h5"}));
 }
 
 // ---------------------------------------------------------------- diagnostics CSV

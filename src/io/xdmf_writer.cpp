@@ -122,10 +122,14 @@ XdmfTimeSeries::XdmfTimeSeries(std::string directory, std::string basename, std:
                     {static_cast<hsize_t>(meshes_[m].cell_count), per_cell});
     }
   });
-  write_file_atomically(xdmf_path(), xdmf_text());
+  write_xdmf_files();
 }
 
 std::string XdmfTimeSeries::xdmf_path() const { return (std::filesystem::path(directory_) / (basename_ + ".xdmf")).string(); }
+
+std::string XdmfTimeSeries::mesh_xdmf_path(const std::string& mesh_name) const {
+  return (std::filesystem::path(directory_) / (basename_ + "_" + mesh_name + ".xdmf")).string();
+}
 
 std::string XdmfTimeSeries::mesh_path() const {
   return (std::filesystem::path(directory_) / (basename_ + "_mesh.h5")).string();
@@ -201,7 +205,7 @@ void XdmfTimeSeries::write_step(int step, double time, const std::vector<std::ve
                          item.entity_count, item.field->components);
   });
   steps_.push_back(std::move(record));
-  write_file_atomically(xdmf_path(), xdmf_text());
+  write_xdmf_files();
 }
 
 void XdmfTimeSeries::adopt_written_steps(int last_step) {
@@ -240,7 +244,7 @@ void XdmfTimeSeries::adopt_written_steps(int last_step) {
     }
     steps_.push_back(std::move(record));
   }
-  write_file_atomically(xdmf_path(), xdmf_text());
+  write_xdmf_files();
 }
 
 void XdmfTimeSeries::append_uniform_grid(std::string& xml, std::size_t mesh_index, const StepRecord* step,
@@ -252,7 +256,7 @@ void XdmfTimeSeries::append_uniform_grid(std::string& xml, std::size_t mesh_inde
   const std::string group = "/" + mesh.name;
   const std::string inner = indent + "  ";
   xml += indent + "<Grid Name=\"" + mesh.name + "\" GridType=\"Uniform\">\n";
-  if (step != nullptr && meshes_.size() == 1) xml += inner + "<Time Value=\"" + exact_decimal(step->time) + "\"/>\n";
+  if (step != nullptr) xml += inner + "<Time Value=\"" + exact_decimal(step->time) + "\"/>\n";
   xml += inner + "<Topology TopologyType=\"" + xdmf_topology_type(mesh.cell_type) + "\" NumberOfElements=\"" +
          std::to_string(mesh.cell_count) + "\">\n";
   xml += data_item(inner + "  ", mesh.cell_count, nodes_per_cell(mesh.cell_type), true, mesh_file,
@@ -274,7 +278,18 @@ void XdmfTimeSeries::append_uniform_grid(std::string& xml, std::size_t mesh_inde
   xml += indent + "</Grid>\n";
 }
 
-std::string XdmfTimeSeries::xdmf_text() const {
+void XdmfTimeSeries::append_mesh_series(std::string& xml, std::size_t mesh_index, const std::string& name,
+                                        const std::string& indent) const {
+  if (steps_.empty()) {
+    append_uniform_grid(xml, mesh_index, nullptr, indent);
+    return;
+  }
+  xml += indent + "<Grid Name=\"" + name + "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (const StepRecord& step : steps_) append_uniform_grid(xml, mesh_index, &step, indent + "  ");
+  xml += indent + "</Grid>\n";
+}
+
+std::string XdmfTimeSeries::xdmf_text(std::size_t only_mesh) const {
   std::string xml =
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
@@ -282,27 +297,25 @@ std::string XdmfTimeSeries::xdmf_text() const {
       "  <Domain>\n";
   for (const auto& [key, value] : provenance_.attributes)
     xml += "    <Information Name=\"" + xml_escaped(key) + "\" Value=\"" + xml_escaped(value) + "\"/>\n";
-  // Several meshes at one instant form a spatial collection.
-  const auto append_instant = [&](const StepRecord* step, const std::string& indent) {
-    if (meshes_.size() == 1) {
-      append_uniform_grid(xml, 0, step, indent);
-      return;
-    }
-    xml += indent + "<Grid Name=\"" + (step ? "step_" + std::to_string(step->step) : basename_) +
-           "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n";
-    if (step != nullptr) xml += indent + "  <Time Value=\"" + exact_decimal(step->time) + "\"/>\n";
-    for (std::size_t m = 0; m < meshes_.size(); ++m) append_uniform_grid(xml, m, step, indent + "  ");
-    xml += indent + "</Grid>\n";
-  };
-  if (steps_.empty()) {
-    append_instant(nullptr, "    ");
+  if (only_mesh != all_meshes) {
+    append_mesh_series(xml, only_mesh, meshes_[only_mesh].name, "    ");
+  } else if (meshes_.size() == 1) {
+    append_mesh_series(xml, 0, basename_, "    ");
   } else {
-    xml += "    <Grid Name=\"" + basename_ + "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-    for (const StepRecord& step : steps_) append_instant(&step, "      ");
+    // One temporal collection per mesh, side by side: each mesh is one block, under one name,
+    // at every step. (Per-step spatial collections would repeat the grid names at every step,
+    // which the readers then number.)
+    xml += "    <Grid Name=\"" + basename_ + "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n";
+    for (std::size_t m = 0; m < meshes_.size(); ++m) append_mesh_series(xml, m, meshes_[m].name, "      ");
     xml += "    </Grid>\n";
   }
   xml += "  </Domain>\n</Xdmf>\n";
   return xml;
+}
+
+void XdmfTimeSeries::write_xdmf_files() const {
+  for (std::size_t m = 0; m < meshes_.size(); ++m) write_file_atomically(mesh_xdmf_path(meshes_[m].name), xdmf_text(m));
+  write_file_atomically(xdmf_path(), xdmf_text());
 }
 
 }  // namespace rouleau

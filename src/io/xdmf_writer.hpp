@@ -1,6 +1,6 @@
 #pragma once
 // XDMF 3 + HDF5 time series of unstructured meshes (8-node hexahedra, 4-node tetrahedra),
-// readable by ParaView ("XDMF Reader" / "Xdmf3 Reader").
+// for ParaView (docs/paraview.md says which reader to pick).
 //
 // Files in DIRECTORY:
 //   BASENAME_mesh.h5     written once: /MESH/coordinates (n_nodes x 3, float64),
@@ -8,13 +8,26 @@
 //   BASENAME_NNNNNN.h5   one per step: /step (int64), /time (float64), and per mesh
 //                        /MESH/FIELD (n, or n x 3 for vectors, float64) and, for a moving
 //                        mesh, /MESH/coordinates (n_nodes x 3)
-//   BASENAME.xdmf        a temporal collection of the steps written so far, rewritten after
-//                        every step; with several meshes each step is a spatial collection
+//   BASENAME_MESH.xdmf   one per mesh: a temporal collection of that mesh alone, one
+//                        uniform grid named MESH per step. Every reader (ParaView 5.11's "XDMF
+//                        Reader", "Xdmf3ReaderS", "Xdmf3ReaderT") opens it as one dataset
+//                        that plays through the steps.
+//   BASENAME.xdmf        every mesh in one file. With one mesh: a temporal collection of
+//                        uniform grids, as above. With several: a spatial collection holding
+//                        one temporal collection per mesh, named MESH, each with one uniform
+//                        grid named MESH per step. ParaView's "XDMF Reader" shows one block
+//                        per mesh, named MESH at every step; "Xdmf3ReaderT" the same blocks
+//                        at every step, unnamed; "Xdmf3ReaderS" merges the meshes into one.
+//                        Not a temporal collection of per-step spatial collections: the
+//                        readers make repeated grid names unique (MESH, MESH[1], MESH[2], ...),
+//                        so a mesh's block would change its name from step to step.
+//   Before the first step the .xdmf files hold the bare meshes (no time, no fields); the
+//   .xdmf files are rewritten after every step and list the steps written so far.
 // Every file is written to PATH.tmp and renamed once complete (io/atomic_file.hpp), and the
-// .xdmf is rewritten only after the step's .h5 is in place: an interrupted run leaves only
-// complete files, and the .xdmf refers only to files that exist. Every .h5 carries the
+// .xdmf files are rewritten only after the step's .h5 is in place: an interrupted run leaves
+// only complete files, and an .xdmf refers only to files that exist. Every .h5 carries the
 // provenance (plus "mesh_hash_MESH" for each mesh) as string attributes of its root group;
-// the .xdmf carries it as <Information Name=KEY Value=VALUE/> elements of its Domain.
+// every .xdmf carries it as <Information Name=KEY Value=VALUE/> elements of its Domain.
 //
 // Host-only: includes no Kokkos header. Fields arrive as plain host pointers: copy device
 // Views to the host first, and note that data must be entity-major (LayoutRight: x0 y0 z0
@@ -53,8 +66,9 @@ struct FieldView {
 class XdmfTimeSeries {
  public:
   // Creates `directory` if missing, writes DIRECTORY/BASENAME_mesh.h5 with every mesh's
-  // static geometry and topology, and an .xdmf of the bare meshes (replacing a stale one;
-  // ParaView's readers crash on an empty temporal collection, so it starts with the first step).
+  // static geometry and topology, and the .xdmf files of the bare meshes (replacing stale
+  // ones; ParaView's readers crash on an empty temporal collection, so the collections start
+  // with the first step).
   // Throws std::invalid_argument for a bad name, an empty mesh, an array size that is not a
   // multiple of 3 (nodes_per_cell), or a node index out of range; std::runtime_error naming
   // the file and dataset when HDF5 fails.
@@ -66,8 +80,9 @@ class XdmfTimeSeries {
   // outer vector either empty = no such fields, or one entry per mesh);
   // moved_coordinates_per_mesh[m] is either nullptr (mesh m does not move) or n_nodes x 3
   // current positions (the outer vector empty = no mesh moves). Writes BASENAME_NNNNNN.h5
-  // (NNNNNN = step, 6 digits at least), then rewrites BASENAME.xdmf to include it. Throws
-  // like the constructor; on a throw the .xdmf still describes the earlier steps.
+  // (NNNNNN = step, 6 digits at least), then rewrites the .xdmf files to include it. Throws
+  // like the constructor; on a throw the .xdmf files still describe the earlier steps (or,
+  // when rewriting an .xdmf itself failed, some of them this step too, whose .h5 is in place).
   void write_step(int step, double time, const std::vector<std::vector<FieldView>>& nodal_fields_per_mesh,
                   const std::vector<std::vector<FieldView>>& cell_fields_per_mesh,
                   const std::vector<const double*>& moved_coordinates_per_mesh = {});
@@ -75,12 +90,14 @@ class XdmfTimeSeries {
   // Continuing a series after a restart: lists again the step files already in the
   // directory up to `last_step` (each read back for its time and its fields), deletes those
   // of later steps (written after the checkpoint the run continues from), and rewrites the
-  // .xdmf. Call it once, before write_step. Throws std::runtime_error naming a step file
+  // .xdmf files. Call it once, before write_step. Throws std::runtime_error naming a step file
   // that cannot be read.
   void adopt_written_steps(int last_step);
 
-  // DIRECTORY/BASENAME.xdmf: the file to open in ParaView.
+  // DIRECTORY/BASENAME.xdmf: every mesh in one file.
   std::string xdmf_path() const;
+  // DIRECTORY/BASENAME_MESH.xdmf: mesh `mesh_name` alone.
+  std::string mesh_xdmf_path(const std::string& mesh_name) const;
   // DIRECTORY/BASENAME_mesh.h5: the static geometry and topology.
   std::string mesh_path() const;
   // DIRECTORY/BASENAME_NNNNNN.h5: the fields of step `step`.
@@ -113,9 +130,18 @@ class XdmfTimeSeries {
   };
 
   std::string file_name_of_step(int step) const;
-  std::string xdmf_text() const;
-  // One mesh's <Grid>: at `step` (with its Time when there is one mesh, and its fields), or
-  // the static mesh alone when `step` is null.
+  // The text of BASENAME.xdmf (every mesh), or of BASENAME_MESH.xdmf when `only_mesh` is a
+  // mesh index.
+  static constexpr std::size_t all_meshes = static_cast<std::size_t>(-1);
+  std::string xdmf_text(std::size_t only_mesh = all_meshes) const;
+  // Rewrites every .xdmf file: the per-mesh files, then BASENAME.xdmf.
+  void write_xdmf_files() const;
+  // One mesh's time series: a temporal collection named `name` of its uniform grids, one per
+  // step, or the static mesh alone before the first step.
+  void append_mesh_series(std::string& xml, std::size_t mesh_index, const std::string& name,
+                          const std::string& indent) const;
+  // One mesh's uniform <Grid>: at `step` (with its Time and its fields), or the static mesh
+  // alone when `step` is null.
   void append_uniform_grid(std::string& xml, std::size_t mesh_index, const StepRecord* step,
                            const std::string& indent) const;
 

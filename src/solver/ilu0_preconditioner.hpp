@@ -29,6 +29,9 @@ class Ilu0Preconditioner final : public Preconditioner {
   // The numeric factorization of the values on the graph.
   void factor(const Kokkos::View<double*>& values);
   void apply(const Kokkos::View<const double*>& r, const Kokkos::View<double*>& z) const override;
+  // Rows in the widest level of the factorization's level schedule: its numeric phase
+  // holds a scratch array of that many rows times the matrix's rows (KokkosKernels' spiluk).
+  int widest_level() const { return static_cast<int>(factor_handle_.get_spiluk_handle()->get_level_maxrows()); }
 
  private:
   int num_rows_;

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Scaling across MPI ranks (issue 10, item 6): measured from 1 to 2 ranks here, modelled
 out to 1000.
 

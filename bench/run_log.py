@@ -1,7 +1,9 @@
 """Reading a `rouleau run` log, for the bench scripts."""
 import re
 
-STAGE_LINE = re.compile(r"^\s{2}(\S.*?)\s{2,}([0-9.]+) s$")
+STAGE_LINE = re.compile(r"^\s{2}(\S.*?)\s{2,}([0-9.]+) s(?:\s+[0-9.]+ %)?$")
+# The table's last two lines are not stages: the time outside them and the total.
+NOT_STAGES = ("outside the stages", "total")
 
 
 def stage_times(log):
@@ -15,5 +17,6 @@ def stage_times(log):
             match = STAGE_LINE.match(line)
             if not match:
                 break
-            times[match.group(1).strip()] = float(match.group(2))
+            if match.group(1).strip() not in NOT_STAGES:
+                times[match.group(1).strip()] = float(match.group(2))
     return times

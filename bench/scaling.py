@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Scaling (issue 8, item 6): time per step against problem size, per stage, with the
 slope of log(time) against log(size) fitted for the whole step and for each stage. A
 stage whose fitted slope exceeds 1.2 is flagged "grows faster than linear".
@@ -162,10 +162,10 @@ def available_memory_bytes():
 
 def run_rouleau(rouleau, case_file, folder, threads, settings):
     """Runs one case; returns (exit code, log text, peak resident memory in MB, wall seconds)."""
-    os.makedirs(folder, exist_ok=True)
-    command = [rouleau, "run", case_file, "--out", folder, "--no-progress", "--threads", str(threads)]
+    command = [rouleau, "run", case_file, "--out", folder, "--overwrite", "--no-progress", "--threads", str(threads)]
     command += [a for s in settings for a in ("--set", s)]
-    log_path = os.path.join(folder, "run.log")
+    # Beside the run's folder: a run starts only in an empty folder (or empties it).
+    log_path = folder.rstrip("/") + ".log"
     start = time.monotonic()
     with open(log_path, "w") as log:
         process = subprocess.Popen(command, stdout=log, stderr=subprocess.STDOUT)

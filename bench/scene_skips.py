@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """What a scene does not need (issue 8, item 5): each paper case run for a few steps at
 full resolution with its skips (scene.skip_unneeded_stages = true, the default; the
 "variant") and without them (the "baseline"), from the same start. Prints, per case, the time per stage both ways, the

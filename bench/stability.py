@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Stability map (issue 8, item 2): short reduced runs swept over the time step, for each
 coupling scheme, against the explicit coupling's predicted stable step (rouleau check
 prints it: C μ h_f / G_eff), over the cell stiffness (normal to sickle), the shear rate

@@ -1,15 +1,16 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Figures from a rouleau run's diagnostics.csv (and its case.resolved.toml).
 
     scripts/plot_diagnostics.py RUN_DIR [--out FOLDER] [--plane xy|xz|yz] [--snapshots N]
 
-Writes PNG files into RUN_DIR/figures (or FOLDER) and prints their paths:
+Writes PNG files into RUN_DIR/figures (or FOLDER) and prints their paths; each figure is
+titled with the case's name and what it shows:
   driving_pressure.png  vessels: the driving pressure against time (the paper's Fig. 17),
                         each cell's position along the vessel with the throat's extent, and
                         the cells past the throat's exit with the inflow and outflow
   gaps.png              two cells or more: each pair's gap and contact area against time
   cell_shapes.png       cells: inclination and Taylor deformation in the shear plane
-  volumes.png           cells: each cell's volume relative to its first row
+  volumes.png           cells: each cell's volume relative to its first row (t = 0)
   cell_extents.png      cells: the outer surface's extent along x, y and z (a capsule's
                         length and width in a capillary along x)
   wall_stress.png       the wall shear stress and the relative apparent viscosity
@@ -19,7 +20,8 @@ Writes PNG files into RUN_DIR/figures (or FOLDER) and prints their paths:
                         over the run (the paper's snapshot figures, e.g. Figs. 6 and 8-16);
                         in a vessel, with its wall in planes through its axis
 Only the figures the run's columns and files allow are drawn. Needs matplotlib
-(Debian's python3-matplotlib), and h5py (python3-h5py) for the cross-sections.
+(Debian's python3-matplotlib), and h5py (python3-h5py) for the cross-sections: it runs
+with Debian's /usr/bin/python3, which has them after scripts/bootstrap.sh.
 """
 import argparse
 import csv
@@ -51,12 +53,20 @@ def cell_count(columns):
     return count
 
 
-def save(figure, folder, name, written):
-    path = os.path.join(folder, name)
+class Figures:
+    """Where the figures go, the paths written, and the case's name for their titles."""
+
+    def __init__(self, folder, case_name):
+        self.folder, self.case_name, self.written = folder, case_name, []
+
+
+def save(figure, figures, name, title):
+    path = os.path.join(figures.folder, name)
+    figure.suptitle(f"{figures.case_name}: {title}" if figures.case_name else title)
     figure.tight_layout()
     figure.savefig(path, dpi=120)
     plt.close(figure)
-    written.append(path)
+    figures.written.append(path)
 
 
 def throat_span(case):
@@ -92,7 +102,7 @@ def vessel_wall(case, x):
     return transition(throat, radius, (x - diffuser) / vessel["diffuser_length_um"])
 
 
-def plot_vessel(columns, case, folder, written):
+def plot_vessel(columns, case, figures):
     """Driving pressure (Fig. 17), each cell's position along the vessel, and the cells past
     the throat's exit with the flow rates (the contraction's diagnostics, Figs. 13-15)."""
     if "driving_pressure_Pa" not in columns:
@@ -105,7 +115,6 @@ def plot_vessel(columns, case, folder, written):
     axes = axes[:, 0]
     axes[0].plot(time, columns["driving_pressure_Pa"], color="tab:red")
     axes[0].set_ylabel("driving pressure [Pa]\n(inlet − outlet)")
-    axes[0].set_title(f"{case.get('case', {}).get('name', '')}: driving pressure, cells along the vessel")
     if cells:
         for c in range(min(cells, 12)):
             axes[1].plot(time, columns[f"cell{c}_centroid_x_um"], label=f"cell {c}")
@@ -128,10 +137,10 @@ def plot_vessel(columns, case, folder, written):
             rate.set_ylim(0.0, 1.25 * largest)  # from zero: outflow and inflow agree to the solver's tolerance
             rate.legend(fontsize="small", loc="lower right")
     axes[-1].set_xlabel("time [s]")
-    save(figure, folder, "driving_pressure.png", written)
+    save(figure, figures, "driving_pressure.png", "driving pressure and cells along the vessel")
 
 
-def plot_gaps(columns, folder, written):
+def plot_gaps(columns, figures):
     pairs = sorted(name[len("gap_"):-len("_um")] for name in columns if name.startswith("gap_"))
     if not pairs:
         return
@@ -147,10 +156,10 @@ def plot_gaps(columns, folder, written):
     area_axis.set_xlabel("time [s]")
     if len(pairs) <= 12:
         gap_axis.legend(fontsize="small")
-    save(figure, folder, "gaps.png", written)
+    save(figure, figures, "gaps.png", "gaps and contact areas between cells")
 
 
-def plot_cells(columns, folder, written):
+def plot_cells(columns, figures):
     cells = cell_count(columns)
     if cells == 0:
         return
@@ -164,18 +173,20 @@ def plot_cells(columns, folder, written):
     deformation_axis.set_xlabel("time [s]")
     if cells <= 12:
         angle_axis.legend(fontsize="small")
-    save(figure, folder, "cell_shapes.png", written)
+    save(figure, figures, "cell_shapes.png", "inclination and Taylor deformation in the shear plane")
 
     figure, axis = plt.subplots(figsize=(7, 4))
     for c in range(cells):
         volume = columns[f"cell{c}_volume_um3"]
         axis.plot(time, [v / volume[0] - 1.0 for v in volume], label=f"cell {c}")
-    axis.set_ylabel("relative volume change")
+    axis.set_ylabel("relative volume change\n(V − V₀) / V₀")
     axis.set_xlabel("time [s]")
-    save(figure, folder, "volumes.png", written)
+    if cells <= 12:
+        axis.legend(fontsize="small")
+    save(figure, figures, "volumes.png", "each cell's enclosed volume")
 
 
-def plot_extents(columns, folder, written):
+def plot_extents(columns, figures):
     cells = cell_count(columns)
     if cells == 0 or "cell0_extent_x_um" not in columns:
         return
@@ -188,36 +199,39 @@ def plot_extents(columns, folder, written):
     axis.set_ylabel("extent of the outer surface [μm]")
     axis.set_xlabel("time [s]")
     axis.legend(fontsize="small", ncol=3)
-    save(figure, folder, "cell_extents.png", written)
+    save(figure, figures, "cell_extents.png", "extents of the cells' outer surfaces")
 
 
-def plot_walls(columns, folder, written):
+def plot_walls(columns, figures):
     names = [n for n in ("wall_shear_stress_y_min_Pa", "wall_shear_stress_y_max_Pa", "mean_wall_shear_stress_Pa")
              if n in columns and any(math.isfinite(v) for v in columns[n])]
     if not names:
         return
     time = columns["time_s"]
     figure, (stress_axis, viscosity_axis) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
+    readable = {"wall_shear_stress_y_min_Pa": "wall at y min", "wall_shear_stress_y_max_Pa": "wall at y max",
+                "mean_wall_shear_stress_Pa": "mean over the vessel wall"}
     for name in names:
-        stress_axis.plot(time, columns[name], label=name)
+        stress_axis.plot(time, columns[name], label=readable[name])
     stress_axis.set_ylabel("wall shear stress [Pa]")
     stress_axis.legend(fontsize="small")
     viscosity_axis.plot(time, columns["relative_apparent_viscosity"])
-    viscosity_axis.set_ylabel("relative apparent viscosity")
+    viscosity_axis.set_ylabel("relative apparent viscosity\nτ_w / (μ γ̇)")
     viscosity_axis.set_xlabel("time [s]")
-    save(figure, folder, "wall_stress.png", written)
+    save(figure, figures, "wall_stress.png", "wall shear stress and relative apparent viscosity")
 
 
-def plot_solver(columns, folder, written):
+def plot_solver(columns, figures):
     figure, axis = plt.subplots(figsize=(7, 3.5))
     axis.plot(columns["step"], columns["gmres_iterations"], label="GMRES iterations")
     axis.plot(columns["step"], columns["newton_iterations"], label="Newton iterations")
     axis.set_xlabel("step")
+    axis.set_ylabel("iterations per step")
     axis.legend(fontsize="small")
-    save(figure, folder, "solver.png", written)
+    save(figure, figures, "solver.png", "solver iterations")
 
 
-def plot_cross_sections(run_dir, case, plane, snapshots, folder, written):
+def plot_cross_sections(run_dir, case, plane, snapshots, figures):
     """Cell nodes near a plane at `snapshots` field outputs, one panel each, coloured by cell."""
     try:
         import h5py
@@ -269,7 +283,7 @@ def plot_cross_sections(run_dir, case, plane, snapshots, folder, written):
         panel.set_title(f"t = {time:.4g} s", fontsize="small")
         panel.set_xlabel(f"{names[first]} [μm]")
         panel.set_ylabel(f"{names[second]} [μm]")
-    save(figure, folder, "cross_sections.png", written)
+    save(figure, figures, "cross_sections.png", f"cell nodes within 0.5 μm of the {names[first]}{names[second]} plane")
 
 
 def main(argv):
@@ -288,15 +302,15 @@ def main(argv):
             case = tomllib.load(f)
     folder = arguments.out or os.path.join(arguments.run_dir, "figures")
     os.makedirs(folder, exist_ok=True)
-    written = []
-    plot_vessel(columns, case, folder, written)
-    plot_gaps(columns, folder, written)
-    plot_cells(columns, folder, written)
-    plot_extents(columns, folder, written)
-    plot_walls(columns, folder, written)
-    plot_solver(columns, folder, written)
-    plot_cross_sections(arguments.run_dir, case, arguments.plane, arguments.snapshots, folder, written)
-    for path in written:
+    figures = Figures(folder, case.get("case", {}).get("name", ""))
+    plot_vessel(columns, case, figures)
+    plot_gaps(columns, figures)
+    plot_cells(columns, figures)
+    plot_extents(columns, figures)
+    plot_walls(columns, figures)
+    plot_solver(columns, figures)
+    plot_cross_sections(arguments.run_dir, case, arguments.plane, arguments.snapshots, figures)
+    for path in figures.written:
         print(path)
     return 0
 

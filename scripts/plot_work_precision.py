@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Work–precision figure from bench/work_precision's CSV: relative L2 error of velocity
 and of pressure against wall time, log–log, one panel per equation set and error, one
 line per element type and preconditioner (points labelled with n, elements per side).

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -12,8 +13,11 @@
 #include <string>
 #include <vector>
 
+#include <Kokkos_Core.hpp>
+
 #include "cli/cli.hpp"
 #include "cli/progress.hpp"
+#include "io/provenance.hpp"
 #include "rouleau_version.hpp"
 #include "util/errors.hpp"
 #include "run_rouleau.hpp"
@@ -96,16 +100,36 @@ TEST(CliParse, UsageErrorsFinishWithExitCode2) {
 
 TEST(CliParse, HelpAndVersionFinishWithExitCode0) {
   for (const auto& arguments : std::vector<std::vector<const char*>>{
-           {"--help"}, {"run", "--help"}, {"check", "--help"}, {"info", "--help"}}) {
+           {"--help"}, {"help"}, {"run", "--help"}, {"check", "--help"}, {"info", "--help"}}) {
     std::string out;
     const auto command_line = parse(arguments, &out);
     EXPECT_EQ(command_line.command, rouleau::Command::finished);
     EXPECT_EQ(command_line.exit_code, 0);
     EXPECT_NE(out.find("Usage"), std::string::npos) << out;
   }
-  std::string out;
-  EXPECT_EQ(parse({"--version"}, &out).exit_code, 0);
-  EXPECT_NE(out.find(ROULEAU_VERSION), std::string::npos);
+  for (const char* version : {"--version", "version"}) {
+    std::string out;
+    const auto command_line = parse({version}, &out);
+    EXPECT_EQ(command_line.command, rouleau::Command::finished);
+    EXPECT_EQ(command_line.exit_code, 0);
+    EXPECT_NE(out.find(ROULEAU_VERSION), std::string::npos) << version;
+  }
+  // No subcommand at all: the help, on stderr, as a usage error.
+  std::string out, err;
+  EXPECT_EQ(parse({}, &out, &err).exit_code, 2);
+  EXPECT_NE(err.find("Subcommands"), std::string::npos) << err;
+}
+
+TEST(CliParse, OverwriteAndNoMemoryCheck) {
+  const auto plain = parse({"run", "case.toml"});
+  EXPECT_FALSE(plain.overwrite);
+  EXPECT_TRUE(plain.memory_check);
+  const auto both = parse({"run", "case.toml", "--overwrite", "--no-memory-check"});
+  EXPECT_TRUE(both.overwrite);
+  EXPECT_FALSE(both.memory_check);
+  EXPECT_FALSE(parse({"check", "case.toml", "--no-memory-check"}).memory_check);
+  // A restart continues its own folder: nothing to overwrite.
+  EXPECT_EQ(parse({"run", "--restart", "old", "--overwrite"}).exit_code, 2);
 }
 
 TEST(CliParse, CaseDriverTakesTheRunOptionsWithItsOwnDefaults) {
@@ -181,6 +205,38 @@ TEST(CliExecutable, CheckGoodCasePrintsItsSummary) {
   EXPECT_EQ(outcome.err, "");
 }
 
+TEST(CliExecutable, CasesTooLargeAreRefusedBeforeAnyWork) {
+  // Inside the range of each component of domain.elements, these crashed: 4096³ (a 32-bit
+  // node count wrapped; a segmentation fault) and 1000³ (Kokkos failed to allocate 22.4
+  // GiB). Both are refused now, with one line and exit 2, before a file is written, also
+  // with --no-memory-check (their indices overflow 32 bits); 300³ needs some 500 GiB.
+  const std::string shear = std::string(ROULEAU_SOURCE_DIR) + "/cases/shear_flow/case.toml";
+  for (const std::string size : {"4096", "1000"})
+    for (const std::string command : {"check", "run", "run --no-memory-check"}) {
+      const std::string out = fresh_output_dir("too_large");
+      const std::string elements = " --set domain.elements=[" + size + "," + size + "," + size + "]";
+      SCOPED_TRACE(command + elements);
+      const Outcome outcome = run_rouleau(command + " " + shear + elements +
+                                          (command == "check" ? std::string() : " --no-progress --out " + out));
+      EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+      EXPECT_EQ(line_count(outcome.err), 1u) << outcome.err;
+      EXPECT_NE(outcome.err.find("domain.elements: the mesh is too large for rouleau's 32-bit indices"),
+                std::string::npos)
+          << outcome.err;
+      EXPECT_FALSE(std::filesystem::exists(out)) << "a refused run wrote " << out;
+    }
+  const Outcome check = run_rouleau("check " + shear + " --set domain.elements=[300,300,300]");
+  if (check.exit_code == 0) GTEST_SKIP() << "a machine with some 500 GiB to spare:\n" << check.out;
+  const Outcome run = run_rouleau("run " + shear + " --set domain.elements=[300,300,300] --no-progress --out " +
+                                  fresh_output_dir("too_large_memory"));
+  for (const Outcome& outcome : {check, run}) {
+    EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+    EXPECT_NE(outcome.err.find("domain.elements: the case needs about "), std::string::npos) << outcome.err;
+    EXPECT_NE(outcome.err.find("more than the "), std::string::npos) << outcome.err;
+  }
+  EXPECT_NE(check.out.find("memory    about "), std::string::npos) << check.out;
+}
+
 TEST(CliExecutable, CheckBadCasesExitWith2AndOneLineNamingTheKey) {
   int files = 0;
   for (const auto& entry : std::filesystem::directory_iterator(data_dir + "/bad_cases")) {
@@ -237,8 +293,28 @@ TEST(CliExecutable, InfoReportsVersionsAndTheOpenMPBackend) {
   EXPECT_EQ(threads, "3") << outcome.out;
 }
 
+// "3.4.01" or "4.6.1" as major * 10000 + minor * 100 + patch (KOKKOS_VERSION's encoding).
+int encoded_version(const std::string& dotted) {
+  int major = -1, minor = -1, patch = -1;
+  if (std::sscanf(dotted.c_str(), "%d.%d.%d", &major, &minor, &patch) != 3) return -1;
+  return major * 10000 + minor * 100 + patch;
+}
+
+TEST(Provenance, NamesTheKokkosVersionsTheBuildFound) {
+  // Compared with what the compiler sees (Kokkos's own KOKKOS_VERSION macro) and what CMake
+  // found (KokkosKernels 3.4 has no version macro), not with the macro the provenance
+  // itself is made from: that one was empty when it was written before Kokkos was found.
+  const rouleau::Provenance provenance = rouleau::build_provenance();
+  ASSERT_NE(provenance.find("kokkos_version"), nullptr);
+  EXPECT_EQ(encoded_version(*provenance.find("kokkos_version")), KOKKOS_VERSION) << *provenance.find("kokkos_version");
+  ASSERT_NE(provenance.find("kokkoskernels_version"), nullptr);
+  const std::string kernels = *provenance.find("kokkoskernels_version");
+  EXPECT_GT(encoded_version(kernels), 30000) << kernels;
+  EXPECT_EQ(kernels, ROULEAU_FOUND_KOKKOSKERNELS_VERSION);
+}
+
 TEST(CliExecutable, HelpOnEverySubcommandAndVersion) {
-  for (const std::string arguments : {"--help", "run --help", "check --help", "info --help", "--version"}) {
+  for (const std::string arguments : {"--help", "help", "run --help", "check --help", "info --help", "--version", "version"}) {
     SCOPED_TRACE(arguments);
     const Outcome outcome = run_rouleau(arguments);
     EXPECT_EQ(outcome.exit_code, 0);

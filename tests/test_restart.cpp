@@ -48,8 +48,9 @@ void expect_identical_runs(const std::string& run_a, const std::string& run_b, i
 
   const auto rows_a = rouleau::read_diagnostics(run_a + "/diagnostics.csv");
   const auto rows_b = rouleau::read_diagnostics(run_b + "/diagnostics.csv");
-  ASSERT_EQ(rows_a.size(), static_cast<std::size_t>(step));
-  ASSERT_EQ(rows_b.size(), static_cast<std::size_t>(step));
+  // a row per step, after the row of t = 0
+  ASSERT_EQ(rows_a.size(), static_cast<std::size_t>(step) + 1);
+  ASSERT_EQ(rows_b.size(), static_cast<std::size_t>(step) + 1);
   for (std::size_t r = 0; r < rows_a.size(); ++r)
     for (const auto& [column, value] : rows_a[r]) {
       if (is_wall_time(column)) continue;
@@ -140,9 +141,10 @@ TEST(Restart, RestartWithAnotherStepEndsAtTheEndTime) {
                                       " --no-progress --set time.dt_s=0.005 --set time.end_s=0.06");
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
   const auto rows = rouleau::read_diagnostics(out + "/diagnostics.csv");
-  ASSERT_EQ(rows.size(), 8u);
+  ASSERT_EQ(rows.size(), 9u);  // t = 0, 4 steps of 0.01 s, 4 of 0.005 s
+  EXPECT_NEAR(rows.front().at("time_s"), 0.0, 1e-12);
   EXPECT_NEAR(rows.back().at("time_s"), 0.06, 1e-12);
-  EXPECT_NEAR(rows[4].at("time_s"), 0.045, 1e-12);
+  EXPECT_NEAR(rows[5].at("time_s"), 0.045, 1e-12);
 }
 
 // Starts the plasma shear flow with 20 000 steps of 1 ms (and `settings`, "key=value")

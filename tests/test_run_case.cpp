@@ -13,6 +13,7 @@
 
 #include "io/checkpoint_file.hpp"
 #include "io/diagnostics_reader.hpp"
+#include "io/run_folder.hpp"
 #include "mesh/fluid_mesh.hpp"
 #include "hdf5_reading.hpp"
 #include "run_rouleau.hpp"
@@ -43,8 +44,77 @@ TEST(RunCase, ShearFlowOfPlasmaHasRelativeViscosityOne) {
   EXPECT_NEAR(last.at("relative_apparent_viscosity"), 1.0, 1e-6);
   EXPECT_NEAR(last.at("wall_shear_stress_y_max_Pa"), 1.2e-3 * 0.5, 1e-9);
   EXPECT_NEAR(last.at("time_s"), 0.2, 1e-12);
-  for (const char* file : {"fields.xdmf", "fields_mesh.h5", "fields_000004.h5", "case.resolved.toml"})
+  for (const char* file : {"fields.xdmf", "fields_mesh.h5", "fields_000004.h5", "case.resolved.toml", "run.log"})
     EXPECT_TRUE(std::filesystem::exists(out + "/" + file)) << file;
+  // The diagnostics start with the state at t = 0.
+  const auto rows = rouleau::read_diagnostics(out + "/diagnostics.csv");
+  ASSERT_EQ(rows.size(), 5u);
+  EXPECT_EQ(rows.front().at("step"), 0.0);
+  EXPECT_EQ(rows.front().at("time_s"), 0.0);
+  // The run's log holds what it printed: its id first, the stage table with the stages
+  // that ran (a fluid alone: no cell stage), the time outside them and the total.
+  const std::string log = file_contents(out + "/run.log");
+  EXPECT_EQ(log.rfind("rouleau run id ", 0), 0u) << log;
+  EXPECT_NE(log.find("fluid mesh: "), std::string::npos) << log;
+  const std::size_t table = log.find("time per stage:");
+  ASSERT_NE(table, std::string::npos) << log;
+  for (const char* line : {"  fluid", "  outside the stages", "  total"})
+    EXPECT_NE(log.find(line, table), std::string::npos) << line << " not in\n" << log;
+  for (const char* stage : {"elastic", "spread", "interaction", "cell diagnostics"})
+    EXPECT_EQ(log.find(stage, table), std::string::npos) << stage << " in\n" << log;
+  // After its first line, the log is what the run printed on stderr.
+  EXPECT_EQ(log.substr(log.find('\n') + 1), o.err);
+}
+
+// The first line of a run's log names its run id.
+std::string run_id_of(const std::string& out) {
+  const std::string log = file_contents(out + "/run.log");
+  const std::string prefix = "rouleau run id ";
+  return log.rfind(prefix, 0) == 0 ? log.substr(prefix.size(), 16) : "";
+}
+
+TEST(RunFolder, ASecondRunIntoTheFolderIsRefusedUnlessOverwritten) {
+  // A reused output folder once mixed two runs' diagnostics, fields and checkpoints, and a
+  // restart continued the older case. Now the second run stops before any work, exit 2.
+  const std::string out = fresh_output_dir("reused");
+  const std::string small = " --no-progress --set domain.elements=[4,4,2] --set time.end_s=0.1";
+  const std::string first = "run " + cases_dir + "/shear_flow/case.toml --out " + out + small;
+  ASSERT_EQ(run_rouleau(first).exit_code, 0);
+  const std::string first_id = run_id_of(out);
+  EXPECT_EQ(first_id.size(), 16u);
+  const std::string diagnostics = file_contents(out + "/diagnostics.csv");
+
+  const std::string second = "run " + cases_dir + "/channel/case.toml --out " + out + " --no-progress --set time.end_s=0.1";
+  const Outcome refused = run_rouleau(second);
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_NE(refused.err.find(out + ": --out: the folder holds an earlier run (run id " + first_id + ")"),
+            std::string::npos)
+      << refused.err;
+  EXPECT_NE(refused.err.find("--overwrite"), std::string::npos) << refused.err;
+  EXPECT_EQ(file_contents(out + "/diagnostics.csv"), diagnostics);
+  EXPECT_EQ(run_id_of(out), first_id);
+
+  // --overwrite empties it first: one run, the channel's, with a new id in every file.
+  const Outcome overwritten = run_rouleau(second + " --overwrite");
+  ASSERT_EQ(overwritten.exit_code, 0) << overwritten.err;
+  const std::string second_id = run_id_of(out);
+  EXPECT_NE(second_id, first_id);
+  EXPECT_EQ(rouleau::single_run_id(out), second_id);
+  EXPECT_NE(file_contents(out + "/case.resolved.toml").find("channel"), std::string::npos);
+
+  // --out naming a file: bad input, not an internal error.
+  const Outcome on_a_file = run_rouleau("run " + cases_dir + "/shear_flow/case.toml --out " + out + "/run.log" + small);
+  EXPECT_EQ(on_a_file.exit_code, 2) << on_a_file.err;
+  EXPECT_NE(on_a_file.err.find("names a file, not a folder"), std::string::npos) << on_a_file.err;
+
+  // A checkpoint of the first run put among the second's: the restart refuses the folder.
+  const std::string other = fresh_output_dir("reused_other");
+  ASSERT_EQ(run_rouleau("run " + cases_dir + "/shear_flow/case.toml --out " + other + small).exit_code, 0);
+  std::filesystem::create_directories(out + "/checkpoints");  // the channel's steady run wrote none
+  std::filesystem::copy_file(rouleau::newest_valid_checkpoint(other).path, out + "/checkpoints/checkpoint_000000099.h5");
+  const Outcome mixed = run_rouleau("run --restart " + out + " --no-progress");
+  EXPECT_EQ(mixed.exit_code, 2) << mixed.err;
+  EXPECT_NE(mixed.err.find("different runs"), std::string::npos) << mixed.err;
 }
 
 TEST(RunCase, CellsAreWrittenInPlaceBesideTheFluid) {
@@ -195,9 +265,15 @@ TEST(RunCase, ContractionWritesTetrahedraAndTheDrivingPressure) {
   EXPECT_NE(file_contents(out + "/fields.xdmf").find("TopologyType=\"Tetrahedron\""), std::string::npos);
   // The figures of a vessel run (matplotlib from Debian, installed by scripts/bootstrap.sh).
   const std::string figures = out + "/figures";
-  // Debian's interpreter, which has the python3-matplotlib package.
-  ASSERT_EQ(std::system(("/usr/bin/python3 " + std::string(ROULEAU_SOURCE_DIR) + "/scripts/plot_diagnostics.py " + out +
-                         " > /dev/null").c_str()),
+  // Run as the README says, by the script's own first line (Debian's interpreter, which has
+  // python3-matplotlib), with another python3 first on PATH as on many machines: a
+  // `#!/usr/bin/env python3` script would find that one, without matplotlib.
+  const std::string decoy = fresh_output_dir("contraction_decoy_python");
+  ASSERT_EQ(std::system(("mkdir -p " + decoy + " && printf '#!/bin/sh\\nexit 97\\n' > " + decoy +
+                         "/python3 && chmod +x " + decoy + "/python3").c_str()),
+            0);
+  ASSERT_EQ(std::system(("PATH=" + decoy + ":$PATH " + std::string(ROULEAU_SOURCE_DIR) + "/scripts/plot_diagnostics.py " +
+                         out + " > /dev/null").c_str()),
             0);
   for (const char* name : {"driving_pressure.png", "wall_stress.png", "solver.png"}) {
     const std::string png = file_contents(figures + "/" + name);
@@ -220,7 +296,7 @@ TEST(RunCase, CellsEnterTheContractionNormalAndSickle) {
                                   variant);
     ASSERT_EQ(o.exit_code, 0) << o.err;
     const auto rows = rouleau::read_diagnostics(out + "/diagnostics.csv");
-    ASSERT_EQ(rows.size(), 3u);
+    ASSERT_EQ(rows.size(), 4u);  // t = 0 and 3 steps
     const double start = variant.empty() ? 5.0 : 9.0;  // cell 0's centre in the case
     std::printf("contraction (coarse) %s: cell 0 at x = %.4f um after 3 ms, largest volume change %.2e\n",
                 variant.empty() ? "normal cells" : "sickle cell", rows.back().at("cell0_centroid_x_um"),

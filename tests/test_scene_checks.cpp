@@ -133,6 +133,15 @@ TEST(SceneChecks, CapillaryPassageRisesPlugsStretchesAndFalls) {
   const auto f = rouleau::check_capillary_passage(flat, 20.0, 40.0);
   EXPECT_FALSE(f.rose);
   EXPECT_FALSE(f.longer_inside);
+  // The row of step 0 (the fluid at rest, no driving pressure yet) is no start to rise from.
+  DiagnosticsRows from_rest = flat;
+  for (std::size_t r = 0; r < from_rest.size(); ++r) from_rest[r]["step"] = 10.0 * r + 10.0;
+  auto at_rest = capsule_row(7, 6.0, 0.0);
+  at_rest["step"] = 0.0;
+  from_rest.insert(from_rest.begin(), at_rest);
+  const auto r = rouleau::check_capillary_passage(from_rest, 20.0, 40.0);
+  EXPECT_DOUBLE_EQ(r.initial_pressure, 1.6);
+  EXPECT_FALSE(r.rose);
 }
 
 }  // namespace

@@ -143,10 +143,10 @@ TEST(Scenes, CapsuleMovingWithTheWholeVelocityEntersTheCapillary) {
                              " --set 'cells=[{kind=\"capsule\", center_um=[17.0, 0, 0]}]'";
   const auto whole = run_scene("capillary", "_whole_velocity", coarse);
   const auto resolved = run_scene("capillary", "_resolved_velocity", coarse + " --set coupling.subscale_velocity=false");
-  ASSERT_EQ(whole.size(), 2u);
-  ASSERT_EQ(resolved.size(), 2u);
+  ASSERT_EQ(whole.size(), 3u);  // t = 0, 0.01 and 0.02 s
+  ASSERT_EQ(resolved.size(), 3u);
   const auto rate = [](const rouleau::DiagnosticsRows& rows, const char* column) {
-    return (rows[1].at(column) - rows[0].at(column)) / (rows[1].at("time_s") - rows[0].at("time_s"));
+    return (rows[2].at(column) - rows[1].at(column)) / (rows[2].at("time_s") - rows[1].at("time_s"));
   };
   const double speed_whole = rate(whole, "cell0_centroid_x_um"), speed_resolved = rate(resolved, "cell0_centroid_x_um");
   const double rise_whole = rate(whole, "driving_pressure_Pa"), rise_resolved = rate(resolved, "driving_pressure_Pa");
@@ -246,7 +246,7 @@ TEST(Scenes, TwelveCellAggregateShearsColumnByColumn) {
                               " --set cell_kinds.normal.resolution=coarse --set domain.elements=[30,15,12]"
                               " --set output.fields=false --set output.diagnostics_every_steps=1"
                               " --set time.dt_s=3.2e-4 --set time.end_s=0.0032");
-  ASSERT_EQ(rows.size(), 10u);
+  ASSERT_EQ(rows.size(), 11u);  // t = 0 and 10 steps
   const double duration = rows.back().at("time_s") - rows.front().at("time_s");
   const auto moved = [&](int cell) {
     const std::string x = "cell" + std::to_string(cell) + "_centroid_x_um";

@@ -79,14 +79,18 @@ CapillaryPassageCheck check_capillary_passage(const DiagnosticsRows& rows, doubl
   const std::vector<double> position = diagnostics_column(rows, "cell0_centroid_x_um");
   const std::vector<double> length = diagnostics_column(rows, "cell0_extent_x_um");
   CapillaryPassageCheck check;
-  check.initial_pressure = pressure.front();
+  // The row of step 0 holds the fluid as it starts, before any solve has driven it (no
+  // pressure drop yet): the pressures are taken from the rows after it.
+  const std::size_t first_driven =
+      rows.size() > 1 && rows.front().count("step") && rows.front().at("step") == 0.0 ? 1 : 0;
+  check.initial_pressure = pressure[first_driven];
   check.final_pressure = pressure.back();
   check.final_position = position.back();
   check.free_length = length.front();
-  check.peak_pressure = pressure.front();
-  check.peak_position = position.front();
+  check.peak_pressure = pressure[first_driven];
+  check.peak_position = position[first_driven];
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (pressure[i] > check.peak_pressure) {
+    if (i >= first_driven && pressure[i] > check.peak_pressure) {
       check.peak_pressure = pressure[i];
       check.peak_position = position[i];
     }

@@ -63,7 +63,7 @@ ContractionPassageCheck check_contraction_passage(const DiagnosticsRows& rows, c
 // capillary and falls after it leaves; inside, the capsule is longer than its free
 // diameter". Cell 0's centroid and x-extent, and driving_pressure_Pa, over the run.
 struct CapillaryPassageCheck {
-  double initial_pressure = 0.0;  // [Pa] first row (the capsule still in the inlet feeder)
+  double initial_pressure = 0.0;  // [Pa] first row after step 0 (the capsule still in the inlet feeder)
   double peak_pressure = 0.0;     // [Pa] largest over the run
   double peak_position = 0.0;     // [μm] the capsule's centroid x at the peak
   double final_pressure = 0.0;    // [Pa] last row

@@ -19,6 +19,7 @@ int run_command(const rouleau::CommandLine& command_line) {
   rouleau::RunOptions options = rouleau::run_options(command_line);
   const rouleau::CaseConfig config = rouleau::load_run_case(command_line, options.restart, std::cerr);
   rouleau::derive_quantities(config);
+  rouleau::check_memory(config, command_line);  // a case that does not fit stops here
   // MPI before Kokkos: under `mpirun -np N` the fluid is split across N ranks.
   rouleau::MpiSession mpi;
   rouleau::KokkosSession kokkos("rouleau", command_line.threads);

@@ -3,12 +3,16 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <ostream>
 #include <sstream>
+#include <thread>
 
 #include "config/derived.hpp"
 #include "config/load_case.hpp"
+#include "config/memory_estimate.hpp"
+#include "io/run_folder.hpp"
 #include "parallel/mpi_session.hpp"
 #include "rouleau_version.hpp"
 #include "util/errors.hpp"
@@ -30,6 +34,15 @@ void add_run_options(CLI::App& command, CommandLine& result, bool& no_progress) 
                   "overrides, e.g. a later time.end_s); the outputs go on in DIR")
       ->type_name("DIR")
       ->excludes(out);
+  command.add_flag("--overwrite", result.overwrite,
+                   "Empty the output folder first when it holds an earlier run (without it, a run refuses a "
+                   "folder that holds files)")
+      ->excludes("--restart");
+}
+
+void add_memory_check_option(CLI::App& command, CommandLine& result) {
+  command.add_flag("--no-memory-check{false}", result.memory_check,
+                   "Go ahead when the case's estimated memory exceeds what the machine has available");
 }
 
 void add_overrides_option(CLI::App& command, CommandLine& result) {
@@ -70,13 +83,29 @@ std::string single_line(std::string text) {
   return text;
 }
 
+// A driver's own case file: where the build put it (the source tree), or, for a driver
+// installed by `cmake --install`, PREFIX/share/rouleau/cases/NAME/case.toml beside
+// PREFIX/bin, found from the executable's own path (the install can be moved).
+std::string driver_case_file(const std::string& default_case) {
+  namespace fs = std::filesystem;
+  std::error_code status;
+  if (fs::exists(default_case, status)) return default_case;
+  const fs::path executable = fs::read_symlink("/proc/self/exe", status);
+  if (status) return default_case;
+  const fs::path case_folder = fs::path(default_case).parent_path().filename();
+  const fs::path installed =
+      executable.parent_path().parent_path() / "share" / "rouleau" / "cases" / case_folder / "case.toml";
+  return fs::exists(installed, status) ? installed.string() : default_case;
+}
+
 }  // namespace
 
 CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
   CommandLine result;
   CLI::App app("rouleau: immersed finite-element simulation of red blood cells in plasma", "rouleau");
-  app.set_version_flag("--version", std::string("rouleau ") + ROULEAU_VERSION + " (" + ROULEAU_GIT_HASH + ")");
-  app.require_subcommand(1);
+  const std::string version_text = std::string("rouleau ") + ROULEAU_VERSION + " (" + ROULEAU_GIT_HASH + ")";
+  app.set_version_flag("--version", version_text);
+  app.require_subcommand(0, 1);
 
   CLI::App* run = app.add_subcommand("run", "Run a case: validate it, then simulate and write outputs");
   add_case_arguments(*run, result, false);
@@ -89,14 +118,26 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       throw CLI::RequiredError("run needs a case file (CASE.toml) or --restart DIR");
   });
   add_threads_option(*run, result);
+  add_memory_check_option(*run, result);
 
-  CLI::App* check = app.add_subcommand("check", "Validate a case and print its summary (no simulation)");
+  CLI::App* check = app.add_subcommand("check", "Validate a case, estimate its memory and print its summary (no simulation)");
   add_case_arguments(*check, result);
+  add_memory_check_option(*check, result);
 
   CLI::App* info = app.add_subcommand("info", "Print versions and the Kokkos configuration");
   add_threads_option(*info, result);
+  CLI::App* help = app.add_subcommand("help", "Print this help");
+  CLI::App* version = app.add_subcommand("version", "Print the version");
 
   if (!parse_or_finish(app, argc, argv, out, err, result)) return result;
+  if (help->parsed() || version->parsed() || app.get_subcommands().empty()) {
+    result.command = Command::finished;
+    if (version->parsed()) out << version_text << "\n";
+    else  // the whole command's help (app.help() would give the `help` subcommand's)
+      (help->parsed() ? out : err) << app.get_formatter()->make_help(&app, "rouleau", CLI::AppFormatMode::Normal);
+    result.exit_code = help->parsed() || version->parsed() ? 0 : usage_error_exit_code;
+    return result;
+  }
   result.progress = !no_progress;
   result.command = run->parsed() ? Command::run : check->parsed() ? Command::check : Command::info;
   return result;
@@ -105,7 +146,7 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
 CommandLine parse_driver_command_line(int argc, const char* const* argv, const std::string& default_case,
                                       const std::string& default_output_dir, std::ostream& out, std::ostream& err) {
   CommandLine result;
-  result.case_path = default_case;
+  result.case_path = driver_case_file(default_case);
   result.output_dir = default_output_dir;
   const std::string program = argc > 0 ? argv[0] : "case";
   CLI::App app("Runs a case and checks what is special to it (the options of `rouleau run`)", program);
@@ -115,6 +156,7 @@ CommandLine parse_driver_command_line(int argc, const char* const* argv, const s
   bool no_progress = false;
   add_run_options(app, result, no_progress);
   add_threads_option(app, result);
+  add_memory_check_option(app, result);
   app.get_option("--restart")->excludes(case_file);
   if (!parse_or_finish(app, argc, argv, out, err, result)) return result;
   result.progress = !no_progress;
@@ -153,6 +195,7 @@ CaseConfig load_run_case(const CommandLine& command_line, std::shared_ptr<const 
   std::error_code status;
   if (!std::filesystem::is_directory(directory, status))
     throw InputError(directory, "--restart", "no such run folder");
+  single_run_id(directory);  // the folder holds one run's files
   FoundCheckpoint found;
   try {
     found = newest_valid_checkpoint(directory);
@@ -165,9 +208,25 @@ CaseConfig load_run_case(const CommandLine& command_line, std::shared_ptr<const 
   return config;
 }
 
+int host_threads(const CommandLine& command_line) {
+  if (command_line.threads > 0) return command_line.threads;
+  if (const char* openmp = std::getenv("OMP_NUM_THREADS"); openmp && std::atoi(openmp) > 0) return std::atoi(openmp);
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+MemoryEstimate check_memory(const CaseConfig& config, const CommandLine& command_line) {
+  const MemoryEstimate estimate = estimate_memory(config, host_threads(command_line));
+  require_memory(config, estimate, available_memory_bytes(), command_line.memory_check);
+  return estimate;
+}
+
 int check_case(const CommandLine& command_line, std::ostream& out) {
   const CaseConfig config = load_case(command_line.case_path, command_line.overrides);
-  out << case_summary(config, derive_quantities(config)) << "ok: " << command_line.case_path << " is a valid case\n";
+  const MemoryEstimate estimate = estimate_memory(config, host_threads(command_line));
+  const double available = available_memory_bytes();
+  out << case_summary(config, derive_quantities(config)) << describe_memory(estimate, available);
+  require_memory(config, estimate, available, command_line.memory_check);
+  out << "ok: " << command_line.case_path << " is a valid case\n";
   return static_cast<int>(ExitCode::done);
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "config/case_config.hpp"
+#include "config/memory_estimate.hpp"
 #include "io/checkpoint_file.hpp"
 
 namespace rouleau {
@@ -18,7 +19,7 @@ enum class Command {
   run,       // rouleau run CASE.toml ...
   check,     // rouleau check CASE.toml ...: validate only, no Kokkos
   info,      // rouleau info: versions and the Kokkos configuration
-  finished,  // --help, --version or a usage error was handled; exit with exit_code
+  finished,  // help, version or a usage error was handled; exit with exit_code
 };
 
 // What the command line asked for.
@@ -29,14 +30,17 @@ struct CommandLine {
   std::string restart_dir;             // run --restart DIR (then no case_path; output goes to DIR)
   std::vector<std::string> overrides;  // --set key=value, in order
   std::string output_dir = "out";      // run --out
+  bool overwrite = false;              // run --overwrite: empty the output folder of an earlier run first
+  bool memory_check = true;            // run/check --no-memory-check clears it
   int threads = 0;                     // run/info --threads; 0 = leave it to OMP_NUM_THREADS
   bool explain = false;                // run --explain
   bool progress = true;                // run --no-progress clears it
 };
 
-// Parses argv (argv[0] is the program name) without touching Kokkos. --help and --version
-// print to `out`; usage errors print CLI11's message to `err`. Both give
-// Command::finished with exit_code 0 (help, version) or 2 (usage error).
+// Parses argv (argv[0] is the program name) without touching Kokkos. `help` (or --help)
+// and `version` (or --version) print to `out`; usage errors print CLI11's message to `err`,
+// and no subcommand at all prints the help there. All give Command::finished with
+// exit_code 0 (help, version) or 2 (usage error, no subcommand).
 CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& out, std::ostream& err);
 
 // A case driver's command line (cases/NAME/main.cpp), the options of `rouleau run`:
@@ -56,8 +60,17 @@ CaseConfig load_run_case(const CommandLine& command_line, std::shared_ptr<const 
                          std::ostream& log);
 
 // `rouleau check`: loads and validates the case with its overrides, derives its scales
-// and prints a short summary (name, mesh, Re, Stokes) to `out`. Throws InputError.
+// and prints a short summary (name, mesh, Re, Stokes, the memory it needs) to `out`.
+// Throws InputError, also when the case does not fit in memory (check_memory).
 int check_case(const CommandLine& command_line, std::ostream& out);
+
+// The host threads a run will use: --threads, OMP_NUM_THREADS, or the machine's cores.
+int host_threads(const CommandLine& command_line);
+
+// The case's memory estimate (config/memory_estimate.hpp); throws InputError when a 32-bit
+// index would overflow, or when the case does not fit in the memory available and the
+// command line does not say --no-memory-check.
+MemoryEstimate check_memory(const CaseConfig& config, const CommandLine& command_line);
 
 // The summary `check` prints: name, mesh size, scales, Re and the Stokes decision.
 std::string case_summary(const CaseConfig& config, const DerivedQuantities& derived);

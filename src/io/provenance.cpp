@@ -40,6 +40,8 @@ std::string hdf5_runtime_version() {
   return std::to_string(major) + "." + std::to_string(minor) + "." + std::to_string(release);
 }
 
+}  // namespace
+
 std::string current_utc_time_iso8601() {
   const std::time_t now = std::time(nullptr);
   std::tm utc{};
@@ -48,6 +50,8 @@ std::string current_utc_time_iso8601() {
   std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
   return text;
 }
+
+namespace {
 
 std::string host_name() {
   char name[HOST_NAME_MAX + 1] = {};

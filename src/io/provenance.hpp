@@ -21,6 +21,9 @@ struct Provenance {
   void set(const std::string& key, const std::string& value);
 };
 
+// The time now in UTC, ISO 8601 ("2024-05-01T12:34:56Z").
+std::string current_utc_time_iso8601();
+
 // The provenance of this build and this process: "rouleau_version", "git_hash",
 // "kokkos_version", "kokkoskernels_version", "hdf5_version" (the library linked at run
 // time, from H5get_libversion), "build_type", "created_utc" (ISO 8601, e.g.

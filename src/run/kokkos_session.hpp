@@ -3,7 +3,13 @@
 // line (`--threads N` of `rouleau run` and the case drivers) when it gives one; otherwise
 // Kokkos reads OMP_NUM_THREADS. The command line itself never reaches Kokkos, so a flag of
 // rouleau's can not be taken for one of Kokkos's.
+//
+// Without OMP_PROC_BIND in the environment, Kokkos's OpenMP back end prints four lines of
+// advice at every start. The OpenMP runtime has read its environment by then (it binds no
+// thread when OMP_PROC_BIND is unset), so the session sets OMP_PROC_BIND=false, which says
+// what holds, and a run says once, in its log, how to bind the threads (run_case.cpp).
 #include <Kokkos_Core.hpp>
+#include <cstdlib>
 #include <memory>
 #include <string>
 #include <vector>
@@ -15,6 +21,7 @@ namespace rouleau {
 class KokkosSession {
  public:
   KokkosSession(const char* program, int threads) : arguments_{program} {
+    if (std::getenv("OMP_PROC_BIND") == nullptr) setenv("OMP_PROC_BIND", "false", 0);
     if (threads > 0) arguments_.push_back(kokkos_threads_flag(threads, KOKKOS_VERSION));
     for (std::string& argument : arguments_) argument_pointers_.push_back(argument.data());
     argument_pointers_.push_back(nullptr);

@@ -7,16 +7,20 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
+#include <sys/resource.h>
 
 #include "cells/cells_from_case.hpp"
 #include "cli/progress.hpp"
 #include "cli/stop_signals.hpp"
 #include "config/derived.hpp"
 #include "config/load_case.hpp"
+#include "config/memory_estimate.hpp"
 #include "config/resolved_case.hpp"
 #include "fluid/fluid_solver.hpp"
 #include "geometry/cell_mesh.hpp"
@@ -24,6 +28,8 @@
 #include "io/diagnostics_reader.hpp"
 #include "io/diagnostics_table.hpp"
 #include "io/provenance.hpp"
+#include "io/run_folder.hpp"
+#include "io/run_log.hpp"
 #include "io/xdmf_writer.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/mpi_session.hpp"
@@ -78,6 +84,13 @@ std::vector<std::pair<std::string, std::string>> kokkos_runtime_info() {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// The process's peak resident memory so far (getrusage: kilobytes on Linux).
+double peak_resident_bytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return 1024.0 * static_cast<double>(usage.ru_maxrss);
+}
 
 // A checkpoint restarts only on the meshes it was made on: its mesh hashes must be those
 // of the meshes this case builds (a changed mesher or cell kind would move every node).
@@ -149,26 +162,17 @@ class QuietOtherRanks {
   std::streambuf* saved_ = nullptr;
 };
 
-}  // namespace
-
-int run_case(const CaseConfig& config, const RunOptions& options) {
-  const auto run_start = Clock::now();
-  // Under mpirun the fluid is split across the ranks; the first rank writes every file.
-  const Communicator ranks = Communicator::world();
-  const bool writes_files = ranks.rank() == 0;
-  const QuietOtherRanks quiet(ranks);
-  const DerivedQuantities derived = derive_quantities(config);
-  const std::vector<Stage> stages = plan_stages(config, derived);
-  if (options.explain) {
-    if (writes_files) std::cout << describe_stages(config, derived, stages);
-    return static_cast<int>(ExitCode::done);
-  }
+// The run itself, once its folder is ready: builds the simulation, runs the time loop and
+// writes the outputs into options.output_dir (`log` is the first rank's, null on the others).
+int run_in_folder(const CaseConfig& config, const RunOptions& options, const DerivedQuantities& derived,
+                  const Communicator& ranks, const std::string& run_id, RunLog* log, Clock::time_point run_start) {
   namespace fs = std::filesystem;
+  const bool writes_files = ranks.rank() == 0;
   const std::string out = options.output_dir;
-  if (writes_files) {
-    fs::create_directories(options.output_dir);
-    write_file_atomically(out + "/case.resolved.toml", resolved_case_toml(config, derived));
-  }
+  const FoundCheckpoint* restart = options.restart.get();
+  // The log's first lines: what ran, how, and where.
+  std::cerr << "rouleau " << ROULEAU_VERSION << " (" << ROULEAU_GIT_HASH << "): run of case " << config.name
+            << " into " << out << "\n";
 
   Simulation simulation(config, default_mesh_cache_dir(), &ranks);
   StageTimes& times = simulation.times();
@@ -181,6 +185,14 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
             << Kokkos::DefaultExecutionSpace::name() << " on " << Kokkos::DefaultHostExecutionSpace().concurrency()
             << " host threads" << (ranks.size() > 1 ? " per rank, " + std::to_string(ranks.size()) + " MPI ranks" : "")
             << "\n";
+  const MemoryEstimate memory = estimate_memory(config, Kokkos::DefaultHostExecutionSpace().concurrency());
+  std::cerr << "memory: about " << format_bytes(memory.total_bytes) << " estimated (largest part: "
+            << memory.terms.front().first << ")\n";
+#ifdef KOKKOS_ENABLE_OPENMP
+  const char* binding = std::getenv("OMP_PROC_BIND");
+  if (Kokkos::DefaultHostExecutionSpace().concurrency() > 1 && (!binding || std::string(binding) == "false"))
+    std::cerr << "threads not bound to cores (to bind them, as for timings: OMP_PROC_BIND=spread OMP_PLACES=threads)\n";
+#endif
   if (const FluidDistribution* distribution = simulation.fluid().distribution())
     std::cerr << "fluid split across " << ranks.size() << " ranks: rank 0 owns "
               << distribution->partition().elements.size() << " elements and "
@@ -206,6 +218,7 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
   const MeshDescription& fluid_mesh = output_meshes.front();
   std::vector<std::pair<std::string, std::string>> provenance_entries{
       {"case", config.name},
+      {"run_id", run_id},
       {"execution_space", Kokkos::DefaultExecutionSpace::name()},
       {"threads", std::to_string(Kokkos::DefaultHostExecutionSpace().concurrency())},
       {"ranks", std::to_string(ranks.size())},
@@ -216,7 +229,6 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
   const Provenance provenance = build_provenance(provenance_entries);
   // The volume drift is measured from the cells as placed: before a restart moves them.
   const CellDiagnostics cell_diagnostics(cells, config, &ranks);
-  const FoundCheckpoint* restart = options.restart.get();
   if (restart) {
     check_checkpoint_meshes(*restart, provenance_entries);
     simulation.restore_state(restart->data);
@@ -331,6 +343,7 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
       data.wall_seconds = wall_seconds();
       for (const auto& [key, value] : provenance_entries)
         if (key.find("mesh_hash") != std::string::npos) data.labels[key] = value;
+      data.labels["run_id"] = run_id;
       if (writes_files)
         checkpoints.write(data, provenance);
       else  // the first rank's file, for the messages
@@ -355,6 +368,7 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
                 << report.continuity_residual << "\n";
     } else {
       if (!restart) {
+        add_diagnostics_row();  // the state as placed, at t = 0
         write_fields();
         write_checkpoint();
       }
@@ -363,13 +377,21 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
       const int first_step = simulation.steps() + 1;
       const int steps = simulation.steps() + static_cast<int>(std::max<long long>(
                                                  0, std::llround((config.time.end - simulation.time()) / config.time.dt)));
-      ProgressReporter progress(steps, config.time.end, stderr_is_terminal(), std::cerr);
+      // On a terminal the line is redrawn in place there, and the log gets a line every
+      // half minute; otherwise (stderr to a file) the lines go to both.
+      const bool terminal = stderr_is_terminal();
+      ProgressReporter progress(steps, config.time.end, terminal, log && terminal ? log->terminal() : std::cerr);
+      std::optional<ProgressReporter> logged_progress;
+      if (log && terminal && options.progress)
+        logged_progress.emplace(steps, config.time.end, false, log->file(), ProgressReporter::Settings{0.1, 30.0});
       for (int step = first_step; step <= steps; ++step) {
         const FluidSolveReport& report = simulation.advance().fluid;
         if (step % config.output.diagnostics_every_steps == 0 || step == steps) add_diagnostics_row();
         if (step % config.output.fields_every_steps == 0 || step == steps) write_fields();
         if (options.progress)
           progress.update(step, simulation.time(), report.newton_iterations, report.gmres_iterations);
+        if (logged_progress)
+          logged_progress->update(step, simulation.time(), report.newton_iterations, report.gmres_iterations);
         const CheckpointConfig& every = config.checkpoint;
         const double minutes = std::chrono::duration<double>(Clock::now() - last_checkpoint).count() / 60.0;
         // Signals and clocks are each rank's: on several ranks the decisions are taken
@@ -386,6 +408,7 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
           write_checkpoint();
         if (signal_number != 0 && step < steps) {
           if (options.progress) progress.finish();
+          if (logged_progress) logged_progress->finish();
           flush_table();
           std::cerr << "stopped by signal " << signal_number << " after step " << step << " (t = " << simulation.time()
                     << " s); checkpoint " << checkpoints.last_path() << "\ncontinue with: " << options.continue_command << " "
@@ -394,6 +417,7 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
         }
       }
       if (options.progress) progress.finish();
+      if (logged_progress) logged_progress->finish();
       if (last_checkpoint_step != simulation.steps()) write_checkpoint();
     }
   } catch (const DivergenceError& error) {
@@ -406,12 +430,56 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
   if (!simulation.cell_ranks().empty())
     std::cerr << "cells changed rank " << simulation.cell_rank_changes() << " times in this run; per rank now: "
               << cells_per_rank(simulation.cell_ranks(), ranks.size()) << "\n";
-  times.print(std::cerr);
-  std::cerr << "wrote " << out << "/" << (fields ? "fields.xdmf, " : "") << "diagnostics.csv, case.resolved.toml"
-            << (transient ? ", checkpoints/" : "") << "\n"
-            << (fields ? "ParaView: open " + out + "/fields.xdmf; " : std::string()) << "figures: scripts/plot_diagnostics.py "
-            << out << "\n";
+  times.print(std::cerr, wall_seconds());
+  std::cerr << "peak memory: " << format_bytes(peak_resident_bytes()) << " (estimated " << format_bytes(memory.total_bytes)
+            << ")\n";
+  std::cerr << "wrote " << out << "/" << (fields ? "fields*.xdmf, " : "") << "diagnostics.csv, case.resolved.toml, "
+            << run_log_name << (transient ? ", checkpoints/" : "") << "\n";
+  if (fields) {
+    std::cerr << "ParaView: open";
+    for (const MeshDescription& mesh : output_meshes) std::cerr << " " << fields->mesh_xdmf_path(mesh.name);
+    std::cerr << " (reader Xdmf3ReaderT; docs/paraview.md)\n";
+  }
+  std::cerr << "figures: scripts/plot_diagnostics.py " << out << "\n";
   return static_cast<int>(ExitCode::done);
+}
+
+}  // namespace
+
+int run_case(const CaseConfig& config, const RunOptions& options) {
+  const auto run_start = Clock::now();
+  // Under mpirun the fluid is split across the ranks; the first rank writes every file.
+  const Communicator ranks = Communicator::world();
+  const bool writes_files = ranks.rank() == 0;
+  const QuietOtherRanks quiet(ranks);
+  const DerivedQuantities derived = derive_quantities(config);
+  const std::vector<Stage> stages = plan_stages(config, derived);
+  if (options.explain) {
+    if (writes_files) std::cout << describe_stages(config, derived, stages);
+    return static_cast<int>(ExitCode::done);
+  }
+  const std::string out = options.output_dir;
+  const FoundCheckpoint* restart = options.restart.get();
+  // A run keeps its id over the segments a restart joins; every file it writes carries it.
+  const std::string run_id = restart ? restart->data.labels.count("run_id") ? restart->data.labels.at("run_id") : ""
+                                     : new_run_id();
+  std::optional<RunLog> log;
+  if (writes_files) {
+    if (!restart) prepare_new_run_folder(out, options.overwrite);
+    const std::string now = current_utc_time_iso8601();
+    log.emplace(out + "/" + run_log_name,
+                run_log_first_line(run_id, restart ? "continued from " + restart->path + " at " + now
+                                                   : "case " + config.name + ", started " + now),
+                restart != nullptr);
+    write_file_atomically(out + "/case.resolved.toml", resolved_case_toml(config, derived));
+  }
+  // The run's log ends with what stopped it (the caller reports it on stderr, after the log is closed).
+  try {
+    return run_in_folder(config, options, derived, ranks, run_id, log ? &*log : nullptr, run_start);
+  } catch (const std::exception& error) {
+    if (log) log->file() << "rouleau: the run stopped: " << error.what() << std::endl;
+    throw;
+  }
 }
 
 CaseDriverRun run_case_driver(int argc, char** argv, const std::string& default_case,
@@ -430,6 +498,7 @@ CaseDriverRun run_case_driver(int argc, char** argv, const std::string& default_
         // The whole case is validated before Kokkos starts, as `rouleau run` does.
         run.config = load_run_case(command_line, run.options.restart, std::cerr);
         derive_quantities(run.config);
+        check_memory(run.config, command_line);  // a case that does not fit stops here
         const MpiSession mpi;  // before Kokkos; several ranks under mpirun
         const KokkosSession kokkos(argc > 0 ? argv[0] : "case", command_line.threads);
         return run_case(run.config, run.options);

@@ -16,6 +16,7 @@ struct RunOptions {
   std::string output_dir = "out";  // --out
   bool explain = false;            // --explain: print the stage list with reasons, then stop
   bool progress = true;            // show the progress line
+  bool overwrite = false;          // --overwrite: empty an output folder that holds an earlier run first
   // --restart: continue from this checkpoint (of a run in output_dir), or start afresh.
   std::shared_ptr<const FoundCheckpoint> restart;
   // The command that continues a stopped run, given the output folder: a case driver's
@@ -29,6 +30,7 @@ inline RunOptions run_options(const CommandLine& command_line) {
   options.output_dir = command_line.output_dir;
   options.explain = command_line.explain;
   options.progress = command_line.progress;
+  options.overwrite = command_line.overwrite;
   if (!command_line.restart_dir.empty()) options.output_dir = command_line.restart_dir;
   return options;
 }

@@ -3,6 +3,7 @@
 // by the diagnostics. Each timed stage ends with a fence, so that kernels launched
 // asynchronously (GPUs) are charged to the stage that launched them.
 #include <Kokkos_Core.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <map>
@@ -37,13 +38,25 @@ class StageTimes {
   // of the run it continues).
   const std::map<std::string, double>& seconds_by_stage() const { return seconds_; }
   void add(const std::string& stage, double seconds) { seconds_[stage] += seconds; }
-  void print(std::ostream& out) const {
+  // The table at a run's end: each stage that ran, its seconds and share of `wall_seconds`
+  // (the run's wall time over the same segments), the time outside every stage (start-up,
+  // the loop's own work) and the total.
+  void print(std::ostream& out, double wall_seconds) const {
     out << "time per stage:\n";
+    double in_stages = 0.0;
+    auto line = [&out, wall_seconds](const std::string& name, double s) {
+      char text[160];
+      std::snprintf(text, sizeof text, "  %-28s %10.3f s %5.1f %%\n", name.c_str(), s,
+                    wall_seconds > 0.0 ? 100.0 * s / wall_seconds : 0.0);
+      out << text;
+    };
     for (const auto& [stage, s] : seconds_) {
-      char line[160];
-      std::snprintf(line, sizeof line, "  %-28s %10.3f s\n", stage.c_str(), s);
-      out << line;
+      if (s <= 0.0) continue;  // carried over from a checkpoint, never run
+      line(stage, s);
+      in_stages += s;
     }
+    line("outside the stages", std::max(0.0, wall_seconds - in_stages));
+    line("total", wall_seconds);
   }
 
  private:

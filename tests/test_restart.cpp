@@ -255,7 +255,7 @@ TEST(Restart, RestartOnAnotherThreadCountAgreesToRoundOff) {
 TEST(Restart, KilledAtRandomMomentsTheRunResumesToTheStraightRunBitForBit) {
   // The reduced aggregation for 60 steps with a checkpoint after every step, killed with
   // SIGKILL 24 times and each time continued with --restart (or started afresh when no
-  // checkpoint exists yet), as a cluster's requeued job would be: two kills in three at a
+  // checkpoint exists yet, with --overwrite), as a cluster's requeued job would be: two kills in three at a
   // random moment (20-600 ms after the start; a start takes ~0.15 s and a step ~0.12 s on
   // 2 threads), one in three the moment the 1st-3rd checkpoint write's temporary file
   // appears (in the middle of that write). The last resume runs to the end. The run must
@@ -273,6 +273,9 @@ TEST(Restart, KilledAtRandomMomentsTheRunResumesToTheStraightRunBitForBit) {
     ASSERT_EQ(run_rouleau(command).exit_code, 0);
   }
   fresh[3] = killed;
+  // A run killed before its first checkpoint left its log and resolved case: it is started
+  // afresh over them, as a requeued job's script does (a new run refuses a run's folder).
+  fresh.push_back("--overwrite");
   const std::vector<std::string> resume{"run", "--restart", killed, "--threads", "2", "--no-progress"};
   const std::string err_path = killed + "_stderr";
   const std::string checkpoints = killed + "/checkpoints";

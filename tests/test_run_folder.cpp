@@ -77,6 +77,9 @@ TEST(RunFolder, NewRunRefusesAFileAndAFolderThatHoldsFiles) {
   const fs::path earlier = root / "earlier";
   write_text(earlier / "run.log", rouleau::run_log_first_line("00000000000000aa", "case a") + "\nmore\n");
   write_text(earlier / "diagnostics.csv", "step\n0\n");
+  write_text(earlier / "figures" / "gaps.png", "png");
+  write_run_file(earlier / "fields_000010.h5", "00000000000000aa");
+  write_text(earlier / "fields_cells.xdmf", "<Xdmf/>");
   const std::string reason = input_error([&] { rouleau::prepare_new_run_folder(earlier.string(), false); });
   EXPECT_NE(reason.find("an earlier run (run id 00000000000000aa)"), std::string::npos) << reason;
   EXPECT_NE(reason.find("--overwrite"), std::string::npos) << reason;
@@ -89,15 +92,44 @@ TEST(RunFolder, NewRunRefusesAFileAndAFolderThatHoldsFiles) {
   EXPECT_TRUE(fs::is_directory(earlier));
   EXPECT_TRUE(fs::is_empty(earlier));
 
-  // A folder no run wrote: refused even with --overwrite, and left as it was.
+  // A folder no run wrote: refused even with --overwrite, and left as it was; so is a
+  // folder with a figures/ folder and .h5 files but no run's log or resolved case (a case's
+  // own folder, a home folder).
   const fs::path notes = root / "notes";
   write_text(notes / "thesis.tex", "chapter 1");
-  EXPECT_NE(input_error([&] { rouleau::prepare_new_run_folder(notes.string(), false); }).find("holds files (thesis.tex)"),
-            std::string::npos);
-  EXPECT_NE(input_error([&] { rouleau::prepare_new_run_folder(notes.string(), true); }).find("holds none"),
-            std::string::npos);
+  write_text(notes / "figures" / "plot.png", "png");
+  write_run_file(notes / "data.h5", "");
+  for (const bool overwrite : {false, true}) {
+    const std::string refusal = input_error([&] { rouleau::prepare_new_run_folder(notes.string(), overwrite); });
+    EXPECT_NE(refusal.find("holds files that no rouleau run wrote (data.h5, ...)"), std::string::npos) << refusal;
+    EXPECT_EQ(refusal.find("--overwrite"), std::string::npos) << refusal;
+  }
   EXPECT_TRUE(fs::exists(notes / "thesis.tex"));
   EXPECT_FALSE(rouleau::holds_a_run(notes.string()));
+
+  // A run's folder with one file a run does not write: --overwrite removes nothing.
+  const fs::path mixed = root / "mixed";
+  write_text(mixed / "run.log", rouleau::run_log_first_line("00000000000000cc", "case c") + "\n");
+  write_text(mixed / "diagnostics.csv", "step\n0\n");
+  write_run_file(mixed / "checkpoints" / "checkpoint_000000001.h5", "00000000000000cc");
+  write_text(mixed / "checkpoints" / "my_notes.txt", "keep me");
+  std::string refusal = input_error([&] { rouleau::prepare_new_run_folder(mixed.string(), true); });
+  EXPECT_NE(refusal.find("also holds " + (mixed / "checkpoints" / "my_notes.txt").string()), std::string::npos)
+      << refusal;
+  EXPECT_TRUE(fs::exists(mixed / "diagnostics.csv"));
+  EXPECT_TRUE(fs::exists(mixed / "checkpoints" / "my_notes.txt"));
+  fs::remove(mixed / "checkpoints" / "my_notes.txt");
+  write_text(mixed / "thesis.tex", "chapter 2");
+  refusal = input_error([&] { rouleau::prepare_new_run_folder(mixed.string(), true); });
+  EXPECT_NE(refusal.find("also holds " + (mixed / "thesis.tex").string()), std::string::npos) << refusal;
+  EXPECT_TRUE(fs::exists(mixed / "run.log"));
+
+  // A folder inside a run's folder is refused: it would mix with that run's files.
+  key.clear();
+  refusal = input_error([&] { rouleau::prepare_new_run_folder((mixed / "checkpoints" / "new").string(), false); }, &key);
+  EXPECT_EQ(key, "--out");
+  EXPECT_NE(refusal.find("lies inside the folder of a run"), std::string::npos) << refusal;
+  EXPECT_FALSE(fs::exists(mixed / "checkpoints" / "new"));
 }
 
 TEST(RunFolder, RestartTakesAFolderOfOneRunAndRefusesAMixture) {

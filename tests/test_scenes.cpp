@@ -240,7 +240,7 @@ TEST(Scenes, TwelveCellAggregateShearsColumnByColumn) {
   // and layering take seconds (README.md); this checks the scene's parts. Every column
   // shears with the flow, its top cell ahead of its bottom one by at least 75 % and at
   // most 100 % of γ̇ Δy (11.88 μm apart: 35.6 μm/s; the neighbouring columns hinder it:
-  // measured 28.8-29.8 μm/s, against 33.8 for the lone stack), and the twelve volumes are
+  // measured from t = 0: 29.3-30.1 μm/s, against 33.8 for the lone stack), and the twelve volumes are
   // held to 1e-3 (measured: 1.1e-4). 20 s on one thread.
   const auto rows = run_scene("twelve_cells", "_reduced",
                               " --set cell_kinds.normal.resolution=coarse --set domain.elements=[30,15,12]"

@@ -1,6 +1,7 @@
 #include "cli/cli.hpp"
 
 #include <CLI/CLI.hpp>
+#include <sched.h>
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -83,13 +84,12 @@ std::string single_line(std::string text) {
   return text;
 }
 
-// A driver's own case file: where the build put it (the source tree), or, for a driver
-// installed by `cmake --install`, PREFIX/share/rouleau/cases/NAME/case.toml beside
-// PREFIX/bin, found from the executable's own path (the install can be moved).
+// A driver's own case file: for a driver installed by `cmake --install`,
+// PREFIX/share/rouleau/cases/NAME/case.toml beside PREFIX/bin, found from the executable's
+// own path (the install can be moved); otherwise where the build found it (the source tree).
 std::string driver_case_file(const std::string& default_case) {
   namespace fs = std::filesystem;
   std::error_code status;
-  if (fs::exists(default_case, status)) return default_case;
   const fs::path executable = fs::read_symlink("/proc/self/exe", status);
   if (status) return default_case;
   const fs::path case_folder = fs::path(default_case).parent_path().filename();
@@ -211,13 +211,15 @@ CaseConfig load_run_case(const CommandLine& command_line, std::shared_ptr<const 
 int host_threads(const CommandLine& command_line) {
   if (command_line.threads > 0) return command_line.threads;
   if (const char* openmp = std::getenv("OMP_NUM_THREADS"); openmp && std::atoi(openmp) > 0) return std::atoi(openmp);
+  // the cores this process may run on (a batch job's share, taskset), as OpenMP counts them
+  cpu_set_t allowed;
+  if (sched_getaffinity(0, sizeof allowed, &allowed) == 0) return std::max(1, CPU_COUNT(&allowed));
   return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
-MemoryEstimate check_memory(const CaseConfig& config, const CommandLine& command_line) {
-  const MemoryEstimate estimate = estimate_memory(config, host_threads(command_line));
-  require_memory(config, estimate, available_memory_bytes(), command_line.memory_check);
-  return estimate;
+void check_memory(const CaseConfig& config, const CommandLine& command_line) {
+  require_memory(config, estimate_memory(config, host_threads(command_line)), available_memory_bytes(),
+                 command_line.memory_check);
 }
 
 int check_case(const CommandLine& command_line, std::ostream& out) {

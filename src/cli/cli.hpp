@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "config/case_config.hpp"
-#include "config/memory_estimate.hpp"
 #include "io/checkpoint_file.hpp"
 
 namespace rouleau {
@@ -64,13 +63,13 @@ CaseConfig load_run_case(const CommandLine& command_line, std::shared_ptr<const 
 // Throws InputError, also when the case does not fit in memory (check_memory).
 int check_case(const CommandLine& command_line, std::ostream& out);
 
-// The host threads a run will use: --threads, OMP_NUM_THREADS, or the machine's cores.
+// The host threads a run will use: --threads, OMP_NUM_THREADS, or the cores this process may run on.
 int host_threads(const CommandLine& command_line);
 
 // The case's memory estimate (config/memory_estimate.hpp); throws InputError when a 32-bit
 // index would overflow, or when the case does not fit in the memory available and the
 // command line does not say --no-memory-check.
-MemoryEstimate check_memory(const CaseConfig& config, const CommandLine& command_line);
+void check_memory(const CaseConfig& config, const CommandLine& command_line);
 
 // The summary `check` prints: name, mesh size, scales, Re and the Stokes decision.
 std::string case_summary(const CaseConfig& config, const DerivedQuantities& derived);

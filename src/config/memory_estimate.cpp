@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "geometry/cell_mesh.hpp"
-#include "geometry/vessel_profile.hpp"
+#include "geometry/vessel_mesh.hpp"
 #include "util/errors.hpp"
 
 namespace rouleau {
@@ -75,23 +76,21 @@ FluidSizes box_sizes(const DomainConfig& domain) {
   return sizes;
 }
 
-// A vessel of tetrahedra (geometry/vessel_mesh.cpp, Gmsh): elements of size h fill the
-// lumen at about one tetrahedron per 0.118 h³ (a regular tetrahedron's volume h³/(6√2)),
-// with h graded from the axis to the wall's h_w; about 5.5 tetrahedra per node and 15
-// blocks per row. The ILU(0) levels of an unstructured mesh sweep it in fronts of about
-// N^(2/3) nodes.
+// A vessel of tetrahedra (geometry/vessel_mesh.cpp, Gmsh), sized from the mesher's size
+// field (expected_element_count, the count the mesher's own limit uses). Measured on the
+// contraction at 3/1.5, 2/1 and 1.5/0.75 μm (tests/test_memory_estimate.cpp): Gmsh makes
+// 1.58-1.69 times that count, 4.2-5.1 tetrahedra per node, 12.6-13.4 blocks per row, and
+// its node order along the axis gives ILU(0) narrow levels, 17 and 25 rows at 3.7k and 10k
+// nodes (about 1.1 N^(1/3)).
 FluidSizes vessel_sizes(const VesselConfig& vessel) {
   FluidSizes sizes;
   sizes.nodes_per_element = 4.0;
   sizes.quadrature_points = 4.0;
-  const double h = vessel.sizes.element_size;
-  const double h_wall = vessel.sizes.wall_element_size > 0.0 ? vessel.sizes.wall_element_size : h;
-  const double mean_h = std::cbrt(0.5 * (h * h * h + h_wall * h_wall * h_wall));
-  sizes.elements = vessel_volume(vessel.profile) / (mean_h * mean_h * mean_h / (6.0 * std::sqrt(2.0)));
-  sizes.nodes = sizes.elements / 5.5;
+  sizes.elements = 1.6 * expected_element_count(vessel.profile, vessel.sizes);
+  sizes.nodes = sizes.elements / 4.6;
   sizes.geometric_nodes = sizes.nodes;
-  sizes.blocks_per_node = 15.0;
-  sizes.widest_ilu_level = std::pow(sizes.nodes, 2.0 / 3.0);
+  sizes.blocks_per_node = 13.0;
+  sizes.widest_ilu_level = 1.1 * std::cbrt(sizes.nodes);
   return sizes;
 }
 
@@ -205,13 +204,20 @@ double available_memory_bytes() {
   std::string unit;
   while (meminfo >> name >> kilobytes >> unit)
     if (name == "MemAvailable:") available = kilobytes * 1024.0;
-  // A cgroup (v2) limit: what is left of it.
-  std::ifstream limit_file("/sys/fs/cgroup/memory.max"), current_file("/sys/fs/cgroup/memory.current");
-  std::string limit;
-  double current = 0.0;
-  if (limit_file >> limit && limit != "max" && current_file >> current) {
-    const double left = std::max(0.0, std::stod(limit) - current);
-    available = available < 0.0 ? left : std::min(available, left);
+  // A cgroup v2 limit (a container, a batch job's): what is left of the tightest one from
+  // this process's group up to the root.
+  std::ifstream groups("/proc/self/cgroup");
+  std::string line, group;
+  while (std::getline(groups, line))
+    if (line.rfind("0::", 0) == 0) group = line.substr(3);
+  for (std::filesystem::path folder = "/sys/fs/cgroup" + group;; folder = folder.parent_path()) {
+    std::ifstream limit_file(folder / "memory.max"), current_file(folder / "memory.current");
+    double limit = 0.0, current = 0.0;
+    if (limit_file >> limit && current_file >> current) {  // "max" (no limit) reads as no number
+      const double left = std::max(0.0, limit - current);
+      available = available < 0.0 ? left : std::min(available, left);
+    }
+    if (folder == "/sys/fs/cgroup" || folder == folder.parent_path()) break;
   }
   return available;
 }

@@ -11,10 +11,12 @@
 // level-schedule scratch), the cells and their coupling, the Morse lists, and the output
 // copies. It is checked against measured peak memory (bench/memory_estimate.py).
 //
-// A vessel's tetrahedra are counted from its volume and element sizes before Gmsh meshes
-// it, and the cells' nodes from their kinds' mesh resolution: both within some ten per
-// cent. The Morse lists depend on how close the cells come; the estimate takes an
-// aggregate's density.
+// A vessel's tetrahedra are counted from its element-size field before Gmsh meshes it, and
+// the cells' nodes from their kinds' mesh resolution (the normal red cell's counts at each
+// preset). The Morse lists depend on how close the cells come; the estimate takes an
+// aggregate's density. It is the memory of one process on the host: a GPU build keeps the
+// large arrays in the device's memory, which this does not check, and under mpirun each
+// rank is held to the whole case's estimate.
 // Host-only: includes no Kokkos header.
 #include <string>
 #include <utility>
@@ -44,7 +46,8 @@ struct MemoryEstimate {
 MemoryEstimate estimate_memory(const CaseConfig& config, int threads);
 
 // The bytes this process may still use: MemAvailable of /proc/meminfo, or less when a
-// cgroup (a container, a batch job) limits it; a negative value when neither can be read.
+// cgroup v2 (a container, a batch job) limits this process's group or one above it; a
+// negative value when neither can be read.
 double available_memory_bytes();
 
 // "1.23 GiB", "45.6 MiB", "456 KiB": three significant digits in binary units.

@@ -52,23 +52,6 @@ double element_size_at(const VesselProfile& profile, const VesselMeshSizes& size
   return local_radius / profile.radius * (h_wall + (sizes.element_size - h_wall) * depth);
 }
 
-// ∫ dV / V_h(x, r), with V_h = h³/(6√2) the volume of the regular tetrahedron of edge h:
-// about the number of tetrahedra.
-double expected_element_count(const VesselProfile& profile, const VesselMeshSizes& sizes) {
-  const int nx = 200, nr = 50;
-  const double length = vessel_length(profile);
-  double count = 0.0;
-  for (int i = 0; i < nx; ++i) {
-    const double x = (i + 0.5) * length / nx, radius = vessel_radius(profile, x);
-    for (int j = 0; j < nr; ++j) {
-      const double r = (j + 0.5) * radius / nr;
-      const double h = element_size_at(profile, sizes, x, r);
-      count += 2.0 * pi * r * (radius / nr) * (length / nx) / (h * h * h / 8.48528137423857029);
-    }
-  }
-  return count;
-}
-
 // The closed profile face in the x–y plane, revolved about x; within a GmshSession.
 void add_lumen(const VesselProfile& p) {
   namespace occ = gmsh::model::occ;
@@ -195,6 +178,22 @@ CachedMesh to_cached(const VesselMesh& mesh) {
 }
 
 }  // namespace
+
+double expected_element_count(const VesselProfile& profile, const VesselMeshSizes& sizes) {
+  const int nx = 200, nr = 50;
+  const double length = vessel_length(profile);
+  double count = 0.0;
+  for (int i = 0; i < nx; ++i) {
+    const double x = (i + 0.5) * length / nx, radius = vessel_radius(profile, x);
+    for (int j = 0; j < nr; ++j) {
+      const double r = (j + 0.5) * radius / nr;
+      const double h = element_size_at(profile, sizes, x, r);
+      count += 2.0 * pi * r * (radius / nr) * (length / nx) / (h * h * h / 8.48528137423857029);
+    }
+  }
+  return count;
+}
+
 
 std::optional<VesselProfileProblem> vessel_mesh_sizes_problem(const VesselProfile& profile,
                                                               const VesselMeshSizes& sizes) {

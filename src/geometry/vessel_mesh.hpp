@@ -37,6 +37,10 @@ struct VesselMesh {
 std::optional<VesselProfileProblem> vessel_mesh_sizes_problem(const VesselProfile& profile,
                                                               const VesselMeshSizes& sizes);
 
+// About the number of tetrahedra Gmsh makes of the lumen: ∫ dV / V_h(x, r), with
+// V_h = h³/(6√2) the volume of the regular tetrahedron of the local element size h.
+double expected_element_count(const VesselProfile& profile, const VesselMeshSizes& sizes);
+
 // The mesh, from `cache_dir` when a mesh with the same hash is there, otherwise made with
 // Gmsh and stored there. Throws std::runtime_error when the profile or sizes are refused or
 // meshing fails.

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <regex>
 
 #include "io/hdf5_file.hpp"
 #include "util/errors.hpp"
@@ -20,13 +21,29 @@ constexpr const char* who = "rouleau::run_folder";
 // The first line of run.log starts with this, then the id, then ':'.
 constexpr const char* log_id_prefix = "rouleau run id ";
 
-// The names a run writes at the top of its folder (and the plot script's figures/).
-bool written_by_a_run(const fs::path& entry) {
+// The names a run writes at the top of its folder: its log, resolved case, diagnostics,
+// the fields' XDMF and HDF5 files, each also as NAME.tmp while it is written; checkpoints/
+// holds checkpoint_SSSSSSSSS.h5 files, and figures/ the plot script's PNG files.
+const std::regex& run_file_name() {
+  static const std::regex name(
+      "(run\\.log|case\\.resolved\\.toml|diagnostics\\.csv|fields(_[A-Za-z0-9.-]+)?\\.xdmf|fields_mesh\\.h5|"
+      "fields_[0-9]{6,}\\.h5)(\\.tmp)?");
+  return name;
+}
+
+// The first entry under `entry` that a run does not write there, or "" when there is none.
+std::string foreign_entry(const fs::path& entry) {
+  std::error_code status;
   const std::string name = entry.filename().string();
-  static const char* const exact[] = {run_log_name, "case.resolved.toml", "diagnostics.csv", "checkpoints", "figures"};
-  if (std::find(std::begin(exact), std::end(exact), name) != std::end(exact)) return true;
-  const std::string extension = entry.extension().string();
-  return extension == ".h5" || extension == ".xdmf" || extension == ".tmp";
+  const bool folder = fs::is_directory(fs::symlink_status(entry, status));
+  if (!folder) return std::regex_match(name, run_file_name()) ? "" : entry.string();
+  static const std::regex checkpoint("checkpoint_[0-9]{9,18}\\.h5(\\.tmp)?"), figure("[A-Za-z0-9_.-]+\\.png(\\.tmp)?");
+  const std::regex* inside = name == "checkpoints" ? &checkpoint : name == "figures" ? &figure : nullptr;
+  if (!inside) return entry.string();
+  for (const auto& item : fs::directory_iterator(entry, status))
+    if (!item.is_regular_file(status) || !std::regex_match(item.path().filename().string(), *inside))
+      return item.path().string();
+  return "";
 }
 
 std::string run_id_in_log(const fs::path& log) {
@@ -72,15 +89,23 @@ std::string run_log_first_line(const std::string& run_id, const std::string& des
 
 bool holds_a_run(const std::string& directory) {
   std::error_code status;
-  for (const auto& entry : fs::directory_iterator(directory, status))
-    if (written_by_a_run(entry.path())) return true;
-  return false;
+  const fs::path folder(directory);
+  // A run's log names its run id on its first line; a run of an earlier version left its
+  // resolved case.
+  if (fs::is_regular_file(folder / run_log_name, status) && !run_id_in_log(folder / run_log_name).empty()) return true;
+  return fs::is_regular_file(folder / "case.resolved.toml", status);
 }
 
 void prepare_new_run_folder(const std::string& directory, bool overwrite) {
   std::error_code status;
   if (fs::exists(directory, status) && !fs::is_directory(directory, status))
     throw InputError(directory, "--out", "names a file, not a folder");
+  // Not inside another run's folder (its checkpoints/, its figures/).
+  const fs::path absolute = fs::weakly_canonical(fs::absolute(directory), status);
+  for (fs::path parent = absolute.parent_path(); !parent.empty() && parent != parent.root_path();
+       parent = parent.parent_path())
+    if (holds_a_run(parent.string()))
+      throw InputError(directory, "--out", "lies inside the folder of a run, " + parent.string() + ": choose another folder");
   if (!fs::exists(directory, status)) {
     fs::create_directories(directory, status);
     if (status) throw InputError(directory, "--out", "cannot create the folder: " + status.message());
@@ -91,23 +116,30 @@ void prepare_new_run_folder(const std::string& directory, bool overwrite) {
   if (status) throw InputError(directory, "--out", "cannot read the folder: " + status.message());
   if (entries.empty()) return;
   std::sort(entries.begin(), entries.end());
-  if (!overwrite) {
-    std::string held = "files (" + entries.front().filename().string() + (entries.size() > 1 ? ", ..." : "") + ")";
-    if (holds_a_run(directory)) {
-      const auto ids = run_ids_in_folder(directory);
-      held = "an earlier run";
-      if (!ids.empty() && !ids.front().run_id.empty()) held += " (run id " + ids.front().run_id + ")";
-    }
+  const std::string listed = entries.front().filename().string() + (entries.size() > 1 ? ", ..." : "");
+  if (!holds_a_run(directory))
     throw InputError(directory, "--out",
-                     "the folder holds " + held +
+                     "the folder holds files that no rouleau run wrote (" + listed +
+                         "); a run starts only in a missing or empty folder: choose another folder");
+  if (!overwrite) {
+    const std::string id = run_id_in_log(fs::path(directory) / run_log_name);
+    throw InputError(directory, "--out",
+                     "the folder holds an earlier run" + (id.empty() ? std::string() : " (run id " + id + ")") +
                          "; a run never writes over another: choose another folder, continue that run with --restart " +
                          directory + ", or pass --overwrite to empty the folder first");
   }
-  if (!holds_a_run(directory))
-    throw InputError(directory, "--out",
-                     "--overwrite empties only a folder that holds a rouleau run, and this one holds none (" +
-                         entries.front().filename().string() + (entries.size() > 1 ? ", ..." : "") +
-                         "): choose another folder");
+  // --overwrite: every entry must be one a run writes, checked before anything is removed.
+  for (const fs::path& entry : entries)
+    if (const std::string foreign = foreign_entry(entry); !foreign.empty())
+      throw InputError(directory, "--out",
+                       "--overwrite empties only what a run wrote, and the folder also holds " + foreign +
+                           ": move it away or choose another folder");
+  const fs::path working = fs::weakly_canonical(fs::current_path(status), status);
+  for (const fs::path& entry : entries) {
+    const fs::path canonical = fs::weakly_canonical(entry, status);
+    if (working == canonical || working.string().rfind(canonical.string() + "/", 0) == 0)
+      throw InputError(directory, "--out", "--overwrite would remove the current folder, " + working.string());
+  }
   for (const fs::path& entry : entries) {
     fs::remove_all(entry, status);
     if (status) throw InputError(directory, "--out", "--overwrite could not remove " + entry.string() + ": " + status.message());

@@ -16,8 +16,8 @@ namespace rouleau {
 class RunLog {
  public:
   // Opens `path`: a new file that starts with `first_line`, or (`append`) the existing one,
-  // continued after a line `first_line`. Throws std::runtime_error naming the path when it
-  // cannot be opened.
+  // continued after an empty line and `first_line`. Throws std::runtime_error naming the
+  // path when it cannot be opened. Writing to stderr goes on when the log cannot be written.
   RunLog(const std::string& path, const std::string& first_line, bool append);
   // Gives std::cerr back its own buffer.
   ~RunLog();

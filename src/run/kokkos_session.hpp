@@ -5,9 +5,10 @@
 // rouleau's can not be taken for one of Kokkos's.
 //
 // Without OMP_PROC_BIND in the environment, Kokkos's OpenMP back end prints four lines of
-// advice at every start. The OpenMP runtime has read its environment by then (it binds no
-// thread when OMP_PROC_BIND is unset), so the session sets OMP_PROC_BIND=false, which says
-// what holds, and a run says once, in its log, how to bind the threads (run_case.cpp).
+// advice at every start. When neither OMP_PROC_BIND nor OMP_PLACES is set the OpenMP
+// runtime binds no thread, so the session sets OMP_PROC_BIND=false, which says what holds,
+// and a run says once, in its log, how to bind the threads (run_case.cpp, from the
+// runtime's own omp_get_proc_bind()).
 #include <Kokkos_Core.hpp>
 #include <cstdlib>
 #include <memory>
@@ -21,7 +22,8 @@ namespace rouleau {
 class KokkosSession {
  public:
   KokkosSession(const char* program, int threads) : arguments_{program} {
-    if (std::getenv("OMP_PROC_BIND") == nullptr) setenv("OMP_PROC_BIND", "false", 0);
+    if (std::getenv("OMP_PROC_BIND") == nullptr && std::getenv("OMP_PLACES") == nullptr)
+      setenv("OMP_PROC_BIND", "false", 0);
     if (threads > 0) arguments_.push_back(kokkos_threads_flag(threads, KOKKOS_VERSION));
     for (std::string& argument : arguments_) argument_pointers_.push_back(argument.data());
     argument_pointers_.push_back(nullptr);

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -34,6 +33,9 @@
 #include "parallel/communicator.hpp"
 #include "parallel/mpi_session.hpp"
 #include "rouleau_version.hpp"
+#ifdef KOKKOS_ENABLE_OPENMP
+#include <omp.h>
+#endif
 #include "coupling/immersed_coupling.hpp"
 #include "run/run_diagnostics.hpp"
 #include "run/scene.hpp"
@@ -189,8 +191,7 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
   std::cerr << "memory: about " << format_bytes(memory.total_bytes) << " estimated (largest part: "
             << memory.terms.front().first << ")\n";
 #ifdef KOKKOS_ENABLE_OPENMP
-  const char* binding = std::getenv("OMP_PROC_BIND");
-  if (Kokkos::DefaultHostExecutionSpace().concurrency() > 1 && (!binding || std::string(binding) == "false"))
+  if (Kokkos::DefaultHostExecutionSpace().concurrency() > 1 && omp_get_proc_bind() == omp_proc_bind_false)
     std::cerr << "threads not bound to cores (to bind them, as for timings: OMP_PROC_BIND=spread OMP_PLACES=threads)\n";
 #endif
   if (const FluidDistribution* distribution = simulation.fluid().distribution())
@@ -467,14 +468,18 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
   if (writes_files) {
     if (!restart) prepare_new_run_folder(out, options.overwrite);
     const std::string now = current_utc_time_iso8601();
-    log.emplace(out + "/" + run_log_name,
-                run_log_first_line(run_id, restart ? "continued from " + restart->path + " at " + now
-                                                   : "case " + config.name + ", started " + now),
-                restart != nullptr);
-    write_file_atomically(out + "/case.resolved.toml", resolved_case_toml(config, derived));
+    try {
+      log.emplace(out + "/" + run_log_name,
+                  run_log_first_line(run_id, restart ? "continued from " + restart->path + " at " + now
+                                                     : "case " + config.name + ", started " + now),
+                  restart != nullptr);
+    } catch (const std::runtime_error& error) {
+      throw InputError(out, restart ? "--restart" : "--out", error.what());
+    }
   }
   // The run's log ends with what stopped it (the caller reports it on stderr, after the log is closed).
   try {
+    if (writes_files) write_file_atomically(out + "/case.resolved.toml", resolved_case_toml(config, derived));
     return run_in_folder(config, options, derived, ranks, run_id, log ? &*log : nullptr, run_start);
   } catch (const std::exception& error) {
     if (log) log->file() << "rouleau: the run stopped: " << error.what() << std::endl;

@@ -12,7 +12,13 @@
 #include <set>
 #include <string>
 
+#include "config/load_case.hpp"
+#include "config/memory_estimate.hpp"
+#include "fluid/fluid_matrix.hpp"
 #include "geometry/vessel_mesh.hpp"
+#include "run/simulation.hpp"
+#include "solver/ilu0_preconditioner.hpp"
+#include "temporary_folder.hpp"
 #include "vessel_profiles.hpp"
 
 namespace {
@@ -195,6 +201,33 @@ TEST(VesselMesh, BadSizesAreRefusedWithTheKey) {
     ADD_FAILURE() << "a throat wider than the inlet was meshed";
   } catch (const std::runtime_error& error) {
     EXPECT_NE(std::string(error.what()).find("vessel.throat_radius_um"), std::string::npos) << error.what();
+  }
+}
+
+TEST(VesselMesh, MemoryEstimateCountsTheTetrahedraBeforeGmshMeshesThem) {
+  // The contraction's lumen at two element sizes: the nodes, tetrahedra, Jacobian blocks
+  // and ILU(0)'s widest level, estimated from the size field before meshing, against the
+  // mesh Gmsh makes and the graph and factorization the solver builds on it.
+  const std::string cache = rouleau::testing::fresh_temporary_folder("memory_estimate_vessel_cache").string();
+  for (const std::string sizes : {"3.0,1.5", "2.0,1.0"}) {
+    SCOPED_TRACE(sizes);
+    const std::string core = sizes.substr(0, sizes.find(',')), wall = sizes.substr(sizes.find(',') + 1);
+    const rouleau::CaseConfig config = rouleau::load_case(
+        std::string(ROULEAU_SOURCE_DIR) + "/cases/contraction/case.toml",
+        {"cells=[]", "interaction.enabled=false", "vessel.element_size_um=" + core, "vessel.wall_element_size_um=" + wall});
+    const rouleau::MemoryEstimate estimate = rouleau::estimate_memory(config, 2);
+    const rouleau::FluidMesh mesh = rouleau::make_case_mesh(config, cache);
+    const rouleau::FluidMatrixGraph graph = rouleau::build_fluid_matrix_graph(mesh);
+    const rouleau::Ilu0Preconditioner ilu(graph.row_map, graph.entries);
+    const double blocks = static_cast<double>(graph.node_neighbors.extent(0)), widest = ilu.widest_level();
+    std::printf("contraction %s um: %d nodes (estimate %lld), %d tetrahedra (%lld), %.0f blocks (%.0f), widest ILU(0) "
+                "level %.0f rows (%.0f)\n",
+                sizes.c_str(), mesh.num_dof_nodes, estimate.fluid_nodes, mesh.num_elements, estimate.fluid_elements,
+                blocks, estimate.jacobian_blocks, widest, estimate.widest_ilu_level);
+    EXPECT_NEAR(static_cast<double>(estimate.fluid_nodes), mesh.num_dof_nodes, 0.3 * mesh.num_dof_nodes);
+    EXPECT_NEAR(static_cast<double>(estimate.fluid_elements), mesh.num_elements, 0.3 * mesh.num_elements);
+    EXPECT_NEAR(estimate.jacobian_blocks, blocks, 0.3 * blocks);
+    EXPECT_NEAR(estimate.widest_ilu_level, widest, 0.5 * widest);
   }
 }
 

@@ -78,7 +78,7 @@ FluidSizes box_sizes(const DomainConfig& domain) {
 
 // A vessel of tetrahedra (geometry/vessel_mesh.cpp, Gmsh), sized from the mesher's size
 // field (expected_element_count, the count the mesher's own limit uses). Measured on the
-// contraction at 3/1.5, 2/1 and 1.5/0.75 μm (tests/test_memory_estimate.cpp): Gmsh makes
+// contraction at 3/1.5, 2/1 and 1.5/0.75 μm (tests/test_vessel_mesh.cpp): Gmsh makes
 // 1.58-1.69 times that count, 4.2-5.1 tetrahedra per node, 12.6-13.4 blocks per row, and
 // its node order along the axis gives ILU(0) narrow levels, 17 and 25 rows at 3.7k and 10k
 // nodes (about 1.1 N^(1/3)).

@@ -60,7 +60,7 @@ TEST(RunCase, ShearFlowOfPlasmaHasRelativeViscosityOne) {
   ASSERT_NE(table, std::string::npos) << log;
   for (const char* line : {"  fluid", "  outside the stages", "  total"})
     EXPECT_NE(log.find(line, table), std::string::npos) << line << " not in\n" << log;
-  for (const char* stage : {"elastic", "spread", "interaction", "cell diagnostics"})
+  for (const char* stage : {"elastic", "spread", "interaction", "cell meshes", "cell diagnostics"})
     EXPECT_EQ(log.find(stage, table), std::string::npos) << stage << " in\n" << log;
   // After its first line, the log is what the run printed on stderr.
   EXPECT_EQ(log.substr(log.find('\n') + 1), o.err);

@@ -215,7 +215,11 @@ def plot_walls(columns, figures):
         stress_axis.plot(time, columns[name], label=readable[name])
     stress_axis.set_ylabel("wall shear stress [Pa]")
     stress_axis.legend(fontsize="small")
-    viscosity_axis.plot(time, columns["relative_apparent_viscosity"])
+    viscosity = columns["relative_apparent_viscosity"]
+    viscosity_axis.plot(time, viscosity)
+    if not any(math.isfinite(v) for v in viscosity):  # walls at rest: no shear rate to divide by
+        viscosity_axis.text(0.5, 0.5, "not defined: no imposed shear rate", transform=viscosity_axis.transAxes,
+                            ha="center", va="center", color="gray")
     viscosity_axis.set_ylabel("relative apparent viscosity\nτ_w / (μ γ̇)")
     viscosity_axis.set_xlabel("time [s]")
     save(figure, figures, "wall_stress.png", "wall shear stress and relative apparent viscosity")
@@ -223,8 +227,10 @@ def plot_walls(columns, figures):
 
 def plot_solver(columns, figures):
     figure, axis = plt.subplots(figsize=(7, 3.5))
-    axis.plot(columns["step"], columns["gmres_iterations"], label="GMRES iterations")
-    axis.plot(columns["step"], columns["newton_iterations"], label="Newton iterations")
+    solved = [i for i, step in enumerate(columns["step"]) if step > 0]  # step 0 is the start: no solve
+    steps = [columns["step"][i] for i in solved]
+    axis.plot(steps, [columns["gmres_iterations"][i] for i in solved], label="GMRES iterations")
+    axis.plot(steps, [columns["newton_iterations"][i] for i in solved], label="Newton iterations")
     axis.set_xlabel("step")
     axis.set_ylabel("iterations per step")
     axis.legend(fontsize="small")

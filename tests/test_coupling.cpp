@@ -236,13 +236,13 @@ TEST(Coupling, SemiImplicitStiffnessIsTheSymmetricHessianOfTheCellsEnergy) {
   NodeVectors scratch_forces("scratch_forces", nodes);
   const rouleau::FluidScales scales = simulation.fluid().scales();
   rouleau::CellStiffness stiffness(
-      rkpm, population.positions(),
-      [&](const NodeVectors& out) {
-        rouleau::differenced_forces(population, nullptr, scratch_forces, out);
+      nodes, rkpm,
+      [&](const NodeVectors& positions, const NodeVectors& out) {
+        rouleau::differenced_forces(population, nullptr, positions, scratch_forces, out);
       },
       &interaction, scales);
   const double dt = 2e-4;
-  stiffness.linearize(dt);
+  stiffness.linearize(population.positions(), dt);
 
   const int unknowns = simulation.fluid().fluid_operator().num_unknowns();
   using Vector = Kokkos::View<double*>;

@@ -47,7 +47,7 @@ class Divergence : public ::testing::Test {
   const rouleau::CellPopulation& cells() const { return *simulation_->cells().population; }
   // The first node of cell 1.
   int first_node_of_second_cell() const { return cells().cell_first_node()[1]; }
-  void set_positions(const HostVectors& x) { Kokkos::deep_copy(cells().positions(), x); }
+  void set_positions(const HostVectors& x) { simulation_->set_cell_positions(x); }
 
   // The message of the DivergenceError that the next step throws ("" when it does not).
   std::string next_step_divergence() {

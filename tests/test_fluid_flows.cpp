@@ -157,8 +157,9 @@ struct ShellAtRest {
   }
 };
 
-// Gives the solver the shell's force as immersed nodal loads F_J = m_J f(x_J).
-void load_shell(const FluidMesh& mesh, const ShellAtRest& shell, FluidSolver& solver) {
+// The shell's force as immersed nodal loads F_J = m_J f(x_J).
+ImmersedTerms shell_loads(const FluidMesh& mesh, const ShellAtRest& shell, const FluidSolver& solver,
+                          bool in_stabilization) {
   auto coordinates = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
   auto mass = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), solver.fluid_operator().lumped_mass());
   Kokkos::View<double*> loads("rouleau::test::shell_loads", mesh.num_unknowns());
@@ -170,7 +171,10 @@ void load_shell(const FluidMesh& mesh, const ShellAtRest& shell, FluidSolver& so
     for (int d = 0; d < 3; ++d) host(4 * dof_node + d) = mass(dof_node) * f[d];
   }
   Kokkos::deep_copy(loads, host);
-  solver.set_immersed_forces(loads);
+  ImmersedTerms terms;
+  terms.loads = loads;
+  terms.loads_in_stabilization = in_stabilization;
+  return terms;
 }
 
 // Solves the closed box with the shell's loads; returns the errors against rest.
@@ -178,10 +182,8 @@ FluidErrors shell_at_rest_errors(int n, bool forces_in_stabilization, FluidEleme
   FluidMesh mesh = make_box_mesh({0, 0, 0}, {1, 1, 1}, {n, n, n}, {1, 1, 1}, {false, false, false});
   if (element == FluidElementType::tetrahedron4) mesh = split_into_tetrahedra(mesh);
   FluidSolver solver(mesh, unit_fluid(0.0), std::array<BoundaryConfig, 6>{}, tight_solver(), unit_scales(0.0), true);
-  solver.set_immersed_forces_in_stabilization(forces_in_stabilization);
   const ShellAtRest shell;
-  load_shell(mesh, shell, solver);
-  const FluidSolveReport report = solver.solve_steady();
+  const FluidSolveReport report = solver.solve_steady(shell_loads(mesh, shell, solver, forces_in_stabilization));
   EXPECT_TRUE(report.converged) << report.failure;
   return fluid_l2_errors(solver.fluid_operator(), solver.state(), shell);
 }
@@ -268,11 +270,11 @@ TEST(FluidFlows, SubscaleVelocityCarriesTheFluxThatSeepsThroughAPressurizedShell
     const FluidMesh mesh = make_box_mesh({0, 0, 0}, {1, 1, 1}, {n, n, n}, {1, 1, 1}, {false, false, false});
     FluidSolver solver(mesh, unit_fluid(0.0), std::array<BoundaryConfig, 6>{}, tight_solver(), unit_scales(0.0), true);
     const ShellAtRest shell;
-    load_shell(mesh, shell, solver);
-    const FluidSolveReport report = solver.solve_steady();
+    const ImmersedTerms loads = shell_loads(mesh, shell, solver, false);
+    const FluidSolveReport report = solver.solve_steady(loads);
     ASSERT_TRUE(report.converged) << report.failure;
     Kokkos::View<double*> total("total", mesh.num_unknowns());
-    solver.total_velocity(total);
+    solver.total_velocity(total, loads);
     Kokkos::View<double*> resolved("resolved", mesh.num_unknowns());
     Kokkos::deep_copy(resolved, solver.state());
     for (const double radius : {shell.radius - shell.width, shell.radius, shell.radius + shell.width}) {

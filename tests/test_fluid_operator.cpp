@@ -215,7 +215,7 @@ TEST_P(FluidOperatorOn, DiagonalBlocksMatchAssembledMatrix) {
 TEST_P(FluidOperatorOn, CrsAssemblyMatchesElementAssembly) {
   // The CRS Jacobian for assembled preconditioners against the element-matrix assembly.
   TinyProblem p(GetParam(), 1);
-  const FluidMatrixGraph graph = build_fluid_matrix_graph(p.mesh);
+  const BlockMatrixGraph graph = build_fluid_matrix_graph(p.mesh);
   Vector values("values", graph.entries.extent(0));
   p.op.assemble_jacobian(p.state, graph, values);
   const Eigen::SparseMatrix<double> A = p.assemble();
@@ -262,7 +262,7 @@ TEST_P(FluidOperatorOn, SerialAndOpenMPBackendsAgreeToRoundOff) {
   serial.op.diagonal_blocks(serial.state, ba);
   openmp.op.diagonal_blocks(openmp.state, bb);
   compare("diagonal_blocks", ba, bb);
-  const FluidMatrixGraph graph = build_fluid_matrix_graph(serial.mesh);
+  const BlockMatrixGraph graph = build_fluid_matrix_graph(serial.mesh);
   Vector ma("ma", graph.entries.extent(0)), mb("mb", graph.entries.extent(0));
   serial.op.assemble_jacobian(serial.state, graph, ma);
   openmp.op.assemble_jacobian(openmp.state, graph, mb);

@@ -36,7 +36,7 @@ TEST(MemoryEstimate, CountsTheMeshTheJacobianAndTheIluLevelsAsTheCodeBuildsThem)
     const rouleau::FluidMesh mesh = rouleau::make_case_mesh(config, cache);
     EXPECT_EQ(estimate.fluid_nodes, mesh.num_dof_nodes);
     EXPECT_EQ(estimate.fluid_elements, mesh.num_elements);
-    const rouleau::FluidMatrixGraph graph = rouleau::build_fluid_matrix_graph(mesh);
+    const rouleau::BlockMatrixGraph graph = rouleau::build_fluid_matrix_graph(mesh);
     EXPECT_EQ(estimate.jacobian_blocks, static_cast<double>(graph.node_neighbors.extent(0)));
     const rouleau::Ilu0Preconditioner ilu(graph.row_map, graph.entries);
     // Closed in x and y the count is exact; a periodic x or y makes it about half the node

@@ -165,7 +165,7 @@ double norm(const Vec& a) {
   return std::sqrt(sum);
 }
 
-Dense dense_matrix(const FluidMatrixGraph& graph, const Kokkos::View<double*>& values) {
+Dense dense_matrix(const BlockMatrixGraph& graph, const Kokkos::View<double*>& values) {
   auto row_map = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), graph.row_map);
   auto entries = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), graph.entries);
   auto v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), values);
@@ -250,7 +250,7 @@ Vec reference_cycle(const std::vector<ReferenceLevel>& levels, std::size_t l, co
 // with a BDF mass term and a random state, so every block of the 4×4 node blocks is full.
 struct SmallJacobian {
   FluidMesh mesh = make_box_mesh({0, 0, 0}, {2.0, 1.0, 1.0}, {5, 4, 3}, {1.0, 1.5, 1.0}, {true, false, false});
-  FluidMatrixGraph graph = build_fluid_matrix_graph(mesh);
+  BlockMatrixGraph graph = build_fluid_matrix_graph(mesh);
   Kokkos::View<double*> values{"values", graph.entries.extent(0)};
 
   SmallJacobian() {

@@ -164,7 +164,7 @@ TEST(Scenes, SemiImplicitCouplingWithTheWholeVelocityTracksTheExplicitOne) {
   // explicit coupling at 1e-4 s (half its stable step 2e-4 s; at 5e-5 s the centroid moves
   // 2e-4 um less and the pressure differs by 0.09 %) against the semi-implicit one at
   // 1e-3 s. Its Ŝ acts on the whole velocity the cells move with, u_h + u', linearizing
-  // u' too (FluidSolver::set_immersed_stiffness): the centroid's motion within 2.5 %
+  // u' too (ImmersedTerms::stiffness_moves_with_subscale): the centroid's motion within 2.5 %
   // (measured 1.7 %), the driving pressure within 1.5 % (0.85 %), the capsule's volume
   // change within 15 % of the explicit run's (4.0e-4 against 4.1e-4). With Ŝ acting on u_h
   // alone, as before, the pressure was 3.2 % low and the volume change 8.8e-4, and by

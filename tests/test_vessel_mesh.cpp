@@ -217,7 +217,7 @@ TEST(VesselMesh, MemoryEstimateCountsTheTetrahedraBeforeGmshMeshesThem) {
         {"cells=[]", "interaction.enabled=false", "vessel.element_size_um=" + core, "vessel.wall_element_size_um=" + wall});
     const rouleau::MemoryEstimate estimate = rouleau::estimate_memory(config, 2);
     const rouleau::FluidMesh mesh = rouleau::make_case_mesh(config, cache);
-    const rouleau::FluidMatrixGraph graph = rouleau::build_fluid_matrix_graph(mesh);
+    const rouleau::BlockMatrixGraph graph = rouleau::build_fluid_matrix_graph(mesh);
     const rouleau::Ilu0Preconditioner ilu(graph.row_map, graph.entries);
     const double blocks = static_cast<double>(graph.node_neighbors.extent(0)), widest = ilu.widest_level();
     std::printf("contraction %s um: %d nodes (estimate %lld), %d tetrahedra (%lld), %.0f blocks (%.0f), widest ILU(0) "

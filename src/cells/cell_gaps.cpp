@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "kernels/surface_gap.hpp"
-#include "run/profiling_region.hpp"
+#include "util/profiling_region.hpp"
 
 namespace rouleau {
 

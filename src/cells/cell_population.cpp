@@ -9,8 +9,8 @@
 #include "kernels/scatter_sum.hpp"
 #include "kernels/state_checks.hpp"
 #include "kernels/tet4.hpp"
-#include "run/instantiate.hpp"
-#include "run/profiling_region.hpp"
+#include "util/instantiate.hpp"
+#include "util/profiling_region.hpp"
 #include "util/view_transfer.hpp"
 
 namespace rouleau {
@@ -48,6 +48,8 @@ BasicCellPopulation<ExecSpace>::BasicCellPopulation(const std::vector<PlacedCell
   reference_volumes_ = Kokkos::View<double*>("rouleau::CellPopulation::reference_volumes", cells.size());
   area_tensions_ = Kokkos::View<double*>("rouleau::CellPopulation::area_tensions", cells.size());
   volume_pressures_ = Kokkos::View<double*>("rouleau::CellPopulation::volume_pressures", cells.size());
+  trial_area_tensions_ = Kokkos::View<double*>("rouleau::CellPopulation::trial_area_tensions", cells.size());
+  trial_volume_pressures_ = Kokkos::View<double*>("rouleau::CellPopulation::trial_volume_pressures", cells.size());
 
   auto x = Kokkos::create_mirror_view(reference_positions_);
   auto node_cell = Kokkos::create_mirror_view(node_cell_);
@@ -155,10 +157,11 @@ void BasicCellPopulation<ExecSpace>::compute_surface_sums(const NodeVectors& pos
 
 template <class ExecSpace>
 template <class Tag>
-double BasicCellPopulation<ExecSpace>::run_force_kernel(const char* label) {
+double BasicCellPopulation<ExecSpace>::run_force_kernel(const char* label, const NodeVectors& positions,
+                                                        const ForceOutputs& outputs) const {
   ProfilingRegion region("rouleau::CellPopulation::internal_forces");
   force_scatter_.reset();
-  NeoHookeanForceFunctor<Scatter> forces{positions_,    element_nodes_, inverse_edge_matrix_, reference_volume_,
+  NeoHookeanForceFunctor<Scatter> forces{positions,     element_nodes_, inverse_edge_matrix_, reference_volume_,
                                          element_cell_, materials_,     force_scatter_};
   // This rank's cells' elements (share_work; every element by default).
   const auto elements = over_indices(forces, computed_elements_);
@@ -168,31 +171,34 @@ double BasicCellPopulation<ExecSpace>::run_force_kernel(const char* label) {
     Kokkos::parallel_reduce(label, policy, elements, energy);
   else
     Kokkos::parallel_for(label, policy, elements);
-  if (global_constraints_) energy += add_global_constraint_forces<Tag>();
-  gather_into(internal_forces_, force_scatter_);
+  if (global_constraints_) energy += add_global_constraint_forces<Tag>(positions, outputs);
+  gather_into(outputs.forces, force_scatter_);
   return energy;
 }
 
 template <class ExecSpace>
 template <class Tag>
-double BasicCellPopulation<ExecSpace>::add_global_constraint_forces() {
+double BasicCellPopulation<ExecSpace>::add_global_constraint_forces(const NodeVectors& positions,
+                                                                    const ForceOutputs& outputs) const {
   ProfilingRegion region("rouleau::CellPopulation::global_constraints");
   // A_c and V_c, then T_c, P_c (and E_A + E_V), then f_a −= T_c ∂A_c/∂x_a + P_c ∂V_c/∂x_a.
-  compute_surface_sums(positions_);
-  GlobalConstraintFunctor multipliers{cell_sums_,     reference_areas_, reference_volumes_, area_moduli_,
-                                      volume_moduli_, area_tensions_,   volume_pressures_};
+  compute_surface_sums(positions);
+  GlobalConstraintFunctor multipliers{cell_sums_,     reference_areas_,       reference_volumes_,
+                                      area_moduli_,   volume_moduli_,         outputs.area_tensions,
+                                      outputs.volume_pressures};
   const Kokkos::RangePolicy<ExecSpace, Tag> cells(0, computed_cells_.extent(0));
   const auto cell_multipliers = over_indices(multipliers, computed_cells_);
   double energy = 0.0;
   if constexpr (std::is_same_v<Tag, ForcesAndEnergy>) {
     Kokkos::parallel_reduce("rouleau::CellPopulation::constraint_multipliers_and_energy", cells, cell_multipliers,
                             energy);
-    constraint_energy_ = energy;
+    if (outputs.constraint_energy) *outputs.constraint_energy = energy;
   } else {
     Kokkos::parallel_for("rouleau::CellPopulation::constraint_multipliers", cells, cell_multipliers);
   }
-  GlobalConstraintForceFunctor<Scatter> forces{positions_,     surface_triangles_, triangle_cell_, cell_first_node_,
-                                               area_tensions_, volume_pressures_,  force_scatter_};
+  GlobalConstraintForceFunctor<Scatter> forces{positions,          surface_triangles_,      triangle_cell_,
+                                               cell_first_node_,   outputs.area_tensions, outputs.volume_pressures,
+                                               force_scatter_};
   Kokkos::parallel_for("rouleau::CellPopulation::global_constraint_forces",
                        Kokkos::RangePolicy<ExecSpace>(0, computed_triangles_.extent(0)),
                        over_indices(forces, computed_triangles_));
@@ -224,12 +230,20 @@ void BasicCellPopulation<ExecSpace>::list_computed_work(const std::vector<int>& 
 
 template <class ExecSpace>
 void BasicCellPopulation<ExecSpace>::compute_internal_forces() {
-  run_force_kernel<ForcesOnly>("rouleau::CellPopulation::internal_forces");
+  run_force_kernel<ForcesOnly>("rouleau::CellPopulation::internal_forces", positions_,
+                               {internal_forces_, area_tensions_, volume_pressures_});
 }
 
 template <class ExecSpace>
 double BasicCellPopulation<ExecSpace>::compute_internal_forces_and_energy() {
-  return run_force_kernel<ForcesAndEnergy>("rouleau::CellPopulation::internal_forces_and_energy");
+  return run_force_kernel<ForcesAndEnergy>("rouleau::CellPopulation::internal_forces_and_energy", positions_,
+                                           {internal_forces_, area_tensions_, volume_pressures_, &constraint_energy_});
+}
+
+template <class ExecSpace>
+void BasicCellPopulation<ExecSpace>::internal_forces_at(const NodeVectors& positions, const NodeVectors& forces) const {
+  run_force_kernel<ForcesOnly>("rouleau::CellPopulation::internal_forces_at", positions,
+                               {forces, trial_area_tensions_, trial_volume_pressures_});
 }
 
 template <class ExecSpace>

@@ -95,6 +95,11 @@ class BasicCellPopulation {
   void compute_internal_forces();
   // The same, returning the total elastic energy Σ_e V0 W(F_e) + E_A + E_V [pN·μm].
   double compute_internal_forces_and_energy();
+  // The same forces at other `positions` (a trial configuration: the semi-implicit
+  // coupling's differences, coupling/cell_stiffness.hpp) into `forces`, leaving the
+  // population's own state (internal_forces(), the constraints' tensions and pressures)
+  // as it is.
+  void internal_forces_at(const NodeVectors& positions, const NodeVectors& forces) const;
   // This rank's share of the elastic work when the cells are on every rank (issue 10):
   // the two calls above then give the forces and energy of `cells` (ascending, each once)
   // alone (their elements and constraints; zero at the other cells' nodes), and the shares
@@ -140,14 +145,20 @@ class BasicCellPopulation {
   void copy_fields_to_host(HostFields& fields) const;
 
  private:
-  // The force kernel launched with tag ForcesOnly or ForcesAndEnergy; returns the energy
-  // (0 for ForcesOnly).
+  // Where one force evaluation writes: the forces, and the constraints' multipliers.
+  struct ForceOutputs {
+    NodeVectors forces;
+    Kokkos::View<double*> area_tensions, volume_pressures;
+    double* constraint_energy = nullptr;  // E_A + E_V, with ForcesAndEnergy
+  };
+  // The force kernel at `positions` launched with tag ForcesOnly or ForcesAndEnergy; returns
+  // the energy (0 for ForcesOnly).
   template <class Tag>
-  double run_force_kernel(const char* label);
-  // Adds the global-constraint forces into force_scatter_; returns E_A + E_V (0 for
-  // ForcesOnly).
+  double run_force_kernel(const char* label, const NodeVectors& positions, const ForceOutputs& outputs) const;
+  // Adds the global-constraint forces at `positions` into force_scatter_ (the multipliers
+  // into `outputs`); returns E_A + E_V (0 for ForcesOnly).
   template <class Tag>
-  double add_global_constraint_forces();
+  double add_global_constraint_forces(const NodeVectors& positions, const ForceOutputs& outputs) const;
   // computed_elements_, computed_triangles_ and computed_cells_ for `cells`.
   void list_computed_work(const std::vector<int>& cells);
   // The surface sums (CellSurfaceSum) of every cell at `positions` into cell_sums_.
@@ -167,6 +178,8 @@ class BasicCellPopulation {
   // Per cell: k_A, k_V, A0, V0, T_c, P_c.
   Kokkos::View<double*> area_moduli_, volume_moduli_, reference_areas_, reference_volumes_, area_tensions_,
       volume_pressures_;
+  // The multipliers of internal_forces_at() (scratch: a trial configuration's).
+  Kokkos::View<double*> trial_area_tensions_, trial_volume_pressures_;
   bool global_constraints_ = false;
   double constraint_energy_ = 0.0;
   NodeVectors cell_origins_;  // the point each cell's surface sums are taken from

@@ -9,8 +9,8 @@
 
 #include "kernels/cell_surface.hpp"
 #include "kernels/tet4.hpp"
-#include "run/instantiate.hpp"
-#include "run/profiling_region.hpp"
+#include "util/instantiate.hpp"
+#include "util/profiling_region.hpp"
 
 namespace rouleau {
 namespace static_equilibrium_detail {

@@ -12,8 +12,8 @@
 #include "kernels/morse_pairs.hpp"
 #include "kernels/morse_stiffness.hpp"
 #include "kernels/scatter_sum.hpp"
-#include "run/instantiate.hpp"
-#include "run/profiling_region.hpp"
+#include "util/instantiate.hpp"
+#include "util/profiling_region.hpp"
 #include "util/view_transfer.hpp"
 
 namespace rouleau {

@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "run/profiling_region.hpp"
+#include "util/profiling_region.hpp"
 
 namespace rouleau {
 
@@ -21,37 +21,21 @@ void displace(const NodeVectors& positions, const NodeVectors& base, const NodeV
 }
 }  // namespace
 
-void add_node_vectors(const NodeVectors& sum, const NodeVectors& part) {
-  Kokkos::parallel_for(
-      "rouleau::add_node_vectors", Kokkos::RangePolicy<ExecSpace>(0, sum.extent(0)), KOKKOS_LAMBDA(const int n) {
-        for (int d = 0; d < 3; ++d) sum(n, d) += part(n, d);
-      });
-}
-
-void keep_nodes(const NodeVectors& v, const Kokkos::View<const int*>& computed) {
-  Kokkos::parallel_for(
-      "rouleau::keep_nodes", Kokkos::RangePolicy<ExecSpace>(0, v.extent(0)), KOKKOS_LAMBDA(const int n) {
-        if (!computed(n))
-          for (int d = 0; d < 3; ++d) v(n, d) = 0.0;
-      });
-}
-
-void differenced_forces(CellPopulation& population, const WallRepulsion* wall, const NodeVectors& scratch,
-                        const NodeVectors& out, const Kokkos::View<const int*>& computed_nodes) {
-  population.compute_internal_forces();
-  Kokkos::deep_copy(out, population.internal_forces());
+void differenced_forces(const CellPopulation& population, const WallRepulsion* wall, const NodeVectors& positions,
+                        const NodeVectors& scratch, const NodeVectors& out, const Kokkos::View<const int*>& computed_nodes) {
+  population.internal_forces_at(positions, out);
   if (wall) {
-    wall->compute_forces(population.positions(), population.surface_area_weights(), scratch);
+    wall->compute_forces(positions, population.surface_area_weights(), scratch);
     if (computed_nodes.extent(0) > 0) keep_nodes(scratch, computed_nodes);
     add_node_vectors(out, scratch);
   }
 }
 
-CellStiffness::CellStiffness(const RkpmCoupler& rkpm, const NodeVectors& positions, ForceEvaluation forces,
+CellStiffness::CellStiffness(const int nodes, const RkpmCoupler& rkpm, ForceEvaluation forces,
                              SurfaceInteraction* interaction, const FluidScales& scales)
-    : rkpm_(rkpm), positions_(positions), forces_(std::move(forces)), interaction_(interaction), scales_(scales) {
-  const int nodes = positions.extent(0);
+    : rkpm_(rkpm), forces_(std::move(forces)), interaction_(interaction), scales_(scales) {
   base_positions_ = NodeVectors("rouleau::CellStiffness::base_positions", nodes);
+  displaced_positions_ = NodeVectors("rouleau::CellStiffness::displaced_positions", nodes);
   displacement_ = NodeVectors("rouleau::CellStiffness::displacement", nodes);
   base_forces_ = NodeVectors("rouleau::CellStiffness::base_forces", nodes);
   displaced_forces_ = NodeVectors("rouleau::CellStiffness::displaced_forces", nodes);
@@ -59,10 +43,10 @@ CellStiffness::CellStiffness(const RkpmCoupler& rkpm, const NodeVectors& positio
   if (interaction_) interaction_change_ = NodeVectors("rouleau::CellStiffness::interaction_change", nodes);
 }
 
-void CellStiffness::linearize(double dt) {
+void CellStiffness::linearize(const NodeVectors& positions, double dt) {
   dt_ = dt;
-  Kokkos::deep_copy(base_positions_, positions_);
-  forces_(base_forces_);
+  Kokkos::deep_copy(base_positions_, positions);
+  forces_(base_positions_, base_forces_);
   ++evaluations_;
   if (interaction_) interaction_->linearize();
 }
@@ -92,9 +76,8 @@ void CellStiffness::force_change(const Kokkos::View<const double*>& x, const Nod
 
   // K δx ≈ [f(x^n + σ δx) − f(x^n)] / σ,   σ = h / max |δx|
   const double sigma = difference_step / largest;
-  displace(positions_, base_positions_, displacement_, sigma);
-  forces_(displaced_forces_);
-  Kokkos::deep_copy(positions_, base_positions_);
+  displace(displaced_positions_, base_positions_, displacement_, sigma);
+  forces_(displaced_positions_, displaced_forces_);
   ++evaluations_;
   const NodeVectors displaced = displaced_forces_, base = base_forces_;
   const double inverse_step = 1.0 / sigma;

@@ -29,6 +29,7 @@
 
 #include "cells/cell_population.hpp"
 #include "cells/surface_interaction.hpp"
+#include "coupling/cell_forces.hpp"
 #include "coupling/rkpm_coupler.hpp"
 #include "coupling/wall_repulsion.hpp"
 #include "fluid/boundary_conditions.hpp"
@@ -36,36 +37,33 @@
 
 namespace rouleau {
 
-// sum(n, d) += part(n, d) over the cell nodes.
-void add_node_vectors(const CellPopulation::NodeVectors& sum, const CellPopulation::NodeVectors& part);
-// v(n) = 0 at the nodes n with computed(n) = 0 (a rank's share of per-node forces).
-void keep_nodes(const CellPopulation::NodeVectors& v, const Kokkos::View<const int*>& computed);
-
 // out = the elastic forces on the cell nodes (with the global constraints) and the wall
-// repulsion (when `wall`) at the current positions [pN]; `scratch` holds the wall's part
-// on its way. These are −∂E/∂x of the cells' energy less the interaction's, the forces
+// repulsion (when `wall`) at `positions` [pN] (CellPopulation::internal_forces_at: the
+// population's own state is left as it is); `scratch` holds the wall's part on its way. These are −∂E/∂x of the cells' energy less the interaction's, the forces
 // whose stiffness CellStiffness differences. With a share of the cells on this rank
 // (CellPopulation::share_work), the share's: the wall's forces at the nodes n with
 // computed_nodes(n) = 1 alone (every node when `computed_nodes` is empty).
-void differenced_forces(CellPopulation& population, const WallRepulsion* wall, const CellPopulation::NodeVectors& scratch,
+void differenced_forces(const CellPopulation& population, const WallRepulsion* wall,
+                        const CellPopulation::NodeVectors& positions, const CellPopulation::NodeVectors& scratch,
                         const CellPopulation::NodeVectors& out, const Kokkos::View<const int*>& computed_nodes = {});
 
 class CellStiffness final : public LinearOperator {
  public:
   using NodeVectors = Kokkos::View<double* [3]>;
-  // forces(out): the position-dependent forces on the cell nodes [pN] at `positions`
-  // that the operator differences (elastic, wall; not the interaction's), written to out.
-  using ForceEvaluation = std::function<void(const NodeVectors& out)>;
+  // forces(positions, out): the position-dependent forces on the cell nodes [pN] at
+  // `positions` that the operator differences (elastic, wall; not the interaction's),
+  // written to out; it must not change the cells' state.
+  using ForceEvaluation = std::function<void(const NodeVectors& positions, const NodeVectors& out)>;
 
-  // `positions` are the cell nodes' positions that `forces` reads; apply() moves them and
-  // puts them back. `rkpm` holds the supports at x^n. `interaction` (or null) adds its
-  // exact stiffness. All must outlive the operator.
-  CellStiffness(const RkpmCoupler& rkpm, const NodeVectors& positions, ForceEvaluation forces,
-                SurfaceInteraction* interaction, const FluidScales& scales);
+  // `nodes`: the number of cell nodes. `rkpm` holds the supports at x^n. `interaction`
+  // (or null) adds its exact stiffness. All must outlive the operator.
+  CellStiffness(int nodes, const RkpmCoupler& rkpm, ForceEvaluation forces, SurfaceInteraction* interaction,
+                const FluidScales& scales);
 
-  // Linearizes about the current positions x^n (evaluates the differenced forces at x^n
-  // and the interaction's pair stiffness) for a fluid solve over the step Δt [s].
-  void linearize(double dt);
+  // Linearizes about the positions x^n (copies them, evaluates the differenced forces there
+  // and the interaction's pair stiffness) for a fluid solve over the step Δt [s]. The
+  // differences displace the operator's own copy of the positions, never the cells'.
+  void linearize(const NodeVectors& positions, double dt);
   // The difference step h [μm] (the largest node displacement of a difference).
   static constexpr double difference_step = 1e-6;
 
@@ -81,12 +79,13 @@ class CellStiffness final : public LinearOperator {
 
  private:
   const RkpmCoupler& rkpm_;
-  NodeVectors positions_;
   ForceEvaluation forces_;
   SurfaceInteraction* interaction_;
   FluidScales scales_;
   double dt_ = 0.0;
-  NodeVectors base_positions_, base_forces_, displacement_, displaced_forces_, change_, interaction_change_;
+  // x^n, and x^n + σ δx of a difference (the operator's own copies).
+  NodeVectors base_positions_, displaced_positions_;
+  NodeVectors base_forces_, displacement_, displaced_forces_, change_, interaction_change_;
   mutable long evaluations_ = 0;
 };
 

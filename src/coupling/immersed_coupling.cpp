@@ -9,7 +9,7 @@
 #include "kernels/cell_motion.hpp"
 #include "kernels/fsi_force.hpp"
 #include "kernels/state_checks.hpp"
-#include "run/profiling_region.hpp"
+#include "util/profiling_region.hpp"
 #include "util/view_transfer.hpp"
 
 namespace rouleau {
@@ -67,194 +67,242 @@ std::string node_vector_text(const CellPopulation::NodeVectors& vectors, const i
   text << "(" << host(node, 0) << ", " << host(node, 1) << ", " << host(node, 2) << ")";
   return text.str();
 }
+
+// Throws std::runtime_error naming the first node whose force is NaN or Inf, with its
+// elastic part and position.
+void check_finite_forces(const CellPopulation::NodeVectors& forces, const CellPopulation::NodeVectors& elastic,
+                         const CellPopulation& population) {
+  const int node = first_non_finite_row(ExecSpace(), forces, "rouleau::ImmersedCoupling::check_forces");
+  if (node < 0) return;
+  std::ostringstream what;
+  what << "cell forces: the force on node " << node << " of cell " << population.cell_of_node(node)
+       << " is NaN or Inf: " << node_vector_text(forces, node) << " pN in all, of which elastic "
+       << node_vector_text(elastic, node) << " pN; the node is at " << node_vector_text(population.positions(), node)
+       << " um";
+  throw std::runtime_error(what.str());
+}
+
+// The RKPM supports and weights at the cells' current positions; throws
+// std::runtime_error naming a cell node that has left the fluid domain.
+void update_rkpm_supports(RkpmCoupler& rkpm, const CellPopulation& population) {
+  try {
+    rkpm.update(population.positions());
+  } catch (const PointsOutsideFluidError& error) {
+    std::ostringstream what;
+    what << ImmersedCoupling::spread_stage << ": cell " << population.cell_of_node(error.first_point())
+         << " has left the fluid domain: its node " << error.first_point() << " is at "
+         << node_vector_text(population.positions(), error.first_point()) << " um, with no fluid node in its support ("
+         << error.count() << " cell nodes outside in all)";
+    throw std::runtime_error(what.str());
+  }
+}
 }  // namespace
 
-ImmersedCoupling::ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, const CaseConfig& config)
+ImmersedCoupling::ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, CellForces& forces,
+                                   const CaseConfig& config, const ScenePlan& plan)
     : fluid_(fluid),
       population_(*cells.population),
-      interaction_(cells.interaction.get()),
+      interaction_(plan.morse_forces ? cells.interaction.get() : nullptr),
+      forces_(forces),
       rkpm_(fluid.mesh(), config.coupling.support_elements),
-      skip_unneeded_(config.scene.skip_unneeded_stages),
       gravity_(config.coupling.gravity) {
   const int nodes = population_.num_nodes();
-  fsi_forces_ = NodeVectors("rouleau::ImmersedCoupling::fsi_forces", nodes);
-  interpolated_ = NodeVectors("rouleau::ImmersedCoupling::interpolated", nodes);
-  previous_velocities_ = NodeVectors("rouleau::ImmersedCoupling::previous_velocities", nodes);
+  const bool spans_ranks = fluid.exchange().spans_ranks();
+  state_.fsi_forces = NodeVectors("rouleau::ImmersedCoupling::fsi_forces", nodes);
+  state_.interpolated = NodeVectors("rouleau::ImmersedCoupling::interpolated", nodes);
+  state_.previous_velocities = NodeVectors("rouleau::ImmersedCoupling::previous_velocities", nodes);
   fluid_load_ = Kokkos::View<double*>("rouleau::ImmersedCoupling::fluid_load", fluid.num_global_unknowns());
-  if (fluid.distribution())
+  state_.fluid_terms.loads = fluid_load_;
+  state_.fluid_terms.loads_in_stabilization = config.coupling.forces_in_stabilization;
+  state_.felt_forces = state_.fsi_forces;
+  state_.felt_terms = state_.fluid_terms;
+  if (spans_ranks)
     cell_carrier_ = Kokkos::View<double*>("rouleau::ImmersedCoupling::cell_carrier", fluid.num_global_unknowns());
-  fluid_.set_immersed_forces_in_stabilization(config.coupling.forces_in_stabilization);
   if (config.coupling.subscale_velocity) {
     total_velocity_ =
         Kokkos::View<double*>("rouleau::ImmersedCoupling::total_velocity", fluid.fluid_operator().num_unknowns());
-    if (fluid.distribution())
+    if (spans_ranks)
       global_state_ = Kokkos::View<double*>("rouleau::ImmersedCoupling::global_state", fluid.num_global_unknowns());
   }
-  if (interaction_) interaction_forces_ = NodeVectors("rouleau::ImmersedCoupling::interaction_forces", nodes);
-  if (config.vessel.enabled && config.vessel.wall_repulsion_pressure > 0.0) {
-    wall_ = std::make_unique<WallRepulsion>(config.vessel.profile, config.vessel.wall_repulsion_pressure,
-                                            config.vessel.wall_repulsion_range);
-    wall_forces_ = NodeVectors("rouleau::ImmersedCoupling::wall_forces", nodes);
+  if (plan.inertia) {
+    const std::vector<double> mass = nodal_excess_mass(population_, config);
+    excess_mass_ = device_copy(mass, "rouleau::ImmersedCoupling::excess_mass");
   }
-  // The inertia/buoyancy stage changes nothing when every cell is as dense as the fluid.
-  const std::vector<double> mass = nodal_excess_mass(population_, config);
-  bool any_excess = false;
-  for (double m : mass) any_excess = any_excess || m != 0.0;
-  runs_inertia_ = any_excess || !skip_unneeded_;
-  if (runs_inertia_) {
-    excess_mass_ = Kokkos::View<double*>("rouleau::ImmersedCoupling::excess_mass", nodes);
-    auto host = Kokkos::create_mirror_view(excess_mass_);
-    for (int n = 0; n < nodes; ++n) host(n) = mass[n];
-    Kokkos::deep_copy(excess_mass_, host);
-  }
-  if (config.coupling.scheme == CouplingScheme::semi_implicit) {
+  if (plan.semi_implicit) {
     stiffness_scratch_ = NodeVectors("rouleau::ImmersedCoupling::stiffness_scratch", nodes);
     force_change_ = NodeVectors("rouleau::ImmersedCoupling::force_change", nodes);
+    state_.felt_forces = NodeVectors("rouleau::ImmersedCoupling::felt_forces", nodes);
+    felt_load_ = Kokkos::View<double*>("rouleau::ImmersedCoupling::felt_load", fluid.num_global_unknowns());
+    state_.felt_terms.loads = felt_load_;
+    // The elastic and wall forces at trial positions, differenced (the Morse part is exact).
     stiffness_ = std::make_unique<CellStiffness>(
-        rkpm_, population_.positions(),
-        [this](const NodeVectors& out) {
-          differenced_forces(population_, wall_.get(), stiffness_scratch_, out, computed_nodes_);
+        nodes, rkpm_,
+        [this](const NodeVectors& positions, const NodeVectors& out) {
+          differenced_forces(population_, forces_.wall(), positions, stiffness_scratch_, out, forces_.computed_nodes());
         },
         interaction_, fluid.scales());
   }
   // Without skips the RKPM correction runs everywhere (it changes nothing but round-off
   // where the plain window reproduces linear fields).
-  rkpm_.always_correct(!skip_unneeded_);
+  rkpm_.always_correct(plan.rkpm_correction_everywhere);
+
+  // 1. Reads the force stages' forces at x^n (CellForces), v^n, v^{n−1} and Δt^{n−1};
+  //    writes state_.fsi_forces. Every force must be finite before it reaches the fluid.
+  stages_.push_back({plan.inertia ? inertia_stage : elastic_stage, [this] {
+                       const CellForceState& f = forces_.state();
+                       FsiForceFunctor<NodeVectors, Kokkos::View<double*>> sum{
+                           f.elastic,
+                           f.interaction,
+                           f.wall,
+                           excess_mass_,
+                           population_.velocities(),
+                           state_.previous_velocities,
+                           {gravity_[0], gravity_[1], gravity_[2]},
+                           state_.previous_dt > 0.0 ? 1.0 / state_.previous_dt : 0.0,
+                           state_.fsi_forces};
+                       Kokkos::parallel_for("rouleau::ImmersedCoupling::fsi_force",
+                                            Kokkos::RangePolicy<ExecSpace>(0, population_.num_nodes()), sum);
+                       check_finite_forces(state_.fsi_forces, f.elastic, population_);
+                       return true;
+                     }});
+  // 2. Reads x^n and state_.fsi_forces; writes the RKPM weights at x^n (also those of the
+  //    interpolation), state_.fluid_terms (the spread forces and, across ranks, the union of
+  //    the ranks' supports, where the fluid replicates and sums) and state_.corrected_points.
+  stages_.push_back({spread_stage, [this] {
+                       if (shares_) restrict_transfers();
+                       update_rkpm_supports(rkpm_, population_);
+                       if (fluid_.exchange().spans_ranks())
+                         state_.fluid_terms.cell_support_nodes =
+                             shares_ ? fluid_.exchange().nodes_of_any_rank(rkpm_.support_nodes())
+                                     : Kokkos::View<const int*>(rkpm_.support_nodes());
+                       state_.felt_terms.cell_support_nodes = state_.fluid_terms.cell_support_nodes;
+                       spread(state_.fsi_forces, fluid_load_);
+                       // across ranks each rank counts its own cells' points
+                       state_.corrected_points =
+                           shares_ ? static_cast<int>(fluid_.exchange().ranks()->sum(
+                                         static_cast<long long>(rkpm_.corrected_points())))
+                                   : rkpm_.corrected_points();
+                       return true;
+                     }});
+  // 3. Semi-implicit: reads x^n; writes the linearization K about x^n (CellStiffness).
+  if (stiffness_)
+    stages_.push_back({stiffness_stage, [this] {
+                         stiffness_->linearize(population_.positions(), state_.dt);
+                         return true;
+                       }});
+  //    Reads state_.fluid_terms (and K); writes the fluid's state and state_.fluid. The
+  //    step ends here when the solve fails.
+  stages_.push_back({fluid_stage, [this] {
+                       ImmersedTerms terms = state_.fluid_terms;
+                       if (stiffness_) {
+                         // The cells move with u_h + u' when total_velocity_ is there: Ŝ then acts on it.
+                         terms.stiffness = stiffness_.get();
+                         terms.stiffness_moves_with_subscale = total_velocity_.extent(0) > 0;
+                         terms.stiffness_is_shared = shares_;
+                       }
+                       state_.fluid = fluid_.advance(state_.dt, state_.scheme, terms);
+                       return state_.fluid.converged;
+                     }});
+  // 4. Reads the fluid's state and state_.fluid_terms; writes state_.cell_carrier (u_h, or
+  //    u_h + u' with coupling.subscale_velocity) and state_.global_state, in the global
+  //    numbering: the fluid's own vectors on one rank, their global copies at the cells'
+  //    supports across ranks.
+  stages_.push_back({interpolate_stage, [this] {
+                       Kokkos::View<const double*> carrier = fluid_.state(), state = fluid_.state();
+                       if (total_velocity_.extent(0) > 0) {
+                         fluid_.total_velocity(total_velocity_, state_.fluid_terms);
+                         carrier = total_velocity_;
+                       }
+                       if (fluid_.exchange().spans_ranks()) {
+                         const auto& nodes = state_.fluid_terms.cell_support_nodes;
+                         fluid_.gather_global(carrier, cell_carrier_, nodes);
+                         if (global_state_.extent(0) > 0) fluid_.gather_global(fluid_.state(), global_state_, nodes);
+                         state = global_state_.extent(0) > 0 ? global_state_ : cell_carrier_;
+                         carrier = cell_carrier_;
+                       }
+                       state_.cell_carrier = carrier;
+                       state_.global_state = state;
+                       return true;
+                     }});
+  //    Semi-implicit: reads state_.cell_carrier, state_.fsi_forces and K; writes
+  //    state_.felt_forces = F_I + K Δt I u^{n+1} and state_.felt_terms, their spread.
+  if (stiffness_)
+    stages_.push_back({stiffness_stage, [this] {
+                         stiffness_->force_change(state_.cell_carrier, force_change_);
+                         Kokkos::deep_copy(state_.felt_forces, state_.fsi_forces);
+                         add_node_vectors(state_.felt_forces, force_change_);
+                         spread(state_.felt_forces, felt_load_);
+                         return true;
+                       }});
+  //    Reads state_.cell_carrier and the RKPM weights; writes state_.interpolated (across
+  //    ranks each cell's velocities from the rank computing it).
+  stages_.push_back({interpolate_stage, [this] {
+                       rkpm_.interpolate(state_.cell_carrier, fluid_unknowns_per_node, state_.interpolated);
+                       if (shares_) {
+                         keep_nodes(state_.interpolated, computed_nodes_);
+                         sum_over_ranks(state_.interpolated);
+                       }
+                       return true;
+                     }});
+  // 5. Reads state_.interpolated; writes the cells' positions and velocities,
+  //    state_.previous_velocities, state_.previous_dt, and the step's powers and speeds (the
+  //    power of the forces the fluid felt, on the fluid's side and on the cells': they agree,
+  //    interpolation and spreading being transposes of each other).
+  stages_.push_back({move_stage, [this] {
+                       double largest_speed2 = 0.0;
+                       MoveCellsFunctor<NodeVectors> move{state_.interpolated,      population_.velocities(),
+                                                          state_.previous_velocities, population_.positions(),
+                                                          fluid_.scales().velocity, state_.dt};
+                       Kokkos::parallel_reduce("rouleau::ImmersedCoupling::move",
+                                               Kokkos::RangePolicy<ExecSpace>(0, population_.num_nodes()), move,
+                                               Kokkos::Max<double>(largest_speed2));
+                       state_.previous_dt = state_.dt;
+                       state_.finite = largest_speed2 < MoveCellsFunctor<NodeVectors>::non_finite_speed2;
+                       state_.largest_cell_speed = std::sqrt(largest_speed2);
+                       state_.power_spread = dot(state_.felt_terms.loads, state_.global_state) * fluid_.scales().velocity;
+                       state_.power_interpolated = dot(state_.felt_forces, population_.velocities());
+                       if (shares_) state_.power_interpolated = fluid_.exchange().ranks()->sum(state_.power_interpolated);
+                       return true;
+                     }});
 }
 
-ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme scheme, StageTimes& times) {
+std::vector<std::string> ImmersedCoupling::stage_names() const {
+  std::vector<std::string> names;
+  for (const StepStage& stage : stages_) names.push_back(stage.name);
+  for (const StepStage& stage : forces_.stages()) names.push_back(stage.name);
+  return names;
+}
+
+ImmersedCoupling::StepReport ImmersedCoupling::advance(double dt, TimeScheme scheme, bool with_energies,
+                                                       StageTimes& times) {
   ProfilingRegion region("rouleau::ImmersedCoupling::advance");
+  state_.dt = dt;
+  state_.scheme = scheme;
+  state_.fluid = FluidSolveReport{};
+  // The forces at x^n: the last step's 6, or anew (the cells placed, restored or shared anew).
+  if (forces_.stale()) forces_.compute(false, times);
+  // 1–5, then 6: the forces at the new positions.
+  const bool completed = run_stages(stages_, times);
+  if (completed && state_.finite) forces_.compute(with_energies, times);
   StepReport report;
-  // 1. forces on the cells at x^n
-  times.time(elastic_stage, [&] { population_.compute_internal_forces(); });
-  if (interaction_)
-    times.time(interaction_stage, [&] {
-      // Without skips the list is rebuilt every step (the skin then changes nothing).
-      if (!skip_unneeded_) interaction_->rebuild();
-      interaction_->compute_forces();
-      interaction_->copy_forces_to_nodes(interaction_forces_);
-    });
-  if (wall_)
-    times.time(wall_stage, [&] {
-      wall_->compute_forces(population_.positions(), population_.surface_area_weights(), wall_forces_);
-      if (shares_) keep_nodes(wall_forces_, computed_nodes_);
-    });
-  times.time(runs_inertia_ ? inertia_stage : elastic_stage, [&] {
-    FsiForceFunctor<NodeVectors, Kokkos::View<double*>> sum{population_.internal_forces(),
-                                                            interaction_forces_,
-                                                            wall_forces_,
-                                                            excess_mass_,
-                                                            population_.velocities(),
-                                                            previous_velocities_,
-                                                            {gravity_[0], gravity_[1], gravity_[2]},
-                                                            previous_dt_ > 0.0 ? 1.0 / previous_dt_ : 0.0,
-                                                            fsi_forces_};
-    Kokkos::parallel_for("rouleau::ImmersedCoupling::fsi_force",
-                         Kokkos::RangePolicy<ExecSpace>(0, population_.num_nodes()), sum);
-  });
-  // Every force must be finite before it reaches the fluid: name the first node that is not.
-  const int non_finite = first_non_finite_row(ExecSpace(), fsi_forces_, "rouleau::ImmersedCoupling::check_forces");
-  if (non_finite >= 0) {
-    std::ostringstream what;
-    what << "cell forces: the force on node " << non_finite << " of cell " << population_.cell_of_node(non_finite)
-         << " is NaN or Inf: " << node_vector_text(fsi_forces_, non_finite) << " pN in all, of which elastic "
-         << node_vector_text(population_.internal_forces(), non_finite) << " pN; the node is at "
-         << node_vector_text(population_.positions(), non_finite) << " um";
-    throw std::runtime_error(what.str());
-  }
-  // 2. spread, with the supports at x^n (also those of the interpolation below); across
-  // ranks the cells read the fluid at their supports alone, and a share's forces are
-  // summed there over the ranks.
-  times.time(spread_stage, [&] {
-    if (shares_) restrict_transfers();
-    try {
-      rkpm_.update(population_.positions());
-    } catch (const PointsOutsideFluidError& error) {
-      std::ostringstream what;
-      what << spread_stage << ": cell " << population_.cell_of_node(error.first_point())
-           << " has left the fluid domain: its node " << error.first_point() << " is at "
-           << node_vector_text(population_.positions(), error.first_point()) << " um, with no fluid node in its support ("
-           << error.count() << " cell nodes outside in all)";
-      throw std::runtime_error(what.str());
-    }
-    // Across ranks the union of the ranks' supports is replicated (each rank's own alone
-    // when every rank transfers every cell).
-    if (fluid_.distribution())
-      fluid_.set_replicated_nodes(shares_ ? fluid_.distribution()->nodes_of_any_rank(rkpm_.support_nodes())
-                                          : rkpm_.support_nodes());
-    Kokkos::deep_copy(fluid_load_, 0.0);
-    rkpm_.spread(fsi_forces_, fluid_load_, fluid_unknowns_per_node);
-    if (shares_) fluid_.sum_over_ranks(fluid_load_);
-    fluid_.set_immersed_forces(fluid_load_);
-  });
-  // across ranks each rank counts its own cells' points
-  report.corrected_points = shares_ ? static_cast<int>(fluid_.distribution()->communicator().sum(
-                                          static_cast<long long>(rkpm_.corrected_points())))
-                                    : rkpm_.corrected_points();
-  // 3. the fluid
-  if (stiffness_) {
-    times.time(stiffness_stage, [&] { stiffness_->linearize(dt); });
-    // The cells move with u_h + u' when total_velocity_ is there: Ŝ then acts on it.
-    fluid_.set_immersed_stiffness(stiffness_.get(), total_velocity_.extent(0) > 0);
-  }
-  report.fluid = times.time(fluid_stage, [&] { return fluid_.advance(dt, scheme); });
-  if (stiffness_) fluid_.set_immersed_stiffness(nullptr);
-  if (!report.fluid.converged) return report;
-  // The velocity the cells move with: u_h, or u_h + u' (coupling.subscale_velocity), in
-  // the global numbering: the fluid's own vectors on one rank, their global copies at the
-  // cells' supports across ranks.
-  Kokkos::View<const double*> cell_carrier = fluid_.state(), global_state = fluid_.state();
-  if (total_velocity_.extent(0) > 0) {
-    times.time(interpolate_stage, [&] { fluid_.total_velocity(total_velocity_); });
-    cell_carrier = total_velocity_;
-  }
-  if (fluid_.distribution())
-    times.time(interpolate_stage, [&] {
-      fluid_.gather_global(cell_carrier, cell_carrier_);
-      if (global_state_.extent(0) > 0) fluid_.gather_global(fluid_.state(), global_state_);
-      global_state = global_state_.extent(0) > 0 ? global_state_ : cell_carrier_;
-      cell_carrier = cell_carrier_;
-    });
-  // The semi-implicit step's forces f^n + K Δt I u^{n+1}, spread as the fluid felt them.
-  if (stiffness_)
-    times.time(stiffness_stage, [&] {
-      stiffness_->force_change(cell_carrier, force_change_);
-      add_node_vectors(fsi_forces_, force_change_);
-      Kokkos::deep_copy(fluid_load_, 0.0);
-      rkpm_.spread(fsi_forces_, fluid_load_, fluid_unknowns_per_node);
-      if (shares_) fluid_.sum_over_ranks(fluid_load_);
-      fluid_.set_immersed_forces(fluid_load_);
-    });
-  // 4. interpolate; across ranks each cell's velocities come from the rank computing it.
-  times.time(interpolate_stage, [&] {
-    rkpm_.interpolate(cell_carrier, fluid_unknowns_per_node, interpolated_);
-    if (shares_) {
-      keep_nodes(interpolated_, computed_nodes_);
-      sum_over_ranks(interpolated_);
-    }
-  });
-  // 5. move
-  double largest_speed2 = 0.0;
-  times.time(move_stage, [&] {
-    MoveCellsFunctor<NodeVectors> move{interpolated_,           population_.velocities(), previous_velocities_,
-                                       population_.positions(), fluid_.scales().velocity, dt};
-    Kokkos::parallel_reduce("rouleau::ImmersedCoupling::move",
-                            Kokkos::RangePolicy<ExecSpace>(0, population_.num_nodes()), move,
-                            Kokkos::Max<double>(largest_speed2));
-  });
-  previous_dt_ = dt;
-  report.finite = largest_speed2 < MoveCellsFunctor<NodeVectors>::non_finite_speed2;
-  report.largest_cell_speed = std::sqrt(largest_speed2);
-  // The power of the step's forces, on the fluid's side and on the cells' (they agree:
-  // interpolation and spreading are transposes of each other).
-  report.power_spread = dot(fluid_load_, global_state) * fluid_.scales().velocity;
-  report.power_interpolated = dot(fsi_forces_, population_.velocities());
-  if (shares_) report.power_interpolated = fluid_.distribution()->communicator().sum(report.power_interpolated);
+  report.fluid = state_.fluid;
+  report.corrected_points = state_.corrected_points;
+  if (!completed) return report;
+  report.power_spread = state_.power_spread;
+  report.power_interpolated = state_.power_interpolated;
+  report.largest_cell_speed = state_.largest_cell_speed;
+  report.finite = state_.finite;
   return report;
 }
 
+void ImmersedCoupling::spread(const NodeVectors& forces, const Kokkos::View<double*>& loads) const {
+  Kokkos::deep_copy(loads, 0.0);
+  rkpm_.spread(forces, loads, fluid_unknowns_per_node);
+  if (shares_) fluid_.exchange().sum_at_nodes(loads, state_.fluid_terms.cell_support_nodes);
+}
+
 void ImmersedCoupling::share_cells(const std::vector<int>& cells) {
-  if (!fluid_.distribution())
+  if (!fluid_.exchange().spans_ranks())
     throw std::logic_error("rouleau::ImmersedCoupling::share_cells: the fluid is on one rank");
   population_.share_work(cells);
   if (interaction_) interaction_->share_rows(cells);
@@ -264,6 +312,7 @@ void ImmersedCoupling::share_cells(const std::vector<int>& cells) {
   for (const int c : cells)
     for (int n = first[c]; n < first[c] + count[c]; ++n) computed[n] = 1;
   computed_nodes_ = device_copy(computed, "rouleau::ImmersedCoupling::computed_nodes");
+  forces_.share(computed_nodes_);
   transferred_nodes_ = Kokkos::View<int*>();  // marked anew at the next spread (restrict_transfers)
   // The inertia and buoyancy forces of this rank's nodes alone.
   if (excess_mass_.extent(0) > 0) {
@@ -279,7 +328,6 @@ void ImmersedCoupling::share_cells(const std::vector<int>& cells) {
         KOKKOS_LAMBDA(const int n) { mass(n) = computed_node(n) ? every_mass(n) : 0.0; });
   }
   shares_ = true;
-  fluid_.set_immersed_shares(true);
 }
 
 void ImmersedCoupling::restrict_transfers() {
@@ -297,19 +345,19 @@ void ImmersedCoupling::sum_over_ranks(const NodeVectors& values) {
   if (host_node_vectors_.extent(0) != values.extent(0))
     host_node_vectors_ = Kokkos::create_mirror(values);  // a buffer of its own, also on the host
   Kokkos::deep_copy(host_node_vectors_, values);
-  fluid_.distribution()->communicator().sum(host_node_vectors_.data(), 3 * static_cast<int>(values.extent(0)));
+  fluid_.exchange().ranks()->sum(host_node_vectors_.data(), 3 * static_cast<int>(values.extent(0)));
   Kokkos::deep_copy(values, host_node_vectors_);
 }
 
 void ImmersedCoupling::save_state(CheckpointData& data) const {
-  data.reals["coupling/previous_velocities"] = to_flat_vector(previous_velocities_);
-  data.reals["coupling/previous_dt"] = {previous_dt_};
+  data.reals["coupling/previous_velocities"] = to_flat_vector(state_.previous_velocities);
+  data.reals["coupling/previous_dt"] = {state_.previous_dt};
 }
 
 void ImmersedCoupling::restore_state(const CheckpointData& data) {
-  from_flat_vector(data.real("coupling/previous_velocities", 3LL * population_.num_nodes()), previous_velocities_,
+  from_flat_vector(data.real("coupling/previous_velocities", 3LL * population_.num_nodes()), state_.previous_velocities,
                    "coupling/previous_velocities");
-  previous_dt_ = data.real("coupling/previous_dt", 1).front();
+  state_.previous_dt = data.real("coupling/previous_dt", 1).front();
 }
 
 }  // namespace rouleau

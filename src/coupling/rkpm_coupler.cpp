@@ -8,8 +8,8 @@
 
 #include "kernels/rkpm.hpp"
 #include "kernels/scatter_sum.hpp"
-#include "run/instantiate.hpp"
-#include "run/profiling_region.hpp"
+#include "util/instantiate.hpp"
+#include "util/profiling_region.hpp"
 
 namespace rouleau {
 

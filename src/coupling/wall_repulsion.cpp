@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "run/profiling_region.hpp"
+#include "util/profiling_region.hpp"
 
 namespace rouleau {
 

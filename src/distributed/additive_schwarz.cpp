@@ -110,7 +110,7 @@ AdditiveSchwarz::AdditiveSchwarz(const Communicator& communicator, const Element
 
 AdditiveSchwarz::~AdditiveSchwarz() = default;
 
-void AdditiveSchwarz::factor(const FluidOperator& local, const Kokkos::View<const double*>& state) {
+void AdditiveSchwarz::factor(const FluidOperator& local, const ConstVector& state) {
   require_node_sums(local, "AdditiveSchwarz");  // for the projected gradient of the viscous reconstruction
   local.assemble_jacobian(state, local_graph_, local_values_);
   // the owned nodes' diagonal blocks, with the other ranks' elements added at the owner

@@ -16,6 +16,7 @@
 #include "distributed/node_halo.hpp"
 #include "fluid/fluid_matrix.hpp"
 #include "fluid/fluid_operator.hpp"
+#include "fluid/fluid_preconditioner.hpp"
 #include "parallel/element_partition.hpp"
 #include "solver/aggregation_multigrid.hpp"
 #include "solver/ilu0_preconditioner.hpp"
@@ -25,7 +26,7 @@ namespace rouleau {
 
 enum class SubdomainSolver { ilu0, multigrid };
 
-class AdditiveSchwarz final : public Preconditioner {
+class AdditiveSchwarz final : public FluidPreconditioner {
  public:
   // `local_mesh`: the rank's mesh (make_local_mesh); `dirichlet`: the owned constrained
   // unknowns (local indices, owned_local_unknowns). The multigrid aggregates the owned
@@ -35,13 +36,13 @@ class AdditiveSchwarz final : public Preconditioner {
   ~AdditiveSchwarz() override;
   // The numeric factorization of the Jacobian of `local` (the rank's operator, without
   // Dirichlet rows, completing its element sums across ranks) at the rank's local `state`.
-  void factor(const FluidOperator& local, const Kokkos::View<const double*>& state);
+  void factor(const FluidOperator& local, const ConstVector& state) override;
   // z = M⁻¹ r on the rank's owned entries.
   void apply(const Kokkos::View<const double*>& r, const Kokkos::View<double*>& z) const override;
 
  private:
   int owned_nodes_;
-  FluidMatrixGraph local_graph_, owned_graph_;
+  BlockMatrixGraph local_graph_, owned_graph_;
   Kokkos::View<std::size_t*> owned_entry_source_;  // per owned-graph entry, its local-graph entry
   Kokkos::View<std::size_t*> diagonal_block_;        // per local node, where its own 4×4 block starts
   Kokkos::View<std::size_t*> owned_diagonal_block_;  // the same in the owned graph

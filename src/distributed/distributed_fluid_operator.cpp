@@ -79,13 +79,13 @@ DistributedBlockJacobi::DistributedBlockJacobi(const Communicator& communicator,
       local_blocks_("rouleau::DistributedBlockJacobi::local_blocks", 16 * partition.num_local_nodes()),
       jacobi_(partition.num_owned_nodes) {}
 
-long long DistributedBlockJacobi::factor(const FluidOperator& local, const Kokkos::View<const double*>& state) {
+void DistributedBlockJacobi::factor(const FluidOperator& local, const ConstVector& state) {
   require_node_sums(local, "DistributedBlockJacobi");
   local.diagonal_blocks(state, local_blocks_);  // completed across ranks
   identity_block_rows(dirichlet_, local_blocks_);
   const long long singular =
       jacobi_.factor(Kokkos::subview(local_blocks_, Kokkos::make_pair(0, 16 * owned_nodes_)));
-  return communicator_.sum(singular);
+  singular_blocks_ = communicator_.sum(singular);
 }
 
 void DistributedBlockJacobi::apply(const Kokkos::View<const double*>& r, const Kokkos::View<double*>& z) const {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "fluid/fluid_operator.hpp"
+#include "fluid/fluid_preconditioner.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/element_partition.hpp"
 #include "solver/block_jacobi.hpp"
@@ -51,13 +52,15 @@ class DistributedStokesOperator final : public LinearOperator {
 // Point-block Jacobi across ranks: each owned node's 4×4 diagonal block of the Jacobian
 // (completed across ranks by the operator's node sums), Dirichlet rows the identity's,
 // inverted node by node.
-class DistributedBlockJacobi final : public Preconditioner {
+class DistributedBlockJacobi final : public FluidPreconditioner {
  public:
   DistributedBlockJacobi(const Communicator& communicator, const ElementPartition& partition,
                          const std::vector<int>& dirichlet);
   // `local` must complete its element sums across ranks (set_node_sums).
-  // The blocks of `local` at the rank's local `state`; returns the singular blocks over all ranks.
-  long long factor(const FluidOperator& local, const Kokkos::View<const double*>& state);
+  // The blocks of `local` at the rank's local `state`.
+  void factor(const FluidOperator& local, const ConstVector& state) override;
+  // The singular blocks over all ranks at the last factor().
+  long long singular_blocks() const { return singular_blocks_; }
   void apply(const Kokkos::View<const double*>& r, const Kokkos::View<double*>& z) const override;
 
  private:
@@ -66,6 +69,7 @@ class DistributedBlockJacobi final : public Preconditioner {
   Kokkos::View<int*> dirichlet_;
   Vector local_blocks_;
   BlockJacobi jacobi_;
+  long long singular_blocks_ = 0;
 };
 
 }  // namespace rouleau

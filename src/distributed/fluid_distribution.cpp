@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "distributed/additive_schwarz.hpp"
+#include "distributed/distributed_fluid_operator.hpp"
 #include "distributed/local_mesh.hpp"
 #include "util/view_transfer.hpp"
 
@@ -130,7 +132,12 @@ double FluidDistribution::dot(const ConstVector& x, const ConstVector& y) const 
 
 double FluidDistribution::norm(const ConstVector& x) const { return std::sqrt(dot(x, x)); }
 
-void FluidDistribution::replicate(const ConstVector& local, const Vector& global) const {
+void FluidDistribution::replicate(const ConstVector& local, const Vector& global,
+                                  const Kokkos::View<const int*>& nodes) const {
+  if (nodes.extent(0) > 0) {
+    replicate_at(local, global, nodes);
+    return;
+  }
   place_owned(global_node_, partition_.num_owned_nodes, local, global);
   sum_over_ranks(global);
 }
@@ -142,8 +149,8 @@ FluidDistribution::Vector FluidDistribution::node_buffer(const int nodes) const 
   return Kokkos::subview(node_buffer_, std::make_pair(0, size));
 }
 
-void FluidDistribution::replicate(const ConstVector& local, const Vector& global,
-                                  const Kokkos::View<const int*>& nodes) const {
+void FluidDistribution::replicate_at(const ConstVector& local, const Vector& global,
+                                     const Kokkos::View<const int*>& nodes) const {
   const Vector buffer = node_buffer(static_cast<int>(nodes.extent(0)));
   gather_owned_at(owned_local_, nodes, local, buffer);
   sum_over_ranks(buffer);
@@ -161,7 +168,7 @@ void FluidDistribution::localize(const ConstVector& global, const Vector& local)
   take_local(global_node_, global, local);
 }
 
-Kokkos::View<int*> FluidDistribution::nodes_of_any_rank(const Kokkos::View<const int*>& nodes) const {
+Kokkos::View<const int*> FluidDistribution::nodes_of_any_rank(const Kokkos::View<const int*>& nodes) const {
   const int global_nodes = partition_.num_global_nodes;
   const int words = (global_nodes + 31) / 32;
   if (static_cast<int>(node_bits_.extent(0)) != words) {
@@ -199,6 +206,22 @@ std::vector<int> FluidDistribution::rank_holding(const std::vector<std::array<do
   std::vector<double> distance(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) distance[i] = owned_node_positions_.nearest_distance(points[i]);
   return communicator_.rank_of_smallest(distance);
+}
+
+std::unique_ptr<FluidPreconditioner> FluidDistribution::make_preconditioner(
+    const PreconditionerType type, const std::vector<int>& owned_dirichlet) const {
+  switch (type) {
+    case PreconditionerType::block_jacobi:
+      return std::make_unique<DistributedBlockJacobi>(communicator_, partition_, owned_dirichlet);
+    case PreconditionerType::ilu0:
+      return std::make_unique<AdditiveSchwarz>(communicator_, partition_, local_mesh_, owned_dirichlet,
+                                               SubdomainSolver::ilu0);
+    case PreconditionerType::multigrid:
+      return std::make_unique<AdditiveSchwarz>(communicator_, partition_, local_mesh_, owned_dirichlet,
+                                               SubdomainSolver::multigrid);
+    case PreconditionerType::none: break;
+  }
+  return make_fluid_preconditioner(PreconditionerType::none, local_mesh_);
 }
 
 }  // namespace rouleau

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "distributed/node_halo.hpp"
+#include "fluid/fluid_exchange.hpp"
 #include "geometry/binned_points.hpp"
 #include "distributed/node_sums.hpp"
 #include "mesh/fluid_mesh.hpp"
@@ -25,7 +26,7 @@
 
 namespace rouleau {
 
-class FluidDistribution {
+class FluidDistribution final : public FluidExchange {
  public:
   using Vector = Kokkos::View<double*>;
   using ConstVector = Kokkos::View<const double*>;
@@ -36,40 +37,52 @@ class FluidDistribution {
   FluidDistribution(const FluidDistribution&) = delete;
   FluidDistribution& operator=(const FluidDistribution&) = delete;
 
+  // The mesh is split by a partition (of one rank, too: its local vectors then have no copies).
+  bool spans_ranks() const override { return true; }
   const Communicator& communicator() const { return communicator_; }
+  const Communicator* ranks() const override { return &communicator_; }
   const ElementPartition& partition() const { return partition_; }
-  const FluidMesh& local_mesh() const { return local_mesh_; }
+  const FluidMesh& local_mesh() const override { return local_mesh_; }
   // The node sums for the rank's FluidOperator (FluidOperator::set_node_sums).
   const NodeSums& node_sums() const { return node_sums_; }
+  const ElementSumExchange* element_sums() const override { return &node_sums_; }
+  int num_owned_nodes() const override { return partition_.num_owned_nodes; }
 
   int num_owned_unknowns() const { return fluid_unknowns_per_node * partition_.num_owned_nodes; }
   int num_local_unknowns() const { return fluid_unknowns_per_node * partition_.num_local_nodes(); }
   int num_global_unknowns() const { return fluid_unknowns_per_node * partition_.num_global_nodes; }
 
   // The copies of a local vector take their owners' values.
-  void update_copies(const Vector& local) const { halo_.update_copies(local); }
+  void update_copies(const Vector& local) const override { halo_.update_copies(local); }
+  // values[i] ← Σ_ranks values[i] (one MPI_Allreduce).
+  void sum(double* values, int count) const override { communicator_.sum(values, count); }
   // Σ x·y and ‖x‖ over the owned entries of all ranks (each unknown once).
   double dot(const ConstVector& x, const ConstVector& y) const;
-  double norm(const ConstVector& x) const;
+  double norm(const ConstVector& x) const override;
 
   // global ← every rank's owned entries of `local` (see above); the same on every rank.
-  void replicate(const ConstVector& local, const Vector& global) const;
-  // The same at the global dof nodes `nodes` alone (the cells' supports): one
+  // With `nodes`, at those global dof nodes alone (the cells' supports): one
   // MPI_Allreduce of 4 values per node; the other entries of `global` are left as they are.
-  void replicate(const ConstVector& local, const Vector& global, const Kokkos::View<const int*>& nodes) const;
+  void replicate(const ConstVector& local, const Vector& global,
+                 const Kokkos::View<const int*>& nodes = {}) const override;
   // global ← Σ_ranks global at the global dof nodes `nodes` (the cells' supports), where
   // each rank holds its share of a sum (the forces its cells spread); the other entries
   // are left as they are. One MPI_Allreduce of 4 values per node.
-  void sum_at_nodes(const Vector& global, const Kokkos::View<const int*>& nodes) const;
+  void sum_at_nodes(const Vector& global, const Kokkos::View<const int*>& nodes) const override;
   // The union of every rank's `nodes` (global dof nodes: the supports of the cells each
   // rank transfers), ascending, the same on every rank, as replicate() and sum_at_nodes()
   // need: one MPI_Allreduce of a bit per global dof node. A view of a buffer the next call
   // overwrites.
-  Kokkos::View<int*> nodes_of_any_rank(const Kokkos::View<const int*>& nodes) const;
+  Kokkos::View<const int*> nodes_of_any_rank(const Kokkos::View<const int*>& nodes) const override;
   // local ← global at every local dof node, owned and copies.
-  void localize(const ConstVector& global, const Vector& local) const;
+  void localize(const ConstVector& global, const Vector& local) const override;
   // The local dof node of a global one, or −1 when the rank holds none.
-  int local_node(int global_node) const { return local_of_global_[global_node]; }
+  int local_node(int global_node) const override { return local_of_global_[global_node]; }
+
+  // Point-block Jacobi across the ranks (the same iterates as one rank), or additive
+  // Schwarz with ILU(0) or the multigrid per rank.
+  std::unique_ptr<FluidPreconditioner> make_preconditioner(PreconditionerType type,
+                                                           const std::vector<int>& owned_dirichlet) const override;
 
   // The rank holding each point [μm] (a cell's centroid, issue 10): the owner of the fluid
   // dof node nearest to it (minimum image in periodic directions; the lowest such rank on
@@ -95,6 +108,8 @@ class FluidDistribution {
   mutable Kokkos::View<double*, Kokkos::HostSpace> host_buffer_;
   // The first 4·nodes entries of a persistent device buffer.
   Vector node_buffer(int nodes) const;
+  // replicate() at the global dof nodes `nodes`.
+  void replicate_at(const ConstVector& local, const Vector& global, const Kokkos::View<const int*>& nodes) const;
   // Sums `values` over all ranks in place, through host memory.
   void sum_over_ranks(const Vector& values) const;
 };

@@ -10,8 +10,8 @@
 #include "kernels/fluid_assembly.hpp"
 #include "fluid/fluid_element_types.hpp"
 #include "kernels/scatter_sum.hpp"
-#include "run/instantiate.hpp"
-#include "run/profiling_region.hpp"
+#include "util/instantiate.hpp"
+#include "util/profiling_region.hpp"
 
 namespace rouleau {
 
@@ -286,7 +286,7 @@ void BasicFluidOperator<ExecSpace>::element_matrices(const ConstVector& state, c
 }
 
 template <class ExecSpace>
-void BasicFluidOperator<ExecSpace>::assemble_jacobian(const ConstVector& state, const FluidMatrixGraph& graph,
+void BasicFluidOperator<ExecSpace>::assemble_jacobian(const ConstVector& state, const BlockMatrixGraph& graph,
                                       const Vector& values) const {
   ProfilingRegion region("rouleau::FluidOperator::assemble_jacobian");
   await_copies();

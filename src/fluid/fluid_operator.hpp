@@ -96,7 +96,7 @@ class BasicFluidOperator {
   void diagonal_blocks(const ConstVector& state, const Vector& blocks) const;
   // The global Jacobian in CRS form on `graph` (with identity Dirichlet rows), for
   // assembled preconditioners; exact without viscous reconstruction, which it holds fixed.
-  void assemble_jacobian(const ConstVector& state, const FluidMatrixGraph& graph, const Vector& values) const;
+  void assemble_jacobian(const ConstVector& state, const BlockMatrixGraph& graph, const Vector& values) const;
   // Element matrices K_e(4a+i, 4b+j) without Dirichlet rows (tests, assembly).
   void element_matrices(const ConstVector& state, const Kokkos::View<double***>& matrices) const;
 

@@ -10,7 +10,7 @@
 #include <stdexcept>
 
 #include "fluid/fluid_element_types.hpp"
-#include "run/profiling_region.hpp"
+#include "util/profiling_region.hpp"
 #include "util/view_transfer.hpp"
 
 #include <algorithm>
@@ -32,8 +32,8 @@ class FluidJacobian final : public LinearOperator {
  public:
   using AddStiffness = std::function<void(const ConstVector&, const Vector&)>;
   struct Lift {
-    const FluidDistribution* distribution = nullptr;
-    Vector direction, action;  // local scratch
+    const FluidExchange* exchange = nullptr;  // null: the owned unknowns are all the local ones
+    Vector direction, action;                 // local scratch
   };
   FluidJacobian(const FluidOperator& op, const ConstVector& state, const Vector& state_gradient, bool linear,
                 AddStiffness add_stiffness, Lift lift)
@@ -42,7 +42,7 @@ class FluidJacobian final : public LinearOperator {
     if (!linear_ && op_.coefficients().viscous_reconstruction) op_.project_gradient(state_, state_gradient_);
   }
   void apply(const ConstVector& x, const Vector& y) const override {
-    if (!lift_.distribution) {
+    if (!lift_.exchange) {
       apply_local(x, y);
       return;
     }
@@ -70,9 +70,9 @@ class FluidJacobian final : public LinearOperator {
 };
 
 // ‖R‖ over the velocity rows and over the pressure rows of the first `owned` entries,
-// summed over the ranks of `distribution` when there is one (a free function: CUDA forbids
-// extended lambdas in private member functions).
-void block_norms(const ConstVector& r, const int owned, const FluidDistribution* distribution, double& momentum,
+// summed over the ranks (a free function: CUDA forbids extended lambdas in private member
+// functions).
+void block_norms(const ConstVector& r, const int owned, const FluidExchange& exchange, double& momentum,
                  double& continuity) {
   double sums[2] = {0.0, 0.0};
   Kokkos::parallel_reduce(
@@ -85,7 +85,7 @@ void block_norms(const ConstVector& r, const int owned, const FluidDistribution*
           sm += v;
       },
       sums[0], sums[1]);
-  if (distribution) distribution->communicator().sum(sums, 2);
+  exchange.sum(sums, 2);
   momentum = std::sqrt(sums[0]);
   continuity = std::sqrt(sums[1]);
 }
@@ -93,12 +93,12 @@ void block_norms(const ConstVector& r, const int owned, const FluidDistribution*
 // The boundary conditions of the whole mesh on a rank's part: the constrained unknowns it
 // holds (owned or copies), in its local numbering, and its local entries of the load.
 FluidBoundaryConditions localize_boundary_conditions(const FluidBoundaryConditions& global,
-                                                     const FluidDistribution& distribution) {
+                                                     const FluidExchange& exchange) {
   FluidBoundaryConditions local;
   local.pressure_pinned = global.pressure_pinned;
   std::vector<std::pair<int, double>> constrained;
   for (std::size_t k = 0; k < global.dirichlet_dofs.size(); ++k) {
-    const int node = distribution.local_node(global.dirichlet_dofs[k] / fluid_unknowns_per_node);
+    const int node = exchange.local_node(global.dirichlet_dofs[k] / fluid_unknowns_per_node);
     if (node >= 0)
       constrained.emplace_back(fluid_unknowns_per_node * node + global.dirichlet_dofs[k] % fluid_unknowns_per_node,
                                global.dirichlet_values[k]);
@@ -108,8 +108,8 @@ FluidBoundaryConditions localize_boundary_conditions(const FluidBoundaryConditio
     local.dirichlet_dofs.push_back(dof);
     local.dirichlet_values.push_back(value);
   }
-  local.traction_load = Vector("rouleau::FluidSolver::traction_load", distribution.num_local_unknowns());
-  distribution.localize(global.traction_load, local.traction_load);
+  local.traction_load = Vector("rouleau::FluidSolver::traction_load", exchange.local_mesh().num_unknowns());
+  exchange.localize(global.traction_load, local.traction_load);
   return local;
 }
 
@@ -138,32 +138,22 @@ GmresSettings gmres_settings(const SolverConfig& s) {
 }
 }  // namespace
 
-namespace {
-// Whether the solver preconditions with BlockJacobi (one rank; across ranks it is
-// DistributedBlockJacobi).
-bool one_rank_block_jacobi(const FluidDistribution* distribution, const SolverConfig& settings) {
-  return !distribution && settings.preconditioner == PreconditionerType::block_jacobi;
-}
-}  // namespace
-
 FluidSolver::FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid,
                          const std::vector<FluidBoundary>& boundaries, const SolverConfig& settings,
-                         const FluidScales& scales, bool stokes, const FluidDistribution* distribution)
-    : distribution_(distribution),
-      mesh_(mesh),
+                         const FluidScales& scales, bool stokes, const FluidExchange* exchange)
+    : mesh_(mesh),
+      one_rank_(exchange ? nullptr : std::make_unique<SingleRankExchange>(mesh_)),
+      exchange_(exchange ? exchange : one_rank_.get()),
       num_global_unknowns_(mesh.num_unknowns()),
-      operator_(distribution ? distribution->local_mesh() : mesh, scales.length),
+      operator_(exchange_->local_mesh(), scales.length),
       scales_(scales),
       settings_(settings),
       stokes_(stokes),
       density_(fluid.density),
-      boundary_(distribution ? localize_boundary_conditions(build_boundary_conditions(mesh, boundaries, scales),
-                                                            *distribution)
-                             : build_boundary_conditions(mesh, boundaries, scales)),
-      // The one-rank point-block Jacobi's inverse blocks, only where it is the preconditioner.
-      block_jacobi_(one_rank_block_jacobi(distribution, settings) ? operator_.mesh().num_dof_nodes : 0),
-      gmres_(distribution ? distribution->num_owned_unknowns() : mesh.num_unknowns(), gmres_settings(settings),
-             distribution ? &distribution->communicator() : nullptr) {
+      boundary_(exchange_->spans_ranks()
+                    ? localize_boundary_conditions(build_boundary_conditions(mesh, boundaries, scales), *exchange_)
+                    : build_boundary_conditions(mesh, boundaries, scales)),
+      gmres_(exchange_->num_owned_unknowns(), gmres_settings(settings), exchange_->ranks()) {
   const FluidMesh& local_mesh = operator_.mesh();
   const int n = local_mesh.num_unknowns();
   state_ = Vector("rouleau::FluidSolver::state", n);
@@ -173,65 +163,29 @@ FluidSolver::FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid,
   body_force_ = Vector("rouleau::FluidSolver::body_force", n);
   residual_ = Vector("rouleau::FluidSolver::residual", n);
   correction_ = Vector("rouleau::FluidSolver::correction", n);
-  if (one_rank_block_jacobi(distribution, settings))
-    blocks_ = Vector("rouleau::FluidSolver::blocks", 16 * local_mesh.num_dof_nodes);
   state_gradient_ = Vector("rouleau::FluidSolver::state_gradient", 9 * local_mesh.num_dof_nodes);
-  if (distribution_) operator_.set_node_sums(&distribution_->node_sums());
+  if (exchange_->element_sums()) operator_.set_node_sums(exchange_->element_sums());
   operator_.set_dirichlet(boundary_.dirichlet_dofs, boundary_.dirichlet_values);
   operator_.set_nodal_load(boundary_.traction_load);
-  if (distribution_) {
+  if (exchange_->spans_ranks()) {
     lifted_direction_ = Vector("rouleau::FluidSolver::lifted_direction", n);
     lifted_action_ = Vector("rouleau::FluidSolver::lifted_action", n);
-    const std::vector<int> dirichlet = owned_dirichlet(boundary_.dirichlet_dofs, distribution_->num_owned_unknowns());
-    if (settings_.preconditioner == PreconditionerType::block_jacobi)
-      distributed_jacobi_ =
-          std::make_unique<DistributedBlockJacobi>(distribution_->communicator(), distribution_->partition(), dirichlet);
-    if (settings_.preconditioner == PreconditionerType::ilu0 || settings_.preconditioner == PreconditionerType::multigrid)
-      additive_schwarz_ = std::make_unique<AdditiveSchwarz>(
-          distribution_->communicator(), distribution_->partition(), local_mesh, dirichlet,
-          settings_.preconditioner == PreconditionerType::ilu0 ? SubdomainSolver::ilu0 : SubdomainSolver::multigrid);
-  } else {
-    if (settings_.preconditioner == PreconditionerType::ilu0 || settings_.preconditioner == PreconditionerType::multigrid) {
-      matrix_graph_ = build_fluid_matrix_graph(mesh);
-      matrix_values_ = Vector("rouleau::FluidSolver::matrix_values", matrix_graph_.entries.extent(0));
-    }
-    if (settings_.preconditioner == PreconditionerType::ilu0)
-      ilu0_ = std::make_unique<Ilu0Preconditioner>(matrix_graph_.row_map, matrix_graph_.entries);
-    if (settings_.preconditioner == PreconditionerType::multigrid)
-      multigrid_ = std::make_unique<AggregationMultigrid>(matrix_graph_, fluid_node_strength(mesh));
   }
+  preconditioner_ = exchange_->make_preconditioner(
+      settings_.preconditioner, owned_dirichlet(boundary_.dirichlet_dofs, exchange_->num_owned_unknowns()));
   operator_.impose_dirichlet(state_);
   set_uniform_body_force(fluid.body_force);
 }
 
-int FluidSolver::owned_unknowns() const {
-  return distribution_ ? distribution_->num_owned_unknowns() : num_global_unknowns_;
-}
-
-double FluidSolver::norm(const ConstVector& x) const {
-  return distribution_ ? distribution_->norm(x) : KokkosBlas::nrm2(x);
-}
-
-void FluidSolver::gather_global(const ConstVector& local, const Vector& global) const {
-  if (distribution_ && replicated_nodes_.extent(0) > 0)
-    distribution_->replicate(local, global, replicated_nodes_);
-  else if (distribution_)
-    distribution_->replicate(local, global);
-  else
-    Kokkos::deep_copy(global, local);
-}
-
-void FluidSolver::sum_over_ranks(const Vector& global) const {
-  if (!distribution_) return;
-  if (replicated_nodes_.extent(0) == 0)
-    throw std::logic_error("rouleau::FluidSolver::sum_over_ranks: no replicated nodes (set_replicated_nodes)");
-  distribution_->sum_at_nodes(global, replicated_nodes_);
+void FluidSolver::gather_global(const ConstVector& local, const Vector& global,
+                                const Kokkos::View<const int*>& nodes) const {
+  exchange_->replicate(local, global, nodes);
 }
 
 std::vector<double> FluidSolver::global_values(const ConstVector& local) const {
-  if (!distribution_) return to_flat_vector(local);
+  if (!exchange_->spans_ranks()) return to_flat_vector(local);
   Vector global("rouleau::FluidSolver::global_values", num_global_unknowns_);
-  distribution_->replicate(local, global);
+  exchange_->replicate(local, global);
   return to_flat_vector(global);
 }
 
@@ -243,10 +197,7 @@ void FluidSolver::set_body_force(const std::vector<double>& force_density) {
   for (int i = 0; i < nodes; ++i)
     for (int d = 0; d < 3; ++d) host(4 * i + d) = force_density[3 * i + d] * scale;
   Kokkos::deep_copy(global, host);
-  if (distribution_)
-    distribution_->localize(global, body_force_);
-  else
-    Kokkos::deep_copy(body_force_, global);
+  exchange_->localize(global, body_force_);
 }
 
 void FluidSolver::set_uniform_body_force(const std::array<double, 3>& force_density) {
@@ -286,11 +237,13 @@ void FluidSolver::prescribe_boundary_velocity(
   operator_.impose_dirichlet(state_);
 }
 
-std::vector<std::array<double, 3>> FluidSolver::boundary_forces(const std::vector<std::string>& sides) const {
+std::vector<std::array<double, 3>> FluidSolver::boundary_forces(const std::vector<std::string>& sides,
+                                                                const ImmersedTerms& immersed) {
   const FluidMesh& mesh = mesh_;
   // One residual without constraint rows and one host copy for all the sides asked.
+  load_immersed_forces(immersed);
   operator_.residual(state_, state_, residual_, false);
-  add_immersed_stiffness(state_, residual_, false, StiffnessArgument::state);
+  add_immersed_stiffness(immersed, state_, residual_, false, StiffnessArgument::state);
   auto r = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), residual_);
   std::vector<std::array<double, 3>> forces;
   for (const std::string& side : sides) {
@@ -303,11 +256,11 @@ std::vector<std::array<double, 3>> FluidSolver::boundary_forces(const std::vecto
     // Across ranks each node is counted by its owner (its residual is whole there).
     std::array<double, 3> force{0.0, 0.0, 0.0};
     for (int global_node : dof_nodes) {
-      const int n = distribution_ ? distribution_->local_node(global_node) : global_node;
-      if (distribution_ && (n < 0 || n >= distribution_->partition().num_owned_nodes)) continue;
+      const int n = exchange_->local_node(global_node);
+      if (n < 0 || n >= exchange_->num_owned_nodes()) continue;
       for (int d = 0; d < 3; ++d) force[d] -= r(4 * n + d) * scales_.force();
     }
-    if (distribution_) distribution_->communicator().sum(force.data(), 3);
+    exchange_->sum(force.data(), 3);
     forces.push_back(force);
   }
   return forces;
@@ -351,7 +304,7 @@ std::array<double, 5> FluidSolver::velocity_integrals() const {
   std::array<double, 5> integrals = visit_fluid_element(operator_.mesh().element_type, [&](auto element) {
     return integrate_velocity<decltype(element)>(operator_, state_);
   });
-  if (distribution_) distribution_->communicator().sum(integrals.data(), 5);
+  exchange_->sum(integrals.data(), 5);
   return integrals;
 }
 
@@ -367,53 +320,35 @@ double FluidSolver::kinetic_energy() const {
   return 0.5 * density_ * velocity_integrals()[4] * U * U * L * L * L;
 }
 
-void FluidSolver::set_immersed_forces(const ConstVector& nodal_forces) {
-  if (immersed_load_.extent(0) == 0) {
-    immersed_load_ = Vector("rouleau::FluidSolver::immersed_load", state_.extent(0));
-    operator_.set_immersed_load(immersed_load_);
+void FluidSolver::load_immersed_forces(const ImmersedTerms& immersed) {
+  if (immersed.loads.extent(0) == 0) {
+    operator_.set_immersed_load(ConstVector());
+    return;
   }
+  if (immersed_load_.extent(0) == 0)
+    immersed_load_ = Vector("rouleau::FluidSolver::immersed_load", state_.extent(0));
   // b = F / (P L²), the forces in the residual's scale; across ranks, at the rank's nodes.
   const auto load = immersed_load_;
   const double inverse_force_scale = 1.0 / scales_.force();
-  ConstVector forces = nodal_forces;
-  if (distribution_) {
-    distribution_->localize(nodal_forces, load);
-    forces = load;
-  }
+  exchange_->localize(immersed.loads, load);
   Kokkos::parallel_for(
-      "rouleau::FluidSolver::set_immersed_forces", Kokkos::RangePolicy<ExecSpace>(0, load.extent(0)),
-      KOKKOS_LAMBDA(const int i) { load(i) = inverse_force_scale * forces(i); });
+      "rouleau::FluidSolver::immersed_load", Kokkos::RangePolicy<ExecSpace>(0, load.extent(0)),
+      KOKKOS_LAMBDA(const int i) { load(i) *= inverse_force_scale; });
+  operator_.set_immersed_load(immersed_load_);
+  operator_.set_immersed_load_in_stabilization(immersed.loads_in_stabilization);
 }
 
-void FluidSolver::total_velocity(const Vector& out) const {
+void FluidSolver::total_velocity(const Vector& out, const ImmersedTerms& immersed) {
+  load_immersed_forces(immersed);
   operator_.subscale_velocity(state_, out);
   KokkosBlas::axpy(1.0, state_, out);
 }
 
-void FluidSolver::set_immersed_forces_in_stabilization(bool in_stabilization) {
-  operator_.set_immersed_load_in_stabilization(in_stabilization);
-}
-
-void FluidSolver::set_immersed_stiffness(const LinearOperator* stiffness, bool moves_with_subscale) {
-  immersed_stiffness_ = stiffness;
-  stiffness_moves_with_subscale_ = moves_with_subscale;
-  if (stiffness && stiffness_action_.extent(0) == 0) {
-    stiffness_action_ = Vector("rouleau::FluidSolver::stiffness_action", state_.extent(0));
-    stiffness_stabilization_ = Vector("rouleau::FluidSolver::stiffness_stabilization", state_.extent(0));
-    if (distribution_) {
-      global_carrier_ = Vector("rouleau::FluidSolver::global_carrier", num_global_unknowns_);
-      global_action_ = Vector("rouleau::FluidSolver::global_action", num_global_unknowns_);
-    }
-  }
-  if (stiffness && moves_with_subscale && stiffness_carrier_.extent(0) == 0)
-    stiffness_carrier_ = Vector("rouleau::FluidSolver::stiffness_carrier", state_.extent(0));
-}
-
-void FluidSolver::add_immersed_stiffness(const ConstVector& x, const Vector& y, bool skip_constrained,
-                                         StiffnessArgument argument) const {
-  if (!immersed_stiffness_) return;
+void FluidSolver::add_immersed_stiffness(const ImmersedTerms& immersed, const ConstVector& x, const Vector& y,
+                                         bool skip_constrained, StiffnessArgument argument) const {
+  if (!immersed.stiffness) return;
   ConstVector carrier = x;
-  if (stiffness_moves_with_subscale_) {
+  if (immersed.stiffness_moves_with_subscale) {
     // c = x + u'(x) for the state, x + u'_x (τ frozen at the state) for a direction.
     if (argument == StiffnessArgument::state)
       operator_.subscale_velocity(x, stiffness_carrier_);
@@ -424,13 +359,13 @@ void FluidSolver::add_immersed_stiffness(const ConstVector& x, const Vector& y, 
   }
   // Ŝ acts on the whole mesh's vectors: across ranks, on the carrier replicated from
   // every rank's owned entries, its action taken back at the rank's nodes.
-  if (distribution_) {
-    gather_global(carrier, global_carrier_);
-    immersed_stiffness_->apply(global_carrier_, global_action_);
-    if (immersed_shares_) sum_over_ranks(global_action_);
-    distribution_->localize(global_action_, stiffness_action_);
+  if (exchange_->spans_ranks()) {
+    gather_global(carrier, global_carrier_, immersed.cell_support_nodes);
+    immersed.stiffness->apply(global_carrier_, global_action_);
+    if (immersed.stiffness_is_shared) exchange_->sum_at_nodes(global_action_, immersed.cell_support_nodes);
+    exchange_->localize(global_action_, stiffness_action_);
   } else {
-    immersed_stiffness_->apply(carrier, stiffness_action_);
+    immersed.stiffness->apply(carrier, stiffness_action_);
   }
   // Ŝx is minus the change of the immersed loads; that change enters the stabilization's
   // strong residual as the loads do: Ŝx − P(Ŝx), P = FluidOperator::load_stabilization.
@@ -442,49 +377,29 @@ void FluidSolver::add_immersed_stiffness(const ConstVector& x, const Vector& y, 
   KokkosBlas::axpy(1.0, stiffness_action_, y);
 }
 
+void FluidSolver::allocate_stiffness_scratch(const ImmersedTerms& immersed) {
+  if (stiffness_action_.extent(0) == 0) {
+    stiffness_action_ = Vector("rouleau::FluidSolver::stiffness_action", state_.extent(0));
+    stiffness_stabilization_ = Vector("rouleau::FluidSolver::stiffness_stabilization", state_.extent(0));
+    if (exchange_->spans_ranks()) {
+      global_carrier_ = Vector("rouleau::FluidSolver::global_carrier", num_global_unknowns_);
+      global_action_ = Vector("rouleau::FluidSolver::global_action", num_global_unknowns_);
+    }
+  }
+  if (immersed.stiffness_moves_with_subscale && stiffness_carrier_.extent(0) == 0)
+    stiffness_carrier_ = Vector("rouleau::FluidSolver::stiffness_carrier", state_.extent(0));
+}
+
 void FluidSolver::rebuild_preconditioner() {
   ProfilingRegion region("rouleau::FluidSolver::preconditioner");
-  if (distributed_jacobi_) {
-    distributed_jacobi_->factor(operator_, state_);
-    return;
-  }
-  if (additive_schwarz_) {
-    additive_schwarz_->factor(operator_, state_);
-    return;
-  }
-  switch (settings_.preconditioner) {
-    case PreconditionerType::block_jacobi:
-      operator_.diagonal_blocks(state_, blocks_);
-      block_jacobi_.factor(blocks_);
-      break;
-    case PreconditionerType::ilu0:
-      operator_.assemble_jacobian(state_, matrix_graph_, matrix_values_);
-      ilu0_->factor(matrix_values_);
-      break;
-    case PreconditionerType::multigrid:
-      operator_.assemble_jacobian(state_, matrix_graph_, matrix_values_);
-      multigrid_->set_values(matrix_values_);
-      break;
-    case PreconditionerType::none:
-      break;
-  }
+  preconditioner_->factor(operator_, state_);
 }
 
-const Preconditioner& FluidSolver::preconditioner() const {
-  if (distributed_jacobi_) return *distributed_jacobi_;
-  if (additive_schwarz_) return *additive_schwarz_;
-  switch (settings_.preconditioner) {
-    case PreconditionerType::block_jacobi: return block_jacobi_;
-    case PreconditionerType::ilu0: return *ilu0_;
-    case PreconditionerType::multigrid: return *multigrid_;
-    case PreconditionerType::none: break;
-  }
-  return identity_;
-}
-
-FluidSolveReport FluidSolver::solve(const ConstVector& history) {
+FluidSolveReport FluidSolver::solve(const ConstVector& history, const ImmersedTerms& immersed) {
   ProfilingRegion region("rouleau::FluidSolver::solve");
   FluidSolveReport report;
+  load_immersed_forces(immersed);
+  if (immersed.stiffness) allocate_stiffness_scratch(immersed);
   const bool linear = stokes_;
   operator_.set_sources(history, body_force_);
   operator_.impose_dirichlet(state_);
@@ -495,11 +410,11 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history) {
   if (linear) {
     Kokkos::deep_copy(correction_, 0.0);
     operator_.residual(correction_, correction_, residual_);
-    rhs_norm = norm(residual_);
+    rhs_norm = exchange_->norm(residual_);
   }
   operator_.residual(state_, state_, residual_);
-  add_immersed_stiffness(state_, residual_, true, StiffnessArgument::state);
-  double residual_norm = norm(residual_);
+  add_immersed_stiffness(immersed, state_, residual_, true, StiffnessArgument::state);
+  double residual_norm = exchange_->norm(residual_);
   report.initial_residual = residual_norm;
   const double target = linear ? std::fmax(settings_.newton_atol, settings_.gmres_rtol * rhs_norm)
                                : std::fmax(settings_.newton_atol, settings_.newton_rtol * residual_norm);
@@ -512,7 +427,7 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history) {
       rebuild_preconditioner();
       preconditioner_current_ = true;
     }
-    const Preconditioner& M = preconditioner();
+    const Preconditioner& M = *preconditioner_;
     // J δ = −R, solved to the Eisenstat–Walker forcing term η_k (choice 2, γ = 0.9, α = 2):
     // η_k = γ (‖R_k‖/‖R_{k−1}‖)², safeguarded by γ η_{k−1}² when that exceeds 0.1, capped at
     // 0.1, and no tighter than needed to reach the Newton target. An affine (Stokes)
@@ -530,31 +445,31 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history) {
     KokkosBlas::axpby(-1.0, residual_, 0.0, residual_);
     Kokkos::deep_copy(correction_, 0.0);
     FluidJacobian::AddStiffness add_stiffness;
-    if (immersed_stiffness_)
-      add_stiffness = [this](const ConstVector& x, const Vector& y) {
-        add_immersed_stiffness(x, y, true, StiffnessArgument::direction);
+    if (immersed.stiffness)
+      add_stiffness = [this, &immersed](const ConstVector& x, const Vector& y) {
+        add_immersed_stiffness(immersed, x, y, true, StiffnessArgument::direction);
       };
     FluidJacobian J(operator_, state_, state_gradient_, linear, add_stiffness,
-                    {distribution_, lifted_direction_, lifted_action_});
+                    {exchange_->spans_ranks() ? exchange_ : nullptr, lifted_direction_, lifted_action_});
     // GMRES on the owned unknowns (all of them on one rank); the copies follow.
-    const auto owned = std::make_pair(0, owned_unknowns());
+    const auto owned = std::make_pair(0, exchange_->num_owned_unknowns());
     const GmresResult g =
         gmres_.solve(J, M, Kokkos::subview(residual_, owned), Kokkos::subview(correction_, owned), forcing);
-    if (distribution_) distribution_->update_copies(correction_);
+    exchange_->update_copies(correction_);
     report.gmres_iterations += g.iterations;
     ++report.newton_iterations;
     KokkosBlas::axpby(1.0, correction_, 1.0, state_);
     operator_.residual(state_, state_, residual_);
-    add_immersed_stiffness(state_, residual_, true, StiffnessArgument::state);
-    residual_norm = norm(residual_);
+    add_immersed_stiffness(immersed, state_, residual_, true, StiffnessArgument::state);
+    residual_norm = exchange_->norm(residual_);
     // ‖δ‖ ≤ newton_step_rtol ‖U‖: the update no longer changes the state, so the residual
     // is at its round-off floor (converged, even if above the residual target).
     if (!linear && settings_.newton_step_rtol > 0.0 &&
-        norm(correction_) <= settings_.newton_step_rtol * norm(state_))
+        exchange_->norm(correction_) <= settings_.newton_step_rtol * exchange_->norm(state_))
       report.stalled_at_round_off = true;
     if (spdlog::should_log(spdlog::level::debug)) {
       double momentum = 0.0, continuity = 0.0;
-      block_norms(residual_, owned_unknowns(), distribution_, momentum, continuity);
+      block_norms(residual_, exchange_->num_owned_unknowns(), *exchange_, momentum, continuity);
       spdlog::debug("Newton {}: GMRES {} iterations to {:.1e} ({}), residual {:.3e} (momentum {:.3e}, continuity "
                     "{:.3e}), target {:.3e}",
                     report.newton_iterations, g.iterations, forcing, g.converged ? "converged" : "not converged",
@@ -573,7 +488,8 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history) {
     }
     if (linear) break;  // affine residual: one Krylov solve is the solution
   }
-  block_norms(residual_, owned_unknowns(), distribution_, report.momentum_residual, report.continuity_residual);
+  block_norms(residual_, exchange_->num_owned_unknowns(), *exchange_, report.momentum_residual,
+              report.continuity_residual);
   report.converged = report.failure.empty() && (residual_norm <= target || linear || report.stalled_at_round_off);
   if (report.failure.empty() && !report.converged) {
     std::ostringstream msg;
@@ -597,12 +513,12 @@ void FluidSolver::set_time_coefficients(double mass_coefficient, double inverse_
   operator_.set_coefficients(c);
 }
 
-FluidSolveReport FluidSolver::solve_steady() {
+FluidSolveReport FluidSolver::solve_steady(const ImmersedTerms& immersed) {
   set_time_coefficients(0.0, 0.0);
-  return solve(ConstVector());
+  return solve(ConstVector(), immersed);
 }
 
-FluidSolveReport FluidSolver::advance(double dt, TimeScheme scheme) {
+FluidSolveReport FluidSolver::advance(double dt, TimeScheme scheme, const ImmersedTerms& immersed) {
   // BDF: u_t ≈ (α0 u^{n+1} + α1 u^n + α2 u^{n−1}) / Δt, in scaled time Δt̂ = Δt U/L.
   const double dt_scaled = dt * scales_.velocity / scales_.length;
   const bool bdf2 = scheme == TimeScheme::bdf2 && steps_ > 0;
@@ -616,7 +532,7 @@ FluidSolveReport FluidSolver::advance(double dt, TimeScheme scheme) {
   // The starting guess: U^n extrapolated linearly in time, 2 U^n − U^{n−1} (U^n on the first
   // step). It only shortens the solve: the solution does not depend on it.
   if (steps_ > 0 && bdf2) KokkosBlas::axpby(-1.0, older_state_, 2.0, state_);
-  FluidSolveReport report = solve(history_);
+  FluidSolveReport report = solve(history_, immersed);
   if (report.converged) {
     time_ += dt;
     ++steps_;
@@ -638,10 +554,7 @@ void FluidSolver::restore_state(const CheckpointData& data) {
   const std::pair<const char*, Vector> entries[] = {{"fluid/state", state_}, {"fluid/previous_state", previous_state_}};
   for (const auto& [name, local] : entries) {
     from_flat_vector(data.real(name, n), global, name);
-    if (distribution_)
-      distribution_->localize(global, local);
-    else
-      Kokkos::deep_copy(local, global);
+    exchange_->localize(global, local);
   }
   time_ = data.real("fluid/time", 1).front();
   steps_ = static_cast<int>(data.integer("fluid/steps", 1).front());

@@ -6,29 +6,24 @@
 // In the Stokes limit the residual is affine: one Krylov solve per step.
 // Time stepping: backward Euler or BDF2 (BE on the first step), or a steady solve.
 //
-// Across ranks (a FluidDistribution, issue 10) each rank solves on its part of the mesh:
-// its operator completes every element sum across ranks (node sums), GMRES runs on the
-// owned unknowns with its reductions over all ranks, and the preconditioner is point-block
-// Jacobi across ranks (block_jacobi, the same iterates as one rank) or additive Schwarz
-// with ILU(0) or the multigrid per rank (AdditiveSchwarz, for ilu0 and multigrid: the
-// answer agrees with one rank's to the solver's tolerance). What the solver takes and gives in the global
-// numbering says so; the rest is the rank's local vectors (state(), total_velocity()).
+// The ranks are known only through a FluidExchange (fluid/fluid_exchange.hpp), the
+// identity on one rank: each rank solves on its part of the mesh, its operator completes
+// every element sum across ranks, GMRES runs on the owned unknowns with its reductions
+// over all ranks, and the exchange provides the preconditioner. What the solver takes and
+// gives in the global numbering says so; the rest is the rank's local vectors (state(),
+// total_velocity()).
 #include <Kokkos_Core.hpp>
 #include <functional>
 #include <memory>
 #include <string>
 
 #include "config/case_config.hpp"
-#include "distributed/distributed_fluid_operator.hpp"
-#include "distributed/fluid_distribution.hpp"
-#include "distributed/additive_schwarz.hpp"
 #include "fluid/boundary_conditions.hpp"
+#include "fluid/fluid_exchange.hpp"
 #include "fluid/fluid_operator.hpp"
-#include "fluid/fluid_matrix.hpp"
+#include "fluid/fluid_preconditioner.hpp"
+#include "fluid/immersed_terms.hpp"
 #include "io/checkpoint_file.hpp"
-#include "solver/block_jacobi.hpp"
-#include "solver/aggregation_multigrid.hpp"
-#include "solver/ilu0_preconditioner.hpp"
 #include "solver/gmres.hpp"
 
 namespace rouleau {
@@ -47,47 +42,28 @@ struct FluidSolveReport {
 class FluidSolver {
  public:
   // `stokes`: drop convection (the Stokes limit). Scales from derive_quantities().
-  // `distribution`: the ranks the solve is split across (it must outlive the solver), or
+  // `exchange`: the ranks the solve is split across (it must outlive the solver), or
   // null for one rank; `mesh` is the whole mesh either way.
   FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid, const std::vector<FluidBoundary>& boundaries,
               const SolverConfig& settings, const FluidScales& scales, bool stokes,
-              const FluidDistribution* distribution = nullptr);
+              const FluidExchange* exchange = nullptr);
   // A box's six sides.
   FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid, const std::array<BoundaryConfig, 6>& sides,
               const SolverConfig& settings, const FluidScales& scales, bool stokes)
       : FluidSolver(mesh, fluid, box_boundaries(sides), settings, scales, stokes) {}
 
-  // Solves the steady equations from the current state.
-  FluidSolveReport solve_steady();
-  // Advances by dt [s] with the given scheme (BDF2 falls back to BE on the first step).
-  FluidSolveReport advance(double dt, TimeScheme scheme);
+  // Solves the steady equations from the current state, with the cells' `immersed` terms.
+  FluidSolveReport solve_steady(const ImmersedTerms& immersed = {});
+  // Advances by dt [s] with the given scheme (BDF2 falls back to BE on the first step),
+  // with the cells' `immersed` terms (their spread forces, and their linearized stiffness in
+  // the semi-implicit coupling).
+  FluidSolveReport advance(double dt, TimeScheme scheme, const ImmersedTerms& immersed = {});
 
   // The body force density field at the dof nodes [pN/μm³], size 3·num_dof_nodes of the
   // whole mesh, host.
   void set_body_force(const std::vector<double>& force_density);
   // Constant body force density everywhere [pN/μm³].
   void set_uniform_body_force(const std::array<double, 3>& force_density);
-
-  // Nodal forces [pN] on the fluid's unknowns in the global numbering (num_global_unknowns(),
-  // node-interleaved like the state, velocity entries read): the cells' forces spread by RKPM (paper eq. 16). They enter the
-  // momentum residual as nodal loads (the exact transpose of interpolation) and, when
-  // turned on, the stabilization's strong residual as the force density they stand for
-  // (FluidOperator::load_stabilization; without it PSPG drives a flux τ ∇p through cells).
-  void set_immersed_forces(const ConstVector& nodal_forces);
-  void set_immersed_forces_in_stabilization(bool in_stabilization);
-
-  // The semi-implicit coupling's linearized cell forces: an operator Ŝ on the scaled state
-  // whose action Ŝ U enters the residual, R(U) = R_fluid(U) + Ŝ U, and so the Jacobian,
-  // J = J_fluid + Ŝ (zero on the constrained rows; Ŝ acts on global vectors), with the stabilization's share
-  // −P(Ŝ U) of that change of the loads when the immersed forces are in the
-  // stabilization. ImmersedCoupling passes Ŝ U = −S K I (Δt U) / (P L²)
-  // (coupling/cell_stiffness.hpp); null turns it off. The operator must outlive its use;
-  // the preconditioner does not see it. When the cells move with the whole velocity
-  // u_h + u' (`moves_with_subscale`), Ŝ acts on that instead of on U's velocity: the
-  // residual gains Ŝ (U + u'(U)) and the Jacobian Ŝ (δ + u'_δ), u'_δ the derivative of u'
-  // along δ with τ frozen (FluidOperator::subscale_velocity_action), so the forces the
-  // fluid solves with are those of the motion total_velocity() gives the cells.
-  void set_immersed_stiffness(const LinearOperator* stiffness, bool moves_with_subscale = false);
 
   // Sets the velocity everywhere to velocity(x) [μm/s] at the nodes x [μm] (an initial
   // condition; Dirichlet values are imposed again afterwards).
@@ -99,12 +75,15 @@ class FluidSolver {
 
   // Forces [pN] that the fluid exerts on each of the boundary `sides` (walls), from the
   // consistent nodal reactions: the residual at the constrained nodes before the
-  // constraint rows (one residual evaluation for all sides).
-  std::vector<std::array<double, 3>> boundary_forces(const std::vector<std::string>& sides) const;
+  // constraint rows (one residual evaluation for all sides), with the cells' spread forces
+  // `immersed.loads` (those the last step's fluid felt).
+  std::vector<std::array<double, 3>> boundary_forces(const std::vector<std::string>& sides,
+                                                     const ImmersedTerms& immersed = {});
   // The fluid's whole velocity u_h + u' (scaled, node-interleaved like the state; the
   // pressure entries are the state's): u' = −τ_M r, PSPG's subscale velocity at the
-  // current state, projected onto the nodes (FluidOperator::subscale_velocity).
-  void total_velocity(const Vector& out) const;
+  // current state with the cells' `immersed` loads, projected onto the nodes
+  // (FluidOperator::subscale_velocity).
+  void total_velocity(const Vector& out, const ImmersedTerms& immersed = {});
   // Volume average of the velocity [μm/s].
   std::array<double, 3> mean_velocity() const;
   // Kinetic energy of the fluid ½ ρ ∫ |u|² dV [pN·μm].
@@ -113,21 +92,13 @@ class FluidSolver {
   std::array<double, 5> velocity_integrals() const;
 
   // The unknowns of the whole mesh, and a global copy of a local vector (state(),
-  // total_velocity()): the same on every rank (FluidDistribution::replicate).
+  // total_velocity()): the same on every rank (FluidExchange::replicate); across
+  // ranks at the global dof nodes `nodes` alone when given (the cells' supports: the
+  // other entries of `global` are left as they were).
   int num_global_unknowns() const { return num_global_unknowns_; }
-  void gather_global(const ConstVector& local, const Vector& global) const;
-  // Across ranks: the global dof nodes whose values the cells read and load (their RKPM
-  // supports, ascending): gather_global() and the immersed stiffness then replicate these
-  // alone, and leave the other entries of their global vectors as they were. Empty (the
-  // default): every node.
-  void set_replicated_nodes(const Kokkos::View<const int*>& nodes) { replicated_nodes_ = nodes; }
-  // Across ranks, when each rank computes a share of the cells (ImmersedCoupling::
-  // share_cells): global ← Σ_ranks global at the replicated nodes, for the forces the
-  // rank's cells spread; and Ŝ's action is then summed the same way inside the solve.
-  void sum_over_ranks(const Vector& global) const;
-  void set_immersed_shares(bool shares) { immersed_shares_ = shares; }
-  // The ranks, or null on one rank.
-  const FluidDistribution* distribution() const { return distribution_; }
+  void gather_global(const ConstVector& local, const Vector& global, const Kokkos::View<const int*>& nodes = {}) const;
+  // The ranks (the identity's exchange on one rank).
+  const FluidExchange& exchange() const { return *exchange_; }
 
   double time() const { return time_; }
   int steps() const { return steps_; }
@@ -156,7 +127,12 @@ class FluidSolver {
   void velocity_and_pressure(std::vector<double>& velocity, std::vector<double>& pressure) const;
 
  private:
-  FluidSolveReport solve(const ConstVector& history);
+  FluidSolveReport solve(const ConstVector& history, const ImmersedTerms& immersed);
+  // The operator's immersed load b = F / (P L²) from `immersed.loads` (at the rank's
+  // nodes), or none.
+  void load_immersed_forces(const ImmersedTerms& immersed);
+  // The scratch vectors of add_immersed_stiffness, allocated at the first solve with cells.
+  void allocate_stiffness_scratch(const ImmersedTerms& immersed);
   // The operator's coefficients for a BDF mass coefficient α0/Δt and 1/Δt (scaled; 0, 0: steady).
   void set_time_coefficients(double mass_coefficient, double inverse_dt);
   // y += Ŝ c(x), the immersed stiffness's action on the velocity c(x) the cells move
@@ -164,48 +140,33 @@ class FluidSolver {
   // rows that hold the boundary conditions). c(x) = x, or with the subscale velocity
   // x + u'(x) for the state (a residual) and x + u'_x for a direction (a Jacobian action).
   enum class StiffnessArgument { state, direction };
-  void add_immersed_stiffness(const ConstVector& x, const Vector& y, bool skip_constrained,
-                              StiffnessArgument argument) const;
+  void add_immersed_stiffness(const ImmersedTerms& immersed, const ConstVector& x, const Vector& y,
+                              bool skip_constrained, StiffnessArgument argument) const;
   // Rebuilds the configured preconditioner from the Jacobian at the current state.
   void rebuild_preconditioner();
-  const Preconditioner& preconditioner() const;
-  // The unknowns GMRES works on: the rank's owned ones (all on one rank).
-  int owned_unknowns() const;
-  // ‖x‖ over the unknowns of the whole mesh (each once).
-  double norm(const ConstVector& x) const;
   // The global vector of a local one as a flat host array (checkpoints).
   std::vector<double> global_values(const ConstVector& local) const;
 
-  const FluidDistribution* distribution_;  // null on one rank
-  FluidMesh mesh_;                         // the whole mesh
+  FluidMesh mesh_;                                   // the whole mesh
+  std::unique_ptr<SingleRankExchange> one_rank_;     // the exchange on one rank, or null
+  const FluidExchange* exchange_;                    // one_rank_ or the caller's
   int num_global_unknowns_;
   FluidOperator operator_;                 // on the rank's part of the mesh
   FluidScales scales_;
   SolverConfig settings_;
   bool stokes_;
   FluidBoundaryConditions boundary_;
-  Vector state_, previous_state_, older_state_, history_, body_force_, correction_, blocks_;
+  Vector state_, previous_state_, older_state_, history_, body_force_, correction_;
   double density_;                 // ρ [pN·s²/μm⁴]
-  Vector immersed_load_;           // the immersed forces (scaled), when there are cells
-  const LinearOperator* immersed_stiffness_ = nullptr;  // Ŝ of the semi-implicit coupling, or null
+  Vector immersed_load_;           // b of the call's immersed forces (scaled; scratch)
   Vector stiffness_action_, stiffness_stabilization_;  // Ŝ x and P(Ŝ x) (scratch)
-  bool stiffness_moves_with_subscale_ = false;         // Ŝ acts on x + u' (set_immersed_stiffness)
   Vector stiffness_carrier_;                           // x + u' (scratch)
   Vector residual_;  // also scratch for boundary_forces() (const)
   Vector state_gradient_;  // G(U) during a Krylov solve
-  BlockJacobi block_jacobi_;
-  IdentityPreconditioner identity_;
-  FluidMatrixGraph matrix_graph_;               // ILU(0), multigrid: the assembled Jacobian's graph,
-  Vector matrix_values_;                        // its values,
-  std::unique_ptr<Ilu0Preconditioner> ilu0_;    // and the factorization
-  std::unique_ptr<AggregationMultigrid> multigrid_;  // or the hierarchy
-  // Across ranks: the preconditioners on the owned unknowns, and scratch for the
-  // Jacobian's lift of owned vectors to local ones and for Ŝ's global vectors.
-  std::unique_ptr<DistributedBlockJacobi> distributed_jacobi_;
-  std::unique_ptr<AdditiveSchwarz> additive_schwarz_;
+  std::unique_ptr<FluidPreconditioner> preconditioner_;  // on the owned unknowns
+  // Across ranks: scratch for the Jacobian's lift of owned vectors to local ones, and for
+  // Ŝ's global vectors.
   Vector lifted_direction_, lifted_action_, global_carrier_, global_action_;
-  Kokkos::View<const int*> replicated_nodes_;  // set_replicated_nodes()
-  bool immersed_shares_ = false;               // set_immersed_shares()
   Gmres gmres_;
   bool preconditioner_current_ = false;  // Stokes: J is constant while dt is
   double last_mass_coefficient_ = -1.0;

@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "run/instantiate.hpp"
-#include "run/profiling_region.hpp"
+#include "util/instantiate.hpp"
+#include "util/profiling_region.hpp"
 
 namespace rouleau {
 

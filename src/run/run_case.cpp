@@ -38,9 +38,9 @@
 #endif
 #include "coupling/immersed_coupling.hpp"
 #include "run/run_diagnostics.hpp"
-#include "run/scene.hpp"
+#include "config/scene_plan.hpp"
 #include "run/simulation.hpp"
-#include "run/stage_times.hpp"
+#include "util/stage_times.hpp"
 #include "util/errors.hpp"
 
 namespace rouleau {
@@ -178,7 +178,7 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
 
   Simulation simulation(config, default_mesh_cache_dir(), &ranks);
   StageTimes& times = simulation.times();
-  const FluidSolver& solver = simulation.fluid();
+  FluidSolver& solver = simulation.fluid();
   const CaseCells& cells = simulation.cells();
   ImmersedCoupling* coupling = simulation.coupling();
   std::cerr << "fluid mesh: " << simulation.mesh().num_nodes << " nodes, " << simulation.mesh().num_elements << " "
@@ -194,7 +194,7 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
   if (Kokkos::DefaultHostExecutionSpace().concurrency() > 1 && omp_get_proc_bind() == omp_proc_bind_false)
     std::cerr << "threads not bound to cores (to bind them, as for timings: OMP_PROC_BIND=spread OMP_PLACES=threads)\n";
 #endif
-  if (const FluidDistribution* distribution = simulation.fluid().distribution())
+  if (const FluidDistribution* distribution = simulation.distribution())
     std::cerr << "fluid split across " << ranks.size() << " ranks: rank 0 owns "
               << distribution->partition().elements.size() << " elements and "
               << distribution->partition().num_owned_nodes << " of its " << distribution->partition().num_local_nodes()
@@ -273,9 +273,12 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
   auto wall_seconds = [&] { return earlier_wall_seconds + std::chrono::duration<double>(Clock::now() - run_start).count(); };
   auto add_diagnostics_row = [&] {
     std::vector<double> row =
-        fluid_diagnostics.row(solver, simulation.steps(), simulation.last_report().fluid, wall_seconds());
+        fluid_diagnostics.row(solver, simulation.steps(), simulation.last_report().fluid, wall_seconds(),
+                              coupling ? coupling->state().felt_terms : ImmersedTerms{});
     if (cells.population) {
-      const std::vector<double> cell_row = times.time("cell diagnostics", [&] { return cell_diagnostics.row(cells); });
+      const CellForceState& forces = simulation.cell_forces(true);
+      const std::vector<double> cell_row =
+          times.time("cell diagnostics", [&] { return cell_diagnostics.row(cells, forces); });
       row.insert(row.end(), cell_row.begin(), cell_row.end());
     }
     if (coupling) {
@@ -287,14 +290,11 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
 
   std::vector<double> velocity, pressure;
   CellPopulation::HostFields cell_fields;
-  // The interaction forces per cell node (device, and a node-major host copy for output).
-  CellPopulation::NodeVectors node_interaction_forces;
+  // The interaction forces per cell node (a node-major host copy for output).
   Kokkos::View<double* [3], Kokkos::LayoutRight, Kokkos::HostSpace> host_interaction_forces;
-  if (cells.interaction) {
-    node_interaction_forces = CellPopulation::NodeVectors("rouleau::run::interaction_forces", cells.population->num_nodes());
+  if (cells.interaction)
     host_interaction_forces = decltype(host_interaction_forces)("rouleau::run::interaction_forces_host",
                                                                 cells.population->num_nodes());
-  }
   // Every rank takes part (the fluid's fields are gathered); the first writes them.
   auto write_fields = [&] {
     if (!config.output.write_fields) return;
@@ -304,7 +304,8 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
           {FieldView{"velocity_um_s", 3, velocity.data()}, FieldView{"pressure_Pa", 1, pressure.data()}}};
       std::vector<const double*> moved{nullptr};
       if (cells.population) {
-        cells.population->compute_internal_forces();
+        // The forces the step computed at these positions (internal_force is CellForces' elastic).
+        const CellForceState& forces = simulation.cell_forces(false);
         cells.population->copy_fields_to_host(cell_fields);
         // Each rank's share of the cells' forces: the fields are their sums.
         const bool shared = cells.population->work_is_shared();
@@ -314,9 +315,7 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
                          FieldView{"internal_force_pN", 3, cell_fields.internal_force.data()},
                          FieldView{"cell_id", 1, cell_fields.cell_id.data()}});
         if (cells.interaction) {
-          cells.interaction->compute_forces();
-          cells.interaction->copy_forces_to_nodes(node_interaction_forces);
-          Kokkos::deep_copy(host_interaction_forces, node_interaction_forces);
+          Kokkos::deep_copy(host_interaction_forces, forces.interaction);
           if (shared) ranks.sum(host_interaction_forces.data(), static_cast<int>(host_interaction_forces.size()));
           nodal.back().push_back(FieldView{"interaction_force_pN", 3, host_interaction_forces.data()});
         }
@@ -386,8 +385,10 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
       if (log && terminal && options.progress)
         logged_progress.emplace(steps, config.time.end, false, log->file(), ProgressReporter::Settings{0.1, 30.0});
       for (int step = first_step; step <= steps; ++step) {
-        const FluidSolveReport& report = simulation.advance().fluid;
-        if (step % config.output.diagnostics_every_steps == 0 || step == steps) add_diagnostics_row();
+        // A diagnostics row reads the energies the step computes with its forces.
+        const bool diagnostics_row = step % config.output.diagnostics_every_steps == 0 || step == steps;
+        const FluidSolveReport& report = simulation.advance(diagnostics_row).fluid;
+        if (diagnostics_row) add_diagnostics_row();
         if (step % config.output.fields_every_steps == 0 || step == steps) write_fields();
         if (options.progress)
           progress.update(step, simulation.time(), report.newton_iterations, report.gmres_iterations);
@@ -454,9 +455,8 @@ int run_case(const CaseConfig& config, const RunOptions& options) {
   const bool writes_files = ranks.rank() == 0;
   const QuietOtherRanks quiet(ranks);
   const DerivedQuantities derived = derive_quantities(config);
-  const std::vector<Stage> stages = plan_stages(config, derived);
   if (options.explain) {
-    if (writes_files) std::cout << describe_stages(config, derived, stages);
+    if (writes_files) std::cout << describe_scene(config, derived, plan_scene(config, derived));
     return static_cast<int>(ExitCode::done);
   }
   const std::string out = options.output_dir;

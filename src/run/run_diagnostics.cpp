@@ -28,7 +28,7 @@ std::vector<std::string> FluidDiagnostics::columns() const {
 }
 
 // Flow rates in and out, driving pressure, mean wall shear stress, relative apparent viscosity.
-std::vector<double> FluidDiagnostics::vessel_row(const FluidSolver& solver) const {
+std::vector<double> FluidDiagnostics::vessel_row(FluidSolver& solver, const ImmersedTerms& immersed) const {
   const BoundaryIntegrals& integrals = *boundary_integrals_;
   std::vector<double> velocity, pressure;
   solver.velocity_and_pressure(velocity, pressure);
@@ -36,20 +36,20 @@ std::vector<double> FluidDiagnostics::vessel_row(const FluidSolver& solver) cons
   const double outflow = integrals.flow_rate(velocity, "outlet");
   const double driving_pressure = integrals.mean_pressure(pressure, "inlet") - integrals.mean_pressure(pressure, "outlet");
   // The force the fluid exerts on the wall along the axis, per wall area.
-  const double wall_shear = solver.boundary_forces({"wall"})[0][0] / integrals.area("wall");
+  const double wall_shear = solver.boundary_forces({"wall"}, immersed)[0][0] / integrals.area("wall");
   const double plasma_drop = vessel_poiseuille_drop(config_.vessel.profile, config_.fluid.viscosity, outflow);
   return {inflow, outflow, driving_pressure, wall_shear, plasma_drop != 0.0 ? driving_pressure / plasma_drop : NAN};
 }
 
 // Wall shear stress on the y walls and τ_w / (μ γ̇).
-std::vector<double> FluidDiagnostics::shear_box_row(const FluidSolver& solver) const {
+std::vector<double> FluidDiagnostics::shear_box_row(FluidSolver& solver, const ImmersedTerms& immersed) const {
   const DomainConfig& domain = config_.domain;
   const double area = (domain.upper[0] - domain.lower[0]) * (domain.upper[2] - domain.lower[2]);
   double shear[2] = {NAN, NAN};
   std::vector<std::string> walls;
   for (int k = 0; k < 2; ++k)
     if (domain.boundary[Side::y_min + k].type == BoundaryType::wall) walls.push_back(side_names[Side::y_min + k]);
-  const auto forces = solver.boundary_forces(walls);
+  const auto forces = solver.boundary_forces(walls, immersed);
   for (size_t w = 0; w < walls.size(); ++w) {
     const int k = walls[w] == side_names[Side::y_min] ? 0 : 1;
     // τ_w = μ ∂u_x/∂y at the wall = −n_y F_x / A, with F the force the fluid exerts on the
@@ -67,8 +67,8 @@ std::vector<double> FluidDiagnostics::shear_box_row(const FluidSolver& solver) c
   return {shear[0], shear[1], relative_viscosity};
 }
 
-std::vector<double> FluidDiagnostics::row(const FluidSolver& solver, int step, const FluidSolveReport& report,
-                                          double wall_time) const {
+std::vector<double> FluidDiagnostics::row(FluidSolver& solver, int step, const FluidSolveReport& report,
+                                          double wall_time, const ImmersedTerms& immersed) const {
   const auto u = solver.mean_velocity();
   std::vector<double> values{double(step),
                              solver.time(),
@@ -80,7 +80,7 @@ std::vector<double> FluidDiagnostics::row(const FluidSolver& solver, int step, c
                              u[1],
                              u[2],
                              solver.kinetic_energy()};
-  const std::vector<double> domain_values = boundary_integrals_ ? vessel_row(solver) : shear_box_row(solver);
+  const std::vector<double> domain_values = boundary_integrals_ ? vessel_row(solver, immersed) : shear_box_row(solver, immersed);
   values.insert(values.end(), domain_values.begin(), domain_values.end());
   values.push_back(wall_time);
   return values;
@@ -113,9 +113,8 @@ std::vector<std::string> CellDiagnostics::columns() const {
   return names;
 }
 
-std::vector<double> CellDiagnostics::row(const CaseCells& cells) const {
-  double energies[2] = {cells.population->compute_internal_forces_and_energy(),
-                        cells.interaction ? cells.interaction->compute_forces_and_energy() : 0.0};
+std::vector<double> CellDiagnostics::row(const CaseCells& cells, const CellForceState& forces) const {
+  double energies[2] = {forces.elastic_energy, forces.interaction_energy};
   // Each rank's share of the cells' work: the energies are the sums of the shares.
   if (ranks_ && cells.population->work_is_shared()) ranks_->sum(energies, 2);
   const double elastic = energies[0], interaction = energies[1];

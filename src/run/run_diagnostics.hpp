@@ -15,7 +15,7 @@
 #include "fluid/flow_rates.hpp"
 #include "fluid/fluid_solver.hpp"
 #include "parallel/communicator.hpp"
-#include "run/stage_times.hpp"
+#include "util/stage_times.hpp"
 
 namespace rouleau {
 
@@ -30,18 +30,21 @@ class FluidDiagnostics {
   // `config` and `mesh` must outlive it; a vessel's boundary areas are computed here, once.
   FluidDiagnostics(const CaseConfig& config, const FluidMesh& mesh);
   std::vector<std::string> columns() const;
-  // `wall_time`: seconds since the run started.
-  std::vector<double> row(const FluidSolver& solver, int step, const FluidSolveReport& report, double wall_time) const;
+  // `wall_time`: seconds since the run started. `immersed`: the cells' forces the fluid felt
+  // over the step (ImmersedCoupling::fluid_terms()), for the walls' reactions; none without
+  // cells.
+  std::vector<double> row(FluidSolver& solver, int step, const FluidSolveReport& report, double wall_time,
+                          const ImmersedTerms& immersed = {}) const;
 
  private:
-  std::vector<double> vessel_row(const FluidSolver& solver) const;
-  std::vector<double> shear_box_row(const FluidSolver& solver) const;
+  std::vector<double> vessel_row(FluidSolver& solver, const ImmersedTerms& immersed) const;
+  std::vector<double> shear_box_row(FluidSolver& solver, const ImmersedTerms& immersed) const;
 
   const CaseConfig& config_;
   std::unique_ptr<BoundaryIntegrals> boundary_integrals_;  // vessels
 };
 
-// Energies are computed at the current positions (one extra force evaluation per row).
+// The energies are those the step computed at the current positions (CellForces).
 // With two cells or more (and at most output.cell_gaps_max_cells), each pair's gap and
 // contact area (cells/cell_gaps.hpp; contact: closer than the Morse law's zero-force
 // length r0).
@@ -51,7 +54,7 @@ class CellDiagnostics {
   // energies are summed over the ranks; null on one rank.
   CellDiagnostics(const CaseCells& cells, const CaseConfig& config, const Communicator* ranks = nullptr);
   std::vector<std::string> columns() const;
-  std::vector<double> row(const CaseCells& cells) const;
+  std::vector<double> row(const CaseCells& cells, const CellForceState& forces) const;
 
  private:
   std::vector<double> initial_volumes_;

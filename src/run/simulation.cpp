@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "config/derived.hpp"
 #include "kernels/state_checks.hpp"
@@ -25,7 +26,7 @@ FluidMesh make_case_mesh(const CaseConfig& config, const std::string& mesh_cache
 }
 
 Simulation::Simulation(const CaseConfig& config, const std::string& mesh_cache_dir, const Communicator* ranks)
-    : config_(config), derived_(derive_quantities(config)) {
+    : config_(config), derived_(derive_quantities(config)), plan_(plan_scene(config_, derived_)) {
   const bool several_ranks = ranks && ranks->size() > 1;
   // The first rank makes (and caches) the meshes, the others then read them.
   if (several_ranks && ranks->rank() > 0) ranks->barrier();
@@ -46,10 +47,13 @@ Simulation::Simulation(const CaseConfig& config, const std::string& mesh_cache_d
   });
   // The stencil changes Aδ only by round-off; scene.skip_unneeded_stages = false keeps the
   // element-by-element path for comparisons.
-  fluid_->allow_stencil(config_.scene.skip_unneeded_stages);
+  fluid_->allow_stencil(plan_.stencil);
+  if (cells_.population) cell_forces_ = std::make_unique<CellForces>(*cells_.population, cells_.interaction.get(), config_, plan_);
   // The cells move with the fluid in a time loop; a steady solve keeps them in place.
-  if (cells_.population && config_.time.mode == TimeMode::transient)
-    coupling_ = times_.time("coupling setup", [&] { return std::make_unique<ImmersedCoupling>(*fluid_, cells_, config_); });
+  if (cells_.population && plan_.moves_cells)
+    coupling_ = times_.time("coupling setup", [&] {
+      return std::make_unique<ImmersedCoupling>(*fluid_, cells_, *cell_forces_, config_, plan_);
+    });
   if (coupling_)
     for (const CellMeasures& m : cells_.population->measures()) initial_volumes_.push_back(m.volume);
   if (coupling_ && distribution_) assign_cells_to_ranks();
@@ -112,13 +116,32 @@ void Simulation::check_cell_elements() const {
   diverged(ImmersedCoupling::move_stage, what.str());
 }
 
-const ImmersedCoupling::StepReport& Simulation::advance() {
+const CellForceState& Simulation::cell_forces(const bool with_energies) {
+  if (!cell_forces_) throw std::logic_error("rouleau::Simulation::cell_forces: the case has no cells");
+  cell_forces_->ensure(with_energies, times_);
+  return cell_forces_->state();
+}
+
+void Simulation::set_cell_positions(const Kokkos::View<const double* [3], Kokkos::HostSpace>& positions) {
+  if (!cell_forces_) throw std::logic_error("rouleau::Simulation::set_cell_positions: the case has no cells");
+  const auto& x = cells_.population->positions();
+  if (positions.extent(0) != x.extent(0))
+    throw std::invalid_argument("rouleau::Simulation::set_cell_positions: " + std::to_string(positions.extent(0)) +
+                                " positions for " + std::to_string(x.extent(0)) + " cell nodes");
+  auto mirror = Kokkos::create_mirror_view(x);
+  for (std::size_t n = 0; n < x.extent(0); ++n)
+    for (int d = 0; d < 3; ++d) mirror(n, d) = positions(n, d);
+  Kokkos::deep_copy(x, mirror);
+  cell_forces_->mark_stale();
+}
+
+const ImmersedCoupling::StepReport& Simulation::advance(const bool with_energies) {
   const TimeConfig& time = config_.time;
   // Across ranks a cell's forces are computed by the rank holding its centroid.
   if (coupling_ && distribution_) times_.time("cell ranks", [&] { assign_cells_to_ranks(); });
   if (coupling_) {
     try {
-      last_report_ = coupling_->advance(time.dt, time.scheme, times_);
+      last_report_ = coupling_->advance(time.dt, time.scheme, with_energies, times_);
     } catch (const std::runtime_error& error) {
       diverged("coupling", error.what());
     }
@@ -169,6 +192,7 @@ void Simulation::restore_state(const CheckpointData& data) {
   if (cells_.population) cells_.population->restore_state(data);
   if (cells_.interaction) cells_.interaction->restore_state(data);
   if (coupling_) coupling_->restore_state(data);
+  if (cell_forces_) cell_forces_->mark_stale();  // the forces at the restored positions
   steps_ = static_cast<int>(data.step);
   const std::vector<double>& seconds = data.real("run/stage_seconds");
   std::istringstream stages(data.label("stage_names"));

@@ -9,20 +9,23 @@
 
 #include "cells/cells_from_case.hpp"
 #include "config/case_config.hpp"
+#include "config/scene_plan.hpp"
+#include "coupling/cell_forces.hpp"
 #include "coupling/immersed_coupling.hpp"
 #include "fluid/fluid_solver.hpp"
 #include "distributed/fluid_distribution.hpp"
 #include "mesh/fluid_mesh.hpp"
 #include "parallel/communicator.hpp"
-#include "run/stage_times.hpp"
+#include "util/stage_times.hpp"
 
 namespace rouleau {
 
 class Simulation {
  public:
-  // Builds everything the case's stages need (cell meshes from `mesh_cache_dir`). The
-  // case must have been loaded by load_case() (so it is valid). With `ranks` of more than
-  // one rank (issue 10) the fluid is split across them (FluidDistribution) and every rank
+  // Builds the stages the scene's plan (config/scene_plan.hpp) says run, and what they
+  // need (cell meshes from `mesh_cache_dir`). The case must have been loaded by
+  // load_case() (so it is valid). With `ranks` of more than one rank the fluid is split
+  // across them (FluidDistribution) and every rank
   // holds every cell and computes the forces of the cells whose centroid it holds
   // (FluidDistribution::rank_holding, ImmersedCoupling::share_cells; decided anew before
   // every step, so a cell whose centroid crosses into another rank's part moves its work
@@ -34,8 +37,9 @@ class Simulation {
   // alone otherwise. Throws DivergenceError naming the step, the stage and the values
   // when the fluid solve fails, a cell node leaves the fluid or its velocity is not
   // finite, or a cell's enclosed volume has changed by more than
-  // coupling.volume_tolerance of its initial volume.
-  const ImmersedCoupling::StepReport& advance();
+  // coupling.volume_tolerance of its initial volume. With `with_energies` the forces at the
+  // new positions come with the elastic and interaction energies (diagnostics rows).
+  const ImmersedCoupling::StepReport& advance(bool with_energies = false);
   // The steady solve (cells, if any, stay in place). Throws DivergenceError on failure.
   const ImmersedCoupling::StepReport& solve_steady();
 
@@ -54,8 +58,19 @@ class Simulation {
   FluidSolver& fluid() { return *fluid_; }
   const FluidSolver& fluid() const { return *fluid_; }
   const CaseCells& cells() const { return cells_; }
+  const ScenePlan& plan() const { return plan_; }
+  // The forces on the cell nodes at their current positions (with the energies when
+  // asked), as the last step computed them, or computed now when no step has (the cells as
+  // placed or restored, a steady solve). Only with cells.
+  const CellForceState& cell_forces(bool with_energies);
+  // Places the cells' nodes at `positions` [μm] (node-major), as a driver or a test moves
+  // them between steps; the next step computes their forces anew.
+  void set_cell_positions(const Kokkos::View<const double* [3], Kokkos::HostSpace>& positions);
+  // The fluid's split across the ranks, or null on one rank.
+  const FluidDistribution* distribution() const { return distribution_.get(); }
   // The coupling, or nullptr (no cells, or a steady case).
   ImmersedCoupling* coupling() { return coupling_.get(); }
+  const ImmersedCoupling* coupling() const { return coupling_.get(); }
   const ImmersedCoupling::StepReport& last_report() const { return last_report_; }
   // Across ranks: the rank computing each cell (the rank holding its centroid), and how many
   // times a cell has changed rank since this Simulation was built. Empty and 0 otherwise.
@@ -78,11 +93,13 @@ class Simulation {
 
   CaseConfig config_;
   DerivedQuantities derived_;
+  ScenePlan plan_;
   StageTimes times_;
   FluidMesh mesh_;
   std::unique_ptr<FluidDistribution> distribution_;  // several ranks, or null
   std::unique_ptr<FluidSolver> fluid_;
   CaseCells cells_;
+  std::unique_ptr<CellForces> cell_forces_;  // with cells
   std::unique_ptr<ImmersedCoupling> coupling_;
   ImmersedCoupling::StepReport last_report_;
   std::vector<double> initial_volumes_;  // each cell's enclosed volume as placed [μm³]

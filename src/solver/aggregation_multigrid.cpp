@@ -4,7 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "run/profiling_region.hpp"
+#include "util/profiling_region.hpp"
 #include "util/view_transfer.hpp"
 #include "solver/ilu0_preconditioner.hpp"
 #include "host_algebra/sparse_direct_solver.hpp"
@@ -18,7 +18,7 @@ using DoubleView = Kokkos::View<double*>;
 using ConstView = Kokkos::View<const double*>;
 
 // Position of entry (i, j) of the block at neighbour index n of row node A
-// (FluidMatrixGraph's layout).
+// (BlockMatrixGraph's layout).
 KOKKOS_INLINE_FUNCTION std::size_t block_entry(const IntView& offsets, int A, int n, int i, int j) {
   const int first = offsets(A), degree = offsets(A + 1) - first;
   return 16 * static_cast<std::size_t>(first) + 4 * static_cast<std::size_t>(degree) * i + 4 * (n - first) + j;
@@ -27,7 +27,7 @@ KOKKOS_INLINE_FUNCTION std::size_t block_entry(const IntView& offsets, int A, in
 }  // namespace
 
 struct AggregationMultigrid::Level {
-  FluidMatrixGraph graph;
+  BlockMatrixGraph graph;
   DoubleView values;
   IntView block_row;  // row node of each block (neighbour index)
   std::unique_ptr<Ilu0Preconditioner> smoother;
@@ -47,7 +47,7 @@ struct AggregationMultigrid::CoarsestSolver {
 namespace {
 
 // Host copy of a level's node graph.
-void host_node_graph(const FluidMatrixGraph& graph, std::vector<int>& offsets, std::vector<int>& neighbors) {
+void host_node_graph(const BlockMatrixGraph& graph, std::vector<int>& offsets, std::vector<int>& neighbors) {
   auto o = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), graph.node_offsets);
   auto n = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), graph.node_neighbors);
   offsets.assign(o.data(), o.data() + o.extent(0));
@@ -63,14 +63,14 @@ std::vector<int> block_rows(const std::vector<int>& offsets) {
 
 }  // namespace
 
-AggregationMultigrid::AggregationMultigrid(const FluidMatrixGraph& fine_graph, const WeightedGraph& strength,
+AggregationMultigrid::AggregationMultigrid(const BlockMatrixGraph& fine_graph, const WeightedGraph& strength,
                                            const AggregationMultigridSettings& settings)
     : settings_(settings) {
   ProfilingRegion region("rouleau::AggregationMultigrid::hierarchy");
   std::vector<int> offsets, neighbors;
   host_node_graph(fine_graph, offsets, neighbors);
   WeightedGraph level_strength = strength;
-  FluidMatrixGraph graph = fine_graph;
+  BlockMatrixGraph graph = fine_graph;
   for (;;) {
     auto level = std::make_unique<Level>();
     const int nodes = static_cast<int>(offsets.size()) - 1;
@@ -187,7 +187,7 @@ void AggregationMultigrid::set_values(const Kokkos::View<double*>& fine_values) 
 namespace {
 
 // residual = rhs − A x on a level's CRS matrix.
-void crs_residual(const FluidMatrixGraph& graph, const DoubleView& values, const ConstView& rhs, const DoubleView& x,
+void crs_residual(const BlockMatrixGraph& graph, const DoubleView& values, const ConstView& rhs, const DoubleView& x,
                   const DoubleView& residual) {
   const auto row_map = graph.row_map;
   const auto entries = graph.entries;
@@ -273,7 +273,7 @@ std::vector<std::size_t> AggregationMultigrid::level_entries() const {
   return entries;
 }
 
-const FluidMatrixGraph& AggregationMultigrid::level_graph(int l) const { return levels_.at(l)->graph; }
+const BlockMatrixGraph& AggregationMultigrid::level_graph(int l) const { return levels_.at(l)->graph; }
 
 Kokkos::View<double*> AggregationMultigrid::level_values(int l) const { return levels_.at(l)->values; }
 

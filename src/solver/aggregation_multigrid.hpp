@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-#include "fluid/fluid_matrix.hpp"
+#include "solver/block_matrix_graph.hpp"
 #include "solver/linear_operator.hpp"
 #include "host_algebra/pairwise_aggregation.hpp"
 
@@ -44,7 +44,7 @@ struct AggregationMultigridSettings {
 class AggregationMultigrid final : public Preconditioner {
  public:
   // `fine_graph`: the node-block graph of A; `strength`: the node graph's weights.
-  AggregationMultigrid(const FluidMatrixGraph& fine_graph, const WeightedGraph& strength,
+  AggregationMultigrid(const BlockMatrixGraph& fine_graph, const WeightedGraph& strength,
                        const AggregationMultigridSettings& settings = {});
   ~AggregationMultigrid() override;
   AggregationMultigrid(const AggregationMultigrid&) = delete;
@@ -64,7 +64,7 @@ class AggregationMultigrid final : public Preconditioner {
   // Level l's matrix (graph and values after set_values) and, but on the coarsest level,
   // the coarse node of each of its nodes (a host copy): for tests against a serial
   // reference of the Galerkin products and the cycle.
-  const FluidMatrixGraph& level_graph(int l) const;
+  const BlockMatrixGraph& level_graph(int l) const;
   Kokkos::View<double*> level_values(int l) const;
   std::vector<int> level_aggregates(int l) const;
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "run/profiling_region.hpp"
+#include "util/profiling_region.hpp"
 
 namespace rouleau {
 

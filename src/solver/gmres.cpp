@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-#include "run/profiling_region.hpp"
+#include "util/profiling_region.hpp"
 
 namespace rouleau {
 

@@ -3,7 +3,7 @@
 #include <KokkosKernels_config.h>
 #include <KokkosSparse_spiluk.hpp>
 
-#include "run/profiling_region.hpp"
+#include "util/profiling_region.hpp"
 
 namespace rouleau {
 

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "kernels/triangular_solve.hpp"
-#include "run/profiling_region.hpp"
+#include "util/profiling_region.hpp"
 
 namespace rouleau {
 

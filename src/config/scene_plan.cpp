@@ -1,4 +1,4 @@
-#include "run/scene.hpp"
+#include "config/scene_plan.hpp"
 
 #include <map>
 #include <sstream>
@@ -11,10 +11,10 @@
 namespace rouleau {
 
 namespace {
-// Which path the Stokes operator takes (FluidOperator::uses_stencil decides the same from
-// the mesh itself).
-std::string fluid_operator_path(const CaseConfig& config, const DerivedQuantities& derived) {
+// Which path the Stokes operator takes, and whether it is the stencil.
+std::string fluid_operator_path(const CaseConfig& config, const DerivedQuantities& derived, bool& stencil) {
   const char* elementwise = "element by element, matrix-free";
+  stencil = false;
   if (config.vessel.enabled) return std::string(elementwise) + " (tetrahedra: every element has its own geometry)";
   if (!derived.stokes)
     return std::string(elementwise) + " (Navier–Stokes: the convective term makes every element's matrix differ)";
@@ -22,13 +22,18 @@ std::string fluid_operator_path(const CaseConfig& config, const DerivedQuantitie
     if (grading != 1.0) return std::string(elementwise) + " (a graded box: its elements differ)";
   if (!config.scene.skip_unneeded_stages)
     return std::string(elementwise) + " (scene.skip_unneeded_stages = false; a uniform box would allow the stencil)";
+  stencil = true;
   return "stencil from one reference element: a uniform box in the Stokes limit, where every element has the "
          "same matrix (no per-element geometry; the same Aδ as element by element to round-off)";
 }
 }  // namespace
 
-std::vector<Stage> plan_stages(const CaseConfig& config, const DerivedQuantities& derived) {
-  std::vector<Stage> stages;
+ScenePlan plan_scene(const CaseConfig& config, const DerivedQuantities& derived) {
+  ScenePlan plan;
+  std::vector<Stage>& stages = plan.stages;
+  const bool skip = config.scene.skip_unneeded_stages;
+  plan.rebuild_morse_list_every_step = !skip;
+  plan.rkpm_correction_everywhere = !skip;
   std::ostringstream fluid;
   fluid << (derived.stokes ? "Stokes limit: " : "Navier–Stokes: ") << derived.stokes_reason;
   if (config.time.mode == TimeMode::steady)
@@ -37,7 +42,7 @@ std::vector<Stage> plan_stages(const CaseConfig& config, const DerivedQuantities
     fluid << "; " << (config.time.scheme == TimeScheme::bdf2 ? "BDF2" : "backward Euler") << " steps of "
           << config.time.dt << " s to " << config.time.end << " s";
   stages.push_back({"fluid", true, fluid.str()});
-  stages.push_back({"fluid operator", true, fluid_operator_path(config, derived)});
+  stages.push_back({"fluid operator", true, fluid_operator_path(config, derived, plan.stencil)});
   std::string preconditioner;
   const char* when = derived.stokes ? "built once (the Stokes operator is constant while dt is)"
                                     : "rebuilt every Newton step";
@@ -77,8 +82,9 @@ std::vector<Stage> plan_stages(const CaseConfig& config, const DerivedQuantities
     }
     cells << "), 4-node tetrahedra meshed with Gmsh once per kind and cached; written with the fields";
     const bool moving = config.time.mode == TimeMode::transient;
-    const bool skip = config.scene.skip_unneeded_stages;
-    if (moving && config.coupling.scheme == CouplingScheme::semi_implicit) {
+    plan.moves_cells = moving;
+    plan.semi_implicit = moving && config.coupling.scheme == CouplingScheme::semi_implicit;
+    if (plan.semi_implicit) {
       cells << ". Semi-implicit coupling: the fluid solved with the cells' forces at x^n plus their change "
                "over the step, linearized (K dt I u, K by one-sided differences of the forces inside each "
                "GMRES iteration), the cells moved with the interpolated velocity; dt = "
@@ -112,6 +118,7 @@ std::vector<Stage> plan_stages(const CaseConfig& config, const DerivedQuantities
             << "; cells farther apart than the cut-off do no pair work; "
             << (moving ? "every step" : "output steps only");
       stages.push_back({"Morse cell-cell forces", true, morse.str()});
+      plan.morse_forces = true;
     } else {
       stages.push_back({"Morse cell-cell forces", false, "skipped: interaction.enabled = false"});
     }
@@ -120,9 +127,10 @@ std::vector<Stage> plan_stages(const CaseConfig& config, const DerivedQuantities
       std::ostringstream wall;
       wall << "the vessel wall pushes cell surface nodes within " << vessel.wall_repulsion_range
            << " um of it with the pressure " << vessel.wall_repulsion_pressure << " Pa x (1 - d/d0)^2";
+      plan.wall_repulsion = moving && vessel.wall_repulsion_pressure > 0.0;
       if (!moving)
         stages.push_back({"wall repulsion", false, steady_only});
-      else if (vessel.wall_repulsion_pressure > 0.0)
+      else if (plan.wall_repulsion)
         stages.push_back({"wall repulsion", true, wall.str()});
       else
         stages.push_back({"wall repulsion", false, "skipped: vessel.wall_repulsion_Pa = 0"});
@@ -130,9 +138,10 @@ std::vector<Stage> plan_stages(const CaseConfig& config, const DerivedQuantities
     bool denser = false;
     for (const CellPlacement& cell : config.cells)
       denser = denser || find_cell_kind(config, cell.kind)->density != config.fluid.density;
+    plan.inertia = moving && (denser || !skip);
     if (!moving)
       stages.push_back({"inertia/buoyancy", false, steady_only});
-    else if (denser || !skip)
+    else if (plan.inertia)
       stages.push_back({"inertia/buoyancy", true,
                         std::string("(rho_s - rho_f)(g - dv/dt) at the cell nodes, lumped") +
                             (denser ? "" : " (every cell is as dense as the fluid: zero; scene.skip_unneeded_stages = false)")});
@@ -156,16 +165,15 @@ std::vector<Stage> plan_stages(const CaseConfig& config, const DerivedQuantities
                                                      std::to_string(config.output.fields_every_steps) +
                                                      " steps, diagnostics.csv"
                                                : "fields off (output.fields = false); diagnostics.csv only"});
-  return stages;
+  return plan;
 }
 
-std::string describe_stages(const CaseConfig& config, const DerivedQuantities& derived,
-                            const std::vector<Stage>& stages) {
+std::string describe_scene(const CaseConfig& config, const DerivedQuantities& derived, const ScenePlan& plan) {
   std::ostringstream out;
   out << "case " << config.name << ": " << describe_fluid_domain(config) << "; scales L = " << derived.length_scale << " um, U = " << derived.velocity_scale
       << " um/s, P = " << derived.pressure_scale << " Pa; Re = " << derived.reynolds << "\n";
   out << "stages:\n";
-  for (const Stage& s : stages) out << "  [" << (s.runs ? "run " : "skip") << "] " << s.name << ": " << s.reason << "\n";
+  for (const Stage& s : plan.stages) out << "  [" << (s.runs ? "run " : "skip") << "] " << s.name << ": " << s.reason << "\n";
   return out.str();
 }
 

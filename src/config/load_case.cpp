@@ -18,7 +18,7 @@
 
 #include "config/cell_kinds.hpp"
 #include "config/derived.hpp"
-#include "geometry/cell_shapes.hpp"
+#include "config/cell_placement_check.hpp"
 #include "util/errors.hpp"
 
 namespace rouleau {

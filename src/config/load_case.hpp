@@ -27,8 +27,7 @@ inline constexpr const char* override_source_name = "--set";
 // Cells: config.cell_kinds holds the built-in kinds (builtin_cell_kinds(), changed by
 // [cell_kinds.NAME] tables of their name) and then the kinds the file adds, which start from
 // the built-in "normal" cell; errors name cell_kinds.NAME.KEY. config.cells holds the
-// [[cells]] entries; errors name cells[I].KEY (I from 0). Placement (inside the domain, no
-// overlap) is checked by check_cell_placement() in src/geometry, not here.
+// [[cells]] entries; errors name cells[I].KEY (I from 0).
 CaseConfig load_case(const std::string& path, const std::vector<std::string>& overrides = {});
 
 // The same for a case held in memory (a checkpoint's resolved case, a fuzzer's input):

@@ -17,12 +17,12 @@ file.
 
 Every key is checked before any work: an unknown key or table, a wrong type or array
 length, a missing required key, a value out of range, or cells outside the domain or
-overlapping each other stop the run with exit code 2 and one line naming the file, the
-key and the reason:
+overlapping each other stop the run with exit code 2 and one line on stderr naming the
+file, the key and the reason:
 
 ```
-case.toml: fluid.viscosity_Pa_s: must be > 0, got -1
-case.toml: cell_kinds.normal.diametre_um: unknown key; did you mean "diameter_um"?
+rouleau: case.toml: fluid.viscosity_Pa_s: must be > 0, got -1
+rouleau: case.toml: cell_kinds.normal.diametre_um: unknown key; did you mean "diameter_um"?
 ```
 
 `rouleau run` and `rouleau check` take `--set KEY=VALUE` (repeatable) to change a key

@@ -24,8 +24,6 @@ std::vector<std::string_view> names_of_kinds(const std::vector<CellKindConfig>& 
 // The keys that apply to a shell body only.
 const std::vector<std::string_view> shell_body_keys{"shell_thickness_um", "membrane_shear_modulus_pN_um"};
 
-constexpr std::array<CellShape, 3> all_cell_shapes{CellShape::rbc, CellShape::sickle, CellShape::sphere};
-
 // The size keys of each shape.
 std::vector<std::string_view> size_keys_of(CellShape shape) {
   switch (shape) {
@@ -40,8 +38,9 @@ std::vector<std::string_view> size_keys_of(CellShape shape) {
 void check_keys_apply_to_shape_and_body(const TableReader& reader, const CellKindConfig& kind) {
   const std::vector<std::string_view> own_size_keys = size_keys_of(kind.shape);
   for (const std::string& key : reader.present_keys()) {
-    const bool size_key = std::any_of(all_cell_shapes.begin(), all_cell_shapes.end(),
-                                      [&](CellShape shape) { return contains_name(size_keys_of(shape), key); });
+    const bool size_key =
+        std::any_of(cell_shape_names.begin(), cell_shape_names.end(),
+                    [&](const NamedChoice<CellShape>& shape) { return contains_name(size_keys_of(shape.value), key); });
     if (size_key && !contains_name(own_size_keys, key))
       reader.fail(key, "does not belong to shape \"" + std::string(toml_name(kind.shape)) + "\" (its size keys are " +
                            joined(own_size_keys, false) + ")");
@@ -184,12 +183,12 @@ void read_cells(const TableReader& root, CaseConfig& config) {
   }
 }
 
+// [interaction] and its [[interaction.pair]] laws, each pair of kinds at most once.
 void read_interaction(const TableReader& root, CaseConfig& config) {
   const TableReader section = root.table("interaction");
   InteractionConfig& interaction = config.interaction;
   assign(interaction.enabled, section.boolean("enabled"));
-  assign(interaction.quadrature,
-         section.choice<InteractionQuadrature>("quadrature"));
+  assign(interaction.quadrature, section.choice<InteractionQuadrature>("quadrature"));
   assign(interaction.strength, section.number("strength_multiplier"));
   assign(interaction.skin, section.number("skin_um"));
   read_morse(section, interaction.morse);

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "config/cell_kinds.hpp"
+#include "config/cell_placement_check.hpp"
 #include "geometry/cell_mesh.hpp"
 #include "geometry/cell_shape_details.hpp"
 #include "geometry/cell_shapes.hpp"
@@ -742,12 +743,12 @@ InputError placement_error(const CaseConfig& config) {
 
 TEST(CellPlacement, RotationIsAboutFixedXThenYThenZ) {
   CellPlacement cell = placed("normal", {0, 0, 0}, {0, 0, 90});
-  auto r = placement_rotation(cell);
+  auto r = placement_rotation(cell.orientation);
   // e_x → e_y for 90° about z.
   EXPECT_NEAR(r[1][0], 1.0, 1e-12);
   // 90° about x, then 90° about y: e_y → e_z → e_x (the other order would give e_z).
   cell.orientation = {90, 90, 0};
-  r = placement_rotation(cell);
+  r = placement_rotation(cell.orientation);
   EXPECT_NEAR(r[0][1], 1.0, 1e-12);
   EXPECT_NEAR(r[1][1], 0.0, 1e-12);
   EXPECT_NEAR(r[2][1], 0.0, 1e-12);

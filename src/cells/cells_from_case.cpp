@@ -54,7 +54,7 @@ CaseCells make_case_cells(const CaseConfig& config, const std::string& mesh_cach
     if (mesh == result.meshes.end()) mesh = result.meshes.emplace(kind->name, cell_mesh(*kind, mesh_cache_dir)).first;
     PlacedCell cell;
     cell.mesh = &mesh->second;
-    cell.rotation = placement_rotation(placement);
+    cell.rotation = placement_rotation(placement.orientation);
     cell.center = placement.center;
     cell.material =
         NeoHookeanMaterial::from_moduli(kind->shear_modulus, kind->bulk_modulus, kind->strain_hardening_ratio);

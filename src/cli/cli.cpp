@@ -10,6 +10,7 @@
 #include <sstream>
 #include <thread>
 
+#include "config/case_file_reference.hpp"
 #include "config/derived.hpp"
 #include "config/load_case.hpp"
 #include "config/memory_estimate.hpp"
@@ -126,16 +127,19 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
 
   CLI::App* info = app.add_subcommand("info", "Print versions and the Kokkos configuration");
   add_threads_option(*info, result);
+  CLI::App* keys = app.add_subcommand(
+      "keys", "Print the case-file reference: every key with its unit, default, allowed values and meaning (Markdown)");
   CLI::App* help = app.add_subcommand("help", "Print this help");
   CLI::App* version = app.add_subcommand("version", "Print the version");
 
   if (!parse_or_finish(app, argc, argv, out, err, result)) return result;
-  if (help->parsed() || version->parsed() || app.get_subcommands().empty()) {
+  if (help->parsed() || version->parsed() || keys->parsed() || app.get_subcommands().empty()) {
     result.command = Command::finished;
     if (version->parsed()) out << version_text << "\n";
+    else if (keys->parsed()) out << case_file_reference();
     else  // the whole command's help (app.help() would give the `help` subcommand's)
       (help->parsed() ? out : err) << app.get_formatter()->make_help(&app, "rouleau", CLI::AppFormatMode::Normal);
-    result.exit_code = help->parsed() || version->parsed() ? 0 : usage_error_exit_code;
+    result.exit_code = help->parsed() || version->parsed() || keys->parsed() ? 0 : usage_error_exit_code;
     return result;
   }
   result.progress = !no_progress;

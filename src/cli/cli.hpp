@@ -18,7 +18,7 @@ enum class Command {
   run,       // rouleau run CASE.toml ...
   check,     // rouleau check CASE.toml ...: validate only, no Kokkos
   info,      // rouleau info: versions and the Kokkos configuration
-  finished,  // help, version or a usage error was handled; exit with exit_code
+  finished,  // help, version, keys or a usage error was handled; exit with exit_code
 };
 
 // What the command line asked for.
@@ -36,10 +36,11 @@ struct CommandLine {
   bool progress = true;                // run --no-progress clears it
 };
 
-// Parses argv (argv[0] is the program name) without touching Kokkos. `help` (or --help)
-// and `version` (or --version) print to `out`; usage errors print CLI11's message to `err`,
-// and no subcommand at all prints the help there. All give Command::finished with
-// exit_code 0 (help, version) or 2 (usage error, no subcommand).
+// Parses argv (argv[0] is the program name) without touching Kokkos. `help` (or --help),
+// `version` (or --version) and `keys` (the case-file reference) print to `out`; usage
+// errors print CLI11's message to `err`, and no subcommand at all prints the help there.
+// All give Command::finished with exit_code 0 (help, version, keys) or 2 (usage error, no
+// subcommand).
 CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& out, std::ostream& err);
 
 // A case driver's command line (cases/NAME/main.cpp), the options of `rouleau run`:

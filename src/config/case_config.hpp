@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/cell_geometry.hpp"
 #include "geometry/vessel_mesh.hpp"
 
 namespace rouleau {
@@ -113,36 +114,11 @@ struct ScalesConfig {
 
 // ---- cells (the Lagrangian bodies)
 
-// The body shapes cells are meshed from (src/geometry).
-enum class CellShape {
-  rbc,     // Evans–Fung biconcave disc, paper eq. (1), revolved about its axis (local z)
-  sickle,  // crescent: an ellipsoid bent along a circular arc in its local x–y plane
-  sphere,  // sphere / spherical capsule
-};
-// What of the body is solid: its whole volume, or a membrane layer of given thickness
-// enclosing fluid that belongs to the Eulerian mesh.
-enum class CellBody { shell, filled };
-// Mesh resolution presets (element sizes per shape: cell_element_size(), src/geometry/cell_mesh.hpp).
-enum class MeshResolution { coarse, paper, fine };
-
-// A kind of cell: shape, size, mesh and material. Built-in kinds "normal", "sickle" and
+// A kind of cell: its geometry (shape, body, sizes, mesh resolution: CellGeometry,
+// geometry/cell_geometry.hpp) and its material. Built-in kinds "normal", "sickle" and
 // "capsule" have defaults (builtin_cell_kinds(), config/cell_kinds.hpp); a case may
 // change them or add its own under [cell_kinds.NAME].
-struct CellKindConfig {
-  std::string name;
-  CellShape shape = CellShape::rbc;  // key shape = "rbc" | "sickle" | "sphere"
-  CellBody body = CellBody::shell;   // key body = "shell" | "filled"
-  // rbc and sphere: the diameter [μm]                    key diameter_um
-  double diameter = 7.82;
-  // sickle: centre-line length, in-plane width, out-of-plane thickness of the unbent
-  // ellipsoid, and the radius of the arc its centre line is bent along [μm]
-  double length = 14.0;       // key length_um
-  double width = 4.2;         // key width_um
-  double thickness = 3.0;     // key thickness_um
-  double arc_radius = 8.0;    // key arc_radius_um
-  double shell_thickness = 0.36;  // shell body: membrane thickness [μm]   key shell_thickness_um
-  MeshResolution resolution = MeshResolution::paper;  // key resolution
-  double mesh_size = 0.0;     // element size [μm] overriding the preset when > 0   key mesh_size_um
+struct CellKindConfig : CellGeometry {
   // Material, paper eq. (2) with C1 = G/2, C2 = K. In the file either
   // shear_modulus_Pa (3D) or membrane_shear_modulus_pN_um (shell only; G = G_s / h),
   // and either bulk_modulus_Pa or poisson_ratio (K = 2G(1+ν) / (3(1−2ν))).

@@ -2,25 +2,19 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <sstream>
 #include <toml++/toml.h>
 
+#include "config/case_file_names.hpp"
 #include "config/cell_kinds.hpp"
 #include "config/load_case.hpp"
+#include "config/number_text.hpp"
+#include "config/toml_table_reader.hpp"
 
 namespace rouleau {
 namespace {
 
-// A double as the shortest TOML float that reads back to the same value ("0.0012", "1.0").
-std::string toml_float(double value) {
-  char text[32];
-  const auto result = std::to_chars(text, text + sizeof(text), value);
-  std::string written(text, result.ptr);
-  if (written.find_first_of(".e") == std::string::npos) written += ".0";
-  return written;
-}
 std::string toml_text(double value) { return toml_float(value); }
 std::string toml_text(int value) { return std::to_string(value); }
 std::string toml_text(bool value) { return value ? "true" : "false"; }

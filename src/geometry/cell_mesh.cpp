@@ -74,7 +74,7 @@ using Node = MeshPoint;  // a mesh node's position [μm]
 // fine with the element size well above the shell thickness (checked from 0.3 to 1.2 μm
 // for h = 0.36 μm): Gmsh then puts one element across the layer.
 double reference_cell_volume() {
-  CellKindConfig normal;
+  CellGeometry normal;
   normal.shape = CellShape::rbc;
   normal.body = CellBody::filled;
   normal.diameter = 7.82;
@@ -115,7 +115,7 @@ SplineTags add_profile_spline(const std::vector<std::array<double, 2>>& profile)
   return {gmsh::model::occ::addSpline(points), points.front(), points.back()};
 }
 
-void add_rbc(const CellKindConfig& kind) {
+void add_rbc(const CellGeometry& kind) {
   // Spline points every π/96 in θ: the interpolating spline is then within ~1e-6 R of
   // the profile.
   const int intervals = 96;
@@ -140,7 +140,7 @@ void add_rbc(const CellKindConfig& kind) {
   gmsh::model::occ::remove({{2, face}}, /*recursive=*/true);
 }
 
-void add_sphere(const CellKindConfig& kind) {
+void add_sphere(const CellGeometry& kind) {
   const double radius = 0.5 * kind.diameter;
   const int outer = gmsh::model::occ::addSphere(0, 0, 0, radius);
   if (kind.body == CellBody::shell) {
@@ -152,7 +152,7 @@ void add_sphere(const CellKindConfig& kind) {
 }
 
 // The unbent ellipsoid (shell: minus its cavity); the nodes are bent after meshing.
-void add_unbent_sickle(const CellKindConfig& kind) {
+void add_unbent_sickle(const CellGeometry& kind) {
   const SickleBend bend = sickle_bend(kind);
   const auto add_ellipsoid = [](double a, double b, double c) {
     // The unit sphere's poles turned onto the x axis before scaling, so that they become
@@ -185,7 +185,7 @@ void add_unbent_sickle(const CellKindConfig& kind) {
 // algorithm).
 class ElementSizeField {
  public:
-  ElementSizeField(const CellKindConfig& kind, double element_size, int elements_per_circle)
+  ElementSizeField(const CellGeometry& kind, double element_size, int elements_per_circle)
       : kind_(kind), largest_(element_size), smallest_(0.25 * element_size),
         per_radius_(2.0 * pi / elements_per_circle) {
     if (kind.shape == CellShape::rbc) tabulate_rbc();
@@ -247,13 +247,13 @@ class ElementSizeField {
     }
   }
 
-  CellKindConfig kind_;
+  CellGeometry kind_;
   double largest_, smallest_, per_radius_;
   std::vector<double> radius_, radius_of_curvature_;  // rbc table
   SickleBend bend_{};
 };
 
-TetrahedralMesh mesh_with_gmsh(const CellKindConfig& kind, double element_size) {
+TetrahedralMesh mesh_with_gmsh(const CellGeometry& kind, double element_size) {
   GmshSession session;
   gmsh::model::add("cell");
   switch (kind.shape) {
@@ -275,7 +275,7 @@ struct Surfaces {
 // The boundary faces (used by one tetrahedron), oriented out of the solid, split into
 // connected surfaces (sharing nodes). For a positive tetrahedron (0, 1, 2, 3) the faces
 // seen from outside, counter-clockwise, are (0, 2, 1), (0, 1, 3), (1, 2, 3), (0, 3, 2).
-Surfaces boundary_surfaces(const CellKindConfig& kind, const std::vector<Node>& nodes,
+Surfaces boundary_surfaces(const CellGeometry& kind, const std::vector<Node>& nodes,
                            const std::vector<Tetrahedron>& tetrahedra) {
   std::vector<Triangle> boundary;
   try {
@@ -336,7 +336,7 @@ Surfaces boundary_surfaces(const CellKindConfig& kind, const std::vector<Node>& 
 // ---- hashing and the cache
 
 // The text every mesh-changing parameter goes into, one line, numbers to 17 digits.
-std::string canonical_parameters(const CellKindConfig& kind, double element_size) {
+std::string canonical_parameters(const CellGeometry& kind, double element_size) {
   std::ostringstream text;
   text.precision(17);
   text << "geometry_code=" << geometry_code_version << " gmsh=" << GmshSession::library_version();
@@ -376,7 +376,7 @@ CellMesh from_cached(CachedMesh cached, const std::string& hash) {
   return mesh;
 }
 
-CellMesh make_cell_mesh_with_parameters(const CellKindConfig& kind, double element_size, const std::string& parameters) {
+CellMesh make_cell_mesh_with_parameters(const CellGeometry& kind, double element_size, const std::string& parameters) {
   validate_cell_kind(kind);
   if (!(element_size > 0.0 && std::isfinite(element_size)))
     throw std::runtime_error(describe_kind(kind) + ": the element size must be positive, not " + std::to_string(element_size));
@@ -412,18 +412,18 @@ CellMesh make_cell_mesh_with_parameters(const CellKindConfig& kind, double eleme
 
 }  // namespace
 
-double cell_element_size(const CellKindConfig& kind) {
+double cell_element_size(const CellGeometry& kind) {
   if (kind.mesh_size > 0.0) return kind.mesh_size;
   // h = h_ref(resolution) · (V / V_ref)^{1/3}: similar node counts for any cell size.
   return reference_element_size(kind.resolution) * std::cbrt(exact_cell_volume(kind) / reference_cell_volume());
 }
 
-CellMesh make_cell_mesh(const CellKindConfig& kind) {
+CellMesh make_cell_mesh(const CellGeometry& kind) {
   const double element_size = cell_element_size(kind);
   return make_cell_mesh_with_parameters(kind, element_size, canonical_parameters(kind, element_size));
 }
 
-CellMesh cell_mesh(const CellKindConfig& kind, const std::string& cache_dir) {
+CellMesh cell_mesh(const CellGeometry& kind, const std::string& cache_dir) {
   const double element_size = cell_element_size(kind);
   const std::string parameters = canonical_parameters(kind, element_size);
   const std::string hash = fnv1a_hex(parameters);

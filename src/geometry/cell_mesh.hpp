@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "config/case_config.hpp"
+#include "geometry/cell_geometry.hpp"
 #include "geometry/mesh_cache.hpp"  // default_mesh_cache_dir()
 
 namespace rouleau {
@@ -30,12 +30,12 @@ struct CellMesh {
 // not enter), read from `cache_dir` when a mesh with the same hash is there, otherwise made
 // with Gmsh and stored there (written to a temporary name and renamed). A cached file that
 // cannot be read is remade. Throws std::runtime_error naming the kind when meshing fails.
-CellMesh cell_mesh(const CellKindConfig& kind, const std::string& cache_dir);
+CellMesh cell_mesh(const CellGeometry& kind, const std::string& cache_dir);
 
 // Meshes `kind` with Gmsh, bypassing the cache.
-CellMesh make_cell_mesh(const CellKindConfig& kind);
+CellMesh make_cell_mesh(const CellGeometry& kind);
 
 // The element size [μm] `kind` is meshed with: mesh_size when > 0, else its preset.
-double cell_element_size(const CellKindConfig& kind);
+double cell_element_size(const CellGeometry& kind);
 
 }  // namespace rouleau

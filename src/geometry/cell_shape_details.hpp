@@ -6,17 +6,17 @@
 #include <string>
 #include <vector>
 
-#include "config/case_config.hpp"
+#include "geometry/cell_geometry.hpp"
 
 namespace rouleau::geometry_detail {
 
 // "cell kind "NAME" (SHAPE BODY)": how errors about a kind name it.
-std::string describe_kind(const CellKindConfig& kind);
+std::string describe_kind(const CellGeometry& kind);
 
 // Throws std::runtime_error naming the kind when its sizes cannot make a body (a size not
 // positive or not finite, a shell as thick as the body, a sickle bent onto itself, an RBC
 // shell whose inner surface would cross itself or leave no cavity).
-void validate_cell_kind(const CellKindConfig& kind);
+void validate_cell_kind(const CellGeometry& kind);
 
 // Gauss–Legendre rule on [−1, 1]: nodes and weights of the n-point rule (exact for
 // polynomials of degree 2n − 1).
@@ -43,7 +43,7 @@ std::array<double, 2> rbc_profile_normal(double theta, double cell_radius);
 // convex part with curvature radius < h folds back; parts may meet), stays off the axis
 // between its ends and leaves a cavity at the axis; throws std::runtime_error naming the
 // kind and the reason otherwise.
-std::vector<std::array<double, 2>> rbc_inner_profile(const CellKindConfig& kind, int intervals);
+std::vector<std::array<double, 2>> rbc_inner_profile(const CellGeometry& kind, int intervals);
 
 // ---- Sickle: an ellipsoid bent along a circular arc (see cell_shapes.cpp for the
 // construction and why it keeps the volume).
@@ -52,7 +52,7 @@ struct SickleBend {
   double arc_radius;                                // ρ [μm]
   double centroid_y;  // Ȳ: y of the enclosed volume's centroid after bending [μm]
 };
-SickleBend sickle_bend(const CellKindConfig& kind);
+SickleBend sickle_bend(const CellGeometry& kind);
 // The bend map followed by the centroid shift: (x, y, z) of the unbent ellipsoid frame →
 // body frame, ((ρ+y) sin(x/ρ), (ρ+y) cos(x/ρ) − ρ − Ȳ, z).
 std::array<double, 3> bend_sickle_point(const SickleBend& bend, const std::array<double, 3>& unbent);

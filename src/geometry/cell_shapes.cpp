@@ -1,5 +1,5 @@
 // The exact cell shapes: the Evans–Fung RBC, the sphere and the sickle crescent, their
-// volumes and areas by quadrature, inside tests, surface samples and the placement check.
+// volumes and areas by quadrature, inside tests, surface samples and placement rotations.
 //
 // Sickle construction (cited by the README). Start from the ellipsoid
 //   (x/a)² + (y/b)² + (z/c)² ≤ 1,  a = length/2, b = width/2, c = thickness/2,
@@ -27,13 +27,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
 
 #include "geometry/cell_shape_details.hpp"
-#include "util/errors.hpp"
 
 namespace rouleau {
 
@@ -49,15 +47,6 @@ constexpr double evans_fung_a0 = 0.207;
 constexpr double evans_fung_a1 = 2.002;
 constexpr double evans_fung_a2 = -1.122;
 
-const char* shape_name(CellShape shape) {
-  switch (shape) {
-    case CellShape::rbc: return "rbc";
-    case CellShape::sickle: return "sickle";
-    case CellShape::sphere: return "sphere";
-  }
-  return "unknown shape";
-}
-
 std::string format_length(double value) {
   std::ostringstream out;
   out.precision(4);
@@ -65,11 +54,11 @@ std::string format_length(double value) {
   return out.str();
 }
 
-[[noreturn]] void fail(const CellKindConfig& kind, const std::string& reason) {
+[[noreturn]] void fail(const CellGeometry& kind, const std::string& reason) {
   throw std::runtime_error(describe_kind(kind) + ": " + reason);
 }
 
-void require_positive(const CellKindConfig& kind, double value, const char* what) {
+void require_positive(const CellGeometry& kind, double value, const char* what) {
   if (!(std::isfinite(value) && value > 0.0))
     fail(kind, std::string(what) + " must be a positive number of μm, not " + std::to_string(value));
 }
@@ -88,9 +77,9 @@ bool segments_meet(const std::array<double, 2>& p0, const std::array<double, 2>&
 }
 }  // namespace
 
-std::string describe_kind(const CellKindConfig& kind) {
-  return "cell kind \"" + kind.name + "\" (" + shape_name(kind.shape) + " " +
-         (kind.body == CellBody::shell ? "shell" : "filled") + ")";
+std::string describe_kind(const CellGeometry& kind) {
+  return "cell kind \"" + kind.name + "\" (" + name_of(cell_shape_names, kind.shape) + " " +
+         name_of(cell_body_names, kind.body) + ")";
 }
 
 QuadratureRule gauss_legendre(int n) {
@@ -145,7 +134,7 @@ std::array<double, 2> rbc_profile_normal(double theta, double cell_radius) {
   return {-t[1] / length, t[0] / length};
 }
 
-std::vector<std::array<double, 2>> rbc_inner_profile(const CellKindConfig& kind, int intervals) {
+std::vector<std::array<double, 2>> rbc_inner_profile(const CellGeometry& kind, int intervals) {
   const double radius = 0.5 * kind.diameter, h = kind.shell_thickness;
   // The cavity at the axis: the centre half-thickness z(0) = ½ a0 R minus h.
   const double centre_half_thickness = rbc_profile_point(0.0, radius)[1];
@@ -182,7 +171,7 @@ std::vector<std::array<double, 2>> rbc_inner_profile(const CellKindConfig& kind,
   return inner;
 }
 
-SickleBend sickle_bend(const CellKindConfig& kind) {
+SickleBend sickle_bend(const CellGeometry& kind) {
   SickleBend bend{0.5 * kind.length, 0.5 * kind.width, 0.5 * kind.thickness, kind.arc_radius, 0.0};
   const double a = bend.semi_length, b = bend.semi_width, c = bend.semi_thickness, rho = bend.arc_radius;
   // Ȳ = (1/V) ∫_E Y(x, y) (1 + y/ρ) dV with Y = (ρ + y) cos(x/ρ) − ρ. Over the elliptic
@@ -216,7 +205,7 @@ std::array<double, 3> unbend_sickle_point(const SickleBend& bend, const std::arr
   return {rho * std::atan2(from_centre_x, from_centre_y), std::hypot(from_centre_x, from_centre_y) - rho, body[2]};
 }
 
-void validate_cell_kind(const CellKindConfig& kind) {
+void validate_cell_kind(const CellGeometry& kind) {
   const bool shell = kind.body == CellBody::shell;
   switch (kind.shape) {
     case CellShape::rbc:
@@ -266,33 +255,12 @@ namespace {
 using Vector3 = std::array<double, 3>;
 using Matrix3 = std::array<std::array<double, 3>, 3>;
 
-Vector3 multiply(const Matrix3& m, const Vector3& v) {
-  return {m[0][0] * v[0] + m[0][1] * v[1] + m[0][2] * v[2], m[1][0] * v[0] + m[1][1] * v[1] + m[1][2] * v[2],
-          m[2][0] * v[0] + m[2][1] * v[1] + m[2][2] * v[2]};
-}
-Vector3 multiply_transposed(const Matrix3& m, const Vector3& v) {
-  return {m[0][0] * v[0] + m[1][0] * v[1] + m[2][0] * v[2], m[0][1] * v[0] + m[1][1] * v[1] + m[2][1] * v[2],
-          m[0][2] * v[0] + m[1][2] * v[1] + m[2][2] * v[2]};
-}
 Matrix3 product(const Matrix3& a, const Matrix3& b) {
   Matrix3 c{};
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       for (int k = 0; k < 3; ++k) c[i][j] += a[i][k] * b[k][j];
   return c;
-}
-
-std::string format_point(const Vector3& p) {
-  std::ostringstream out;
-  out.precision(4);
-  out << "[" << p[0] << ", " << p[1] << ", " << p[2] << "]";
-  return out.str();
-}
-std::string format_number(double value) {
-  std::ostringstream out;
-  out.precision(4);
-  out << value;
-  return out.str();
 }
 
 // Area of the bent ellipsoid's surface. On the ellipsoid P(θ, ψ) = (a cos θ,
@@ -411,7 +379,7 @@ double integrate_over_quarter_turn(int points, const Integrand& g) {
 }
 }  // namespace
 
-double exact_cell_volume(const CellKindConfig& kind) {
+double exact_cell_volume(const CellGeometry& kind) {
   validate_cell_kind(kind);
   switch (kind.shape) {
     case CellShape::rbc: {
@@ -435,7 +403,7 @@ double exact_cell_volume(const CellKindConfig& kind) {
   return 0.0;
 }
 
-double exact_cell_area(const CellKindConfig& kind) {
+double exact_cell_area(const CellGeometry& kind) {
   validate_cell_kind(kind);
   switch (kind.shape) {
     case CellShape::rbc: {
@@ -459,7 +427,7 @@ double exact_cell_area(const CellKindConfig& kind) {
   return 0.0;
 }
 
-bool inside_cell(const CellKindConfig& kind, const std::array<double, 3>& p) {
+bool inside_cell(const CellGeometry& kind, const std::array<double, 3>& p) {
   switch (kind.shape) {
     case CellShape::rbc: {
       // Inside when r < R and |z| < R y(r/R).
@@ -486,7 +454,7 @@ bool inside_cell(const CellKindConfig& kind, const std::array<double, 3>& p) {
   return false;
 }
 
-std::vector<std::array<double, 3>> cell_surface_samples(const CellKindConfig& kind, double spacing) {
+std::vector<std::array<double, 3>> cell_surface_samples(const CellGeometry& kind, double spacing) {
   validate_cell_kind(kind);
   if (!(spacing > 0.0 && std::isfinite(spacing)))
     throw std::invalid_argument("cell_surface_samples: the spacing must be positive, not " + std::to_string(spacing));
@@ -510,172 +478,15 @@ std::vector<std::array<double, 3>> cell_surface_samples(const CellKindConfig& ki
   return {};
 }
 
-std::array<std::array<double, 3>, 3> placement_rotation(const CellPlacement& placement) {
+std::array<std::array<double, 3>, 3> placement_rotation(const std::array<double, 3>& orientation_deg) {
   // R = Rz(γ) Ry(β) Rx(α): rotate about the fixed x axis first, then y, then z.
   const double degree = pi / 180.0;
-  const double alpha = placement.orientation[0] * degree, beta = placement.orientation[1] * degree,
-               gamma = placement.orientation[2] * degree;
+  const double alpha = orientation_deg[0] * degree, beta = orientation_deg[1] * degree,
+               gamma = orientation_deg[2] * degree;
   const Matrix3 rx{{{1, 0, 0}, {0, std::cos(alpha), -std::sin(alpha)}, {0, std::sin(alpha), std::cos(alpha)}}};
   const Matrix3 ry{{{std::cos(beta), 0, std::sin(beta)}, {0, 1, 0}, {-std::sin(beta), 0, std::cos(beta)}}};
   const Matrix3 rz{{{std::cos(gamma), -std::sin(gamma), 0}, {std::sin(gamma), std::cos(gamma), 0}, {0, 0, 1}}};
   return product(rz, product(ry, rx));
-}
-
-namespace {
-// A cell in a vessel: every placed sample inside the lumen (0 ≤ x ≤ L, r < R(x)); and, unless
-// vessel.allow_squeeze, no wider than the throat: its passing diameter (the middle extent
-// of its body-frame bounding box: a disc's or a sphere's diameter, a sickle's width; a
-// rigid body whose passing diameter exceeds a round opening cannot pass it) at most 2 R_t.
-void check_inside_vessel(const CaseConfig& config, std::size_t i, const std::vector<Vector3>& samples,
-                         const Matrix3& rotation) {
-  const std::string& file = config.source_file;
-  const CellPlacement& cell = config.cells[i];
-  const VesselProfile& profile = config.vessel.profile;
-  const std::string key = "cells[" + std::to_string(i) + "].";
-  const std::string which = "cell " + std::to_string(i) + " (" + cell.kind + ")";
-  Vector3 lowest{+INFINITY, +INFINITY, +INFINITY}, highest{-INFINITY, -INFINITY, -INFINITY};
-  for (const Vector3& p : samples) {
-    for (int axis = 0; axis < 3; ++axis) {
-      lowest[axis] = std::min(lowest[axis], p[axis]);
-      highest[axis] = std::max(highest[axis], p[axis]);
-    }
-    const Vector3 rotated = multiply(rotation, p);
-    const Vector3 x{cell.center[0] + rotated[0], cell.center[1] + rotated[1], cell.center[2] + rotated[2]};
-    const double r = std::hypot(x[1], x[2]);
-    if (x[0] < 0.0 || x[0] > vessel_length(profile))
-      throw InputError(file, key + "center_um",
-                       which + " reaches beyond the vessel's ends: its surface point " + format_point(x) +
-                           " μm is outside x in [0, " + format_number(vessel_length(profile)) + "] μm");
-    if (!(r < vessel_radius(profile, x[0])))
-      throw InputError(file, key + "center_um",
-                       which + " reaches outside the vessel: its surface point " + format_point(x) +
-                           " μm is at distance " + format_number(r) + " μm from the axis where the lumen's radius is " +
-                           format_number(vessel_radius(profile, x[0])) + " μm");
-  }
-  Vector3 extent{highest[0] - lowest[0], highest[1] - lowest[1], highest[2] - lowest[2]};
-  std::sort(extent.begin(), extent.end());
-  const double passing_diameter = extent[1];
-  if (!config.vessel.allow_squeeze && passing_diameter > 2.0 * profile.throat_radius)
-    throw InputError(file, key + "kind",
-                     which + " is larger than the vessel: its passing diameter " + format_number(passing_diameter) +
-                         " μm exceeds the throat's diameter " + format_number(2.0 * profile.throat_radius) +
-                         " μm; set vessel.allow_squeeze = true to let the flow squeeze it through");
-}
-}  // namespace
-
-void check_cell_placement(const CaseConfig& config) {
-  // Surface samples this far apart: two cells 0.3 μm apart are told from touching ones,
-  // and the surface between samples bulges by less than spacing²/(8 × curvature radius).
-  const double sample_spacing = 0.15;
-  const std::string& file = config.source_file;
-  const auto cell_key = [](std::size_t i, const char* field) {
-    return "cells[" + std::to_string(i) + "]." + field;
-  };
-
-  // Each cell's kind; each kind's samples once (body frame) and its bounding radius.
-  struct KindSamples {
-    std::vector<Vector3> samples;
-    double bounding_radius = 0.0;
-  };
-  std::map<std::size_t, KindSamples> samples_of_kind;
-  std::vector<std::size_t> kind_of_cell(config.cells.size());
-  for (std::size_t i = 0; i < config.cells.size(); ++i) {
-    const auto& name = config.cells[i].kind;
-    const auto found = std::find_if(config.cell_kinds.begin(), config.cell_kinds.end(),
-                                    [&](const CellKindConfig& kind) { return kind.name == name; });
-    if (found == config.cell_kinds.end()) {
-      std::string known;
-      for (const auto& kind : config.cell_kinds) known += (known.empty() ? "\"" : ", \"") + kind.name + "\"";
-      throw InputError(file, cell_key(i, "kind"),
-                       "unknown cell kind \"" + name + "\"; the kinds are " + (known.empty() ? "(none)" : known));
-    }
-    kind_of_cell[i] = static_cast<std::size_t>(found - config.cell_kinds.begin());
-    if (samples_of_kind.count(kind_of_cell[i])) continue;
-    KindSamples entry;
-    try {
-      entry.samples = cell_surface_samples(*found, sample_spacing);
-    } catch (const std::runtime_error& error) {
-      throw InputError(file, "cell_kinds." + found->name, error.what());
-    }
-    for (const auto& p : entry.samples)
-      entry.bounding_radius = std::max(entry.bounding_radius, std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]));
-    entry.bounding_radius += sample_spacing;  // the surface between samples
-    samples_of_kind.emplace(kind_of_cell[i], std::move(entry));
-  }
-
-  // Inside the domain: every sample, placed, within [lower, upper] along each axis.
-  std::vector<Matrix3> rotation(config.cells.size());
-  const char* axis_names[3] = {"x", "y", "z"};
-  for (std::size_t i = 0; i < config.cells.size(); ++i) {
-    const auto& cell = config.cells[i];
-    rotation[i] = placement_rotation(cell);
-    Vector3 lowest{+INFINITY, +INFINITY, +INFINITY}, highest{-INFINITY, -INFINITY, -INFINITY};
-    for (const auto& p : samples_of_kind.at(kind_of_cell[i]).samples) {
-      const Vector3 rotated = multiply(rotation[i], p);
-      for (int axis = 0; axis < 3; ++axis) {
-        lowest[axis] = std::min(lowest[axis], cell.center[axis] + rotated[axis]);
-        highest[axis] = std::max(highest[axis], cell.center[axis] + rotated[axis]);
-      }
-    }
-    if (config.vessel.enabled) {
-      check_inside_vessel(config, i, samples_of_kind.at(kind_of_cell[i]).samples, rotation[i]);
-      continue;
-    }
-    for (int axis = 0; axis < 3; ++axis) {
-      const double lower = config.domain.lower[axis], upper = config.domain.upper[axis];
-      if (lowest[axis] < lower || highest[axis] > upper)
-        throw InputError(file, cell_key(i, "center_um"),
-                         "cell " + std::to_string(i) + " (" + cell.kind + ") reaches outside the fluid domain: its surface spans [" +
-                             format_number(lowest[axis]) + ", " + format_number(highest[axis]) + "] μm along " +
-                             axis_names[axis] + ", the domain [" + format_number(lower) + ", " + format_number(upper) +
-                             "] μm");
-    }
-  }
-
-  // Overlaps: only pairs whose bounding spheres meet, found by sweeping along x over the
-  // cells sorted by centre x; then no sample of either inside the other.
-  double largest_radius = 0.0;
-  for (const auto& entry : samples_of_kind) largest_radius = std::max(largest_radius, entry.second.bounding_radius);
-  std::vector<std::size_t> by_x(config.cells.size());
-  for (std::size_t i = 0; i < by_x.size(); ++i) by_x[i] = i;
-  std::sort(by_x.begin(), by_x.end(), [&](std::size_t l, std::size_t r) {
-    return config.cells[l].center[0] < config.cells[r].center[0] || (config.cells[l].center[0] == config.cells[r].center[0] && l < r);
-  });
-  std::vector<std::pair<std::size_t, std::size_t>> near_pairs;  // (later cell j, earlier cell i)
-  for (std::size_t a = 0; a < by_x.size(); ++a) {
-    const std::size_t i = by_x[a];
-    const double radius_i = samples_of_kind.at(kind_of_cell[i]).bounding_radius;
-    for (std::size_t b = a + 1; b < by_x.size(); ++b) {
-      const std::size_t j = by_x[b];
-      if (config.cells[j].center[0] - config.cells[i].center[0] > radius_i + largest_radius) break;
-      const double radius_j = samples_of_kind.at(kind_of_cell[j]).bounding_radius;
-      double distance_squared = 0.0;
-      for (int axis = 0; axis < 3; ++axis) {
-        const double d = config.cells[j].center[axis] - config.cells[i].center[axis];
-        distance_squared += d * d;
-      }
-      if (distance_squared < (radius_i + radius_j) * (radius_i + radius_j))
-        near_pairs.emplace_back(std::max(i, j), std::min(i, j));
-    }
-  }
-  std::sort(near_pairs.begin(), near_pairs.end());  // report the first pair in file order
-  const auto any_sample_inside = [&](std::size_t from, std::size_t into) {
-    const auto& into_kind = config.cell_kinds[kind_of_cell[into]];
-    for (const auto& p : samples_of_kind.at(kind_of_cell[from]).samples) {
-      const Vector3 rotated = multiply(rotation[from], p);
-      Vector3 relative;
-      for (int axis = 0; axis < 3; ++axis)
-        relative[axis] = config.cells[from].center[axis] + rotated[axis] - config.cells[into].center[axis];
-      if (inside_cell(into_kind, multiply_transposed(rotation[into], relative))) return true;
-    }
-    return false;
-  };
-  for (const auto& [j, i] : near_pairs) {
-    if (any_sample_inside(j, i) || any_sample_inside(i, j))
-      throw InputError(file, cell_key(j, "center_um"),
-                       "cell " + std::to_string(j) + " (" + config.cells[j].kind + ") overlaps cells[" + std::to_string(i) +
-                           "] (" + config.cells[i].kind + " at " + format_point(config.cells[i].center) + " μm)");
-  }
 }
 
 }  // namespace rouleau

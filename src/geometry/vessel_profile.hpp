@@ -14,12 +14,18 @@
 // contraction (reversed across the diffuser): smooth (dr/dx continuous, zero at both
 // ends), or a straight cone. A tube is R_t = R with L_c = L_t = L_d = 0.
 // Host-only: includes no Kokkos header.
+#include <array>
 #include <optional>
 #include <string>
+
+#include "geometry/named_choice.hpp"
 
 namespace rouleau {
 
 enum class VesselTransition { cosine, cone };
+// The case-file spelling of each transition (key vessel.transition).
+inline constexpr std::array<NamedChoice<VesselTransition>, 2> vessel_transition_names{
+    {{VesselTransition::cosine, "cosine"}, {VesselTransition::cone, "cone"}}};
 
 struct VesselProfile {
   double radius = 5.0;              // R, inlet and outlet [μm]

@@ -8,17 +8,12 @@ folder of the repository, and a #anchor in a Markdown target must name one of it
 headings (GitHub's rule: lower case, punctuation dropped, spaces to hyphens). Web links
 (http:, https:, mailto:) are not checked. Prints one line per broken link and exits 1 when
 there is any.
-
-PENDING lists pages that another branch generates (docs/case-file.md comes from the case
-loader's key table): a link to one of them is reported but does not fail the check.
 """
 import argparse
 import os
 import re
 import subprocess
 import sys
-
-PENDING = {"docs/case-file.md"}
 
 LINK = re.compile(r"!?\[(?:[^\[\]]|\[[^\]]*\])*\]\(\s*<?([^)\s>]+)>?(?:\s+\"[^\"]*\")?\s*\)")
 FENCE = re.compile(r"^\s*(```|~~~)")
@@ -68,7 +63,7 @@ def main():
     root = os.path.abspath(args.root)
     files = subprocess.run(["git", "ls-files", "*.md"], cwd=root, capture_output=True, text=True,
                            check=True).stdout.split()
-    broken = pending = checked = 0
+    broken = checked = 0
     for name in files:
         path = os.path.join(root, name)
         for number, line in lines_outside_code(path):
@@ -85,17 +80,13 @@ def main():
                 if relative.startswith(".."):
                     print(f"{where}: points outside the repository")
                     broken += 1
-                elif relative in PENDING and not os.path.exists(resolved):
-                    print(f"{where}: pending (generated on another branch), not checked")
-                    pending += 1
                 elif not os.path.exists(resolved):
                     print(f"{where}: no such file")
                     broken += 1
                 elif anchor and resolved.endswith(".md") and anchor not in anchors(resolved):
                     print(f"{where}: no heading #{anchor} in {relative}")
                     broken += 1
-    print(f"check_doc_links: {len(files)} files, {checked} relative links, {broken} broken"
-          + (f", {pending} to pending pages" if pending else ""))
+    print(f"check_doc_links: {len(files)} files, {checked} relative links, {broken} broken")
     return 1 if broken else 0
 
 

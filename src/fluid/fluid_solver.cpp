@@ -129,6 +129,13 @@ void zero_rows(const Kokkos::View<int*>& rows, const Vector& v) {
       KOKKOS_LAMBDA(const int i) { v(rows(i)) = 0.0; });
 }
 
+// v *= factor (a free function: CUDA forbids extended lambdas in private member functions).
+void scale(const Vector& v, const double factor) {
+  Kokkos::parallel_for(
+      "rouleau::FluidSolver::scale", Kokkos::RangePolicy<ExecSpace>(0, v.extent(0)),
+      KOKKOS_LAMBDA(const int i) { v(i) *= factor; });
+}
+
 GmresSettings gmres_settings(const SolverConfig& s) {
   GmresSettings g;
   g.restart = s.gmres_restart;
@@ -331,9 +338,7 @@ void FluidSolver::load_immersed_forces(const ImmersedTerms& immersed) {
   const auto load = immersed_load_;
   const double inverse_force_scale = 1.0 / scales_.force();
   exchange_->localize(immersed.loads, load);
-  Kokkos::parallel_for(
-      "rouleau::FluidSolver::immersed_load", Kokkos::RangePolicy<ExecSpace>(0, load.extent(0)),
-      KOKKOS_LAMBDA(const int i) { load(i) *= inverse_force_scale; });
+  scale(load, inverse_force_scale);
   operator_.set_immersed_load(immersed_load_);
   operator_.set_immersed_load_in_stabilization(immersed.loads_in_stabilization);
 }

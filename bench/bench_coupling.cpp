@@ -1,4 +1,4 @@
-// Time per coupled step and per stage (DESIGN.md, "One time step"), for one and four red
+// Time per coupled step and per stage (docs/design.md, "One time step"), for one and four red
 // blood cells in a simple-shear box, at two fluid resolutions, against the same box
 // without cells in the same run (the coupling's overhead).
 //

@@ -1,4 +1,4 @@
-// Strong and weak scaling of the distributed fluid solve (issue 10, item 6): run under
+// Strong and weak scaling of the distributed fluid solve (bench/mpi.md): run under
 // `mpiexec -n P`, it times on the shear box (periodic in x and z, moving walls in y,
 // Stokes limit, the element path on every rank) the pieces of a GMRES iteration across
 // ranks and writes one CSV row (rank 0):

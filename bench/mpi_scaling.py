@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Scaling across MPI ranks (issue 10, item 6): measured from 1 to 2 ranks here, modelled
+"""Scaling across MPI ranks (bench/mpi.md): measured from 1 to 2 ranks here, modelled
 out to 1000.
 
 Measured (bench/mpi_scaling under mpiexec, the shear box with 1 um elements, Stokes limit,

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Scaling (issue 8, item 6): time per step against problem size, per stage, with the
+"""Scaling (bench/scaling.md): time per step against problem size, per stage, with the
 slope of log(time) against log(size) fitted for the whole step and for each stage. A
 stage whose fitted slope exceeds 1.2 is flagged "grows faster than linear".
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""What a scene does not need (issue 8, item 5): each paper case run for a few steps at
+"""What a scene does not need (bench/scenes.md): each paper case run for a few steps at
 full resolution with its skips (scene.skip_unneeded_stages = true, the default; the
 "variant") and without them (the "baseline"), from the same start. Prints, per case, the time per stage both ways, the
 speed-up, and how far the two runs' diagnostics differ (they must agree to round-off:
@@ -13,7 +13,7 @@ Any other pair of settings compares the same way, e.g. the two scalable precondi
     /usr/bin/python3 bench/scene_skips.py --baseline 'solver.preconditioner="ilu0"' \
         --variant 'solver.preconditioner="multigrid"' --out bench/preconditioners.csv
 
-and the variant may run under a launcher, e.g. on two MPI ranks against one (issue 10):
+and the variant may run under a launcher, e.g. on two MPI ranks against one (bench/mpi.md):
 
     /usr/bin/python3 bench/scene_skips.py --baseline 'solver.preconditioner="block_jacobi"' \
         --variant 'solver.preconditioner="block_jacobi"' \

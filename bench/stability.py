@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Stability map (issue 8, item 2): short reduced runs swept over the time step, for each
+"""Stability map (bench/stability.md): short reduced runs swept over the time step, for each
 coupling scheme, against the explicit coupling's predicted stable step (rouleau check
 prints it: C μ h_f / G_eff), over the cell stiffness (normal to sickle), the shear rate
 (0.25 to 100 1/s), the Morse strength, and three hard cases on purpose: two cells touching
@@ -9,7 +9,7 @@ its diameter.
 Each run ends one of four ways, and the map shows which:
   stable    exit 0, no NaN in the diagnostics, volumes within 1 % of the start;
   diverged  exit 3 with the divergence message (step, stage, values) naming a last good
-            checkpoint that exists and is whole: the clean failure DESIGN.md asks for;
+            checkpoint that exists and is whole: the clean failure of docs/running.md, "Divergence";
   drifting  exit 0 with a volume off by more than 1 % after --steps steps. Such a run is
             run again for --confirm-steps steps: if it then stops with the divergence
             message it is *diverged* (late), if it still ends with exit 0 and its volumes

@@ -1,4 +1,4 @@
-// Work–precision of the fluid solver (issue 8, item 1): the manufactured Navier–Stokes
+// Work–precision of the fluid solver (bench/work_precision.md): the manufactured Navier–Stokes
 // problem (fluid/manufactured_solution.hpp, Re = 1, steady, Newton) and its Stokes limit
 // (Re = 0) solved on n³ boxes of hexahedra and of tetrahedra (each hexahedron cut in six),
 // with ILU(0) and with the aggregation multigrid. Every point is a real solve from the

@@ -1,4 +1,4 @@
-// Work–precision of the cells (issue 8, item 1), three families.
+// Work–precision of the cells (bench/work_precision.md), three families.
 //
 // 1. sphere_rotation, the immersed coupling: a stiff sphere in simple
 // shear (tests/sphere_in_shear.hpp: filled neo-Hookean sphere, a = 2 μm, walls 16 radii

@@ -1,6 +1,6 @@
 #pragma once
 // The explicit move of the cell nodes with the velocity interpolated from the fluid
-// (DESIGN.md, "Coupling"): v_I^{n+1} = U v̂_I (v̂ interpolated from the scaled fluid
+// (docs/method.md, "The coupling"): v_I^{n+1} = U v̂_I (v̂ interpolated from the scaled fluid
 // state), x_I^{n+1} = x_I^n + Δt v_I^{n+1}, keeping v_I^n for dv/dt. Reduces (with
 // Kokkos::Max) the largest speed squared; a velocity that is NaN or Inf reduces to
 // non_finite_speed2 and its node is not moved.

@@ -1,5 +1,5 @@
 #pragma once
-// The Stokes operator of a uniform box as a stencil (issue 8, item 5).
+// The Stokes operator of a uniform box as a stencil (docs/method.md, "The uniform-box stencil").
 //
 // On a structured box of identical hexahedra in the Stokes limit every element has the
 // same matrix, so the assembled operator at a dof node n is a 27-point stencil over the

@@ -3,7 +3,7 @@
 //   F_I = f_I^elastic + f_I^Morse + f_I^wall + m_I (g − (v_I^n − v_I^{n−1}) / Δt),
 // with m_I = (ρ_s − ρ_f) V_I the node's excess mass (V_I: a quarter of the reference
 // volume of each tetrahedron at I). With viscosity ratio 1, ∇·σ_s − ∇·σ_f reduces to the
-// elastic force (DESIGN.md, "Coupling"). Missing stages pass empty Views.
+// elastic force (docs/method.md, "The coupling"). Missing stages pass empty Views.
 #include <Kokkos_Core.hpp>
 
 namespace rouleau {

@@ -1,5 +1,5 @@
 #pragma once
-// Health checks of the state after a step (DESIGN.md, "Divergence"): the first entry of a
+// Health checks of the state after a step (docs/running.md, "Divergence"): the first entry of a
 // field that is NaN or Inf, and the most compressed solid element, J = det F smallest
 // (J ≤ 0: the tetrahedron is inverted). Each is one reduction; the run stops at the step
 // where one fails and names what it found.

@@ -1,5 +1,5 @@
 #pragma once
-// The gap between two cells' outer surfaces and their contact area (issue 7: the paper's
+// The gap between two cells' outer surfaces and their contact area (for the paper's
 // aggregation scenes). For every surface node of one cell, the distance to the nearest
 // surface triangle of the other: the smallest is the gap; the surface (nodal area weights)
 // closer than a contact distance is the contact area, seen from that cell.

@@ -1,6 +1,6 @@
 #pragma once
 // Short-range repulsion of cell surface nodes from the wall of a vessel (an axisymmetric
-// lumen along x, radius R(x)), so that cells are kept from crossing it (issue 6).
+// lumen along x, radius R(x)), so that cells are kept from crossing it (docs/vessels.md).
 //
 // A surface node a at axial position x and distance r from the axis is d = R(x) − r from
 // the wall, measured radially (on a wall sloped by θ the normal distance is d cos θ: at

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Every study of bench/README.md in one command (issue 8): installs what is missing,
+# Every study of bench/README.md in one command: installs what is missing,
 # builds, then runs, one at a time on an otherwise idle machine,
 #   1. the kernel benchmarks (Google Benchmark; JSON into bench/results/), each with the
 #      STREAM-like triad and the peak-flops loop of the same run, on 1 and on all threads;
@@ -7,7 +7,7 @@
 #   3. the stability map (bench/stability.py);
 #   4. the scaling study (bench/scaling.py);
 #   5. each paper scene with and without its skips (bench/scene_skips.py);
-#   6. MPI (issue 10): the operator's scaling and model (bench/mpi_scaling.py), and whole
+#   6. MPI: the operator's scaling and model (bench/mpi_scaling.py), and whole
 #      scenes on 2 ranks against 1 (bench/scene_skips.py under mpiexec: bench/mpi_scenes_*.csv).
 # The CSVs and figures land under bench/, where the README reads them. Hours in all
 # (the stability map and the scenes dominate); a step can be picked by name:

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# The long tier (DESIGN.md, "CI"): installs what is missing, builds, and runs the
+# The long tier: installs what is missing, builds, and runs the
 # validations at full resolution, the tests labelled "long" (tests/long_*.cpp), one at a
-# time on every core. Times are recorded in README.md ("Tests").
+# time on every core. Times are recorded in docs/development.md ("Test tiers").
 #   scripts/long_tier.sh [ctest arguments...]     e.g. -R Ca005 for one test
 set -euo pipefail
 root_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)

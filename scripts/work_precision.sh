@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The work–precision study of issue 8 (bench/README.md): every point a real solve, the CSV
+# The work–precision study (bench/work_precision.md): every point a real solve, the CSV
 # and the log–log figure written under bench/. Arguments go to bench/work_precision
 # (--sizes 4,8,16 or --quick for a short run). Threads: OMP_NUM_THREADS (default 1).
 #   scripts/work_precision.sh [build-dir] [work_precision arguments...]

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # A case driver stopped by SIGTERM names itself in the command that continues the run, so
-# that its checks run at the end of the continued run (issue 9's "nothing lost" for the
-# drivers): the plasma shear flow's driver, 20 000 steps of 1 ms, is stopped once its first
+# that its checks run at the end of the continued run (a stopped run loses nothing, for the
+# drivers too): the plasma shear flow's driver, 20 000 steps of 1 ms, is stopped once its first
 # checkpoint exists; it must exit 4 and print "<driver> --restart <out>"; that command then
 # finishes the run (a few steps later) with exit 0 and the driver's own report.
 #   case_driver_stop_and_continue.sh DRIVER OUTPUT_DIR

@@ -1,8 +1,8 @@
 // Long tier (ctest -L long; scripts/long_tier.sh): a neo-Hookean capsule in simple shear
-// against the published steady Taylor deformation of a thin membrane (issue 5;
-// Ramanujan & Pozrikidis 1998, Doddi & Bagchi 2008: D ≈ 0.27 at Ca = 0.05, ≈ 0.39 at
+// against the published steady Taylor deformation of a thin membrane
+// (Ramanujan & Pozrikidis 1998, Doddi & Bagchi 2008: D ≈ 0.27 at Ca = 0.05, ≈ 0.39 at
 // Ca = 0.1) and the small-deformation limit D → (25/4) Ca (Barthès-Biesel & Rallison 1981)
-// at Ca = 0.0125, with Ca = μ γ̇ a / E_s, E_s = 3 G_s (DESIGN.md, the capsule test
+// at Ca = 0.0125, with Ca = μ γ̇ a / E_s, E_s = 3 G_s (the references'
 // convention). Each runs cases/capsule_shear/case.toml (thin shell, a/h_f = 5.5) with the
 // walls set for its Ca, about 10 minutes on 2 cores.
 #include <gtest/gtest.h>

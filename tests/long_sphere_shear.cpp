@@ -2,7 +2,7 @@
 // tests/sphere_in_shear.hpp with walls 16 radii apart (d = 8a), where the wall-corrected
 // reference ω_z = −(γ̇/2)(1 − (5/8)/512) is accurate to ~0.01 % (next reflections
 // O((a/d)⁵), periodic images 16a apart: (a/16a)³ = 2.4e-4), so the error left is the
-// method's: it must fall as the fluid mesh is refined, a/h = 1, 2, 3 (issue 5), and stay
+// method's: it must fall as the fluid mesh is refined, a/h = 1, 2, 3, and stay
 // within 5e-4. The sphere is meshed at the "fine" preset: a faceted coarse sphere turns
 // differently by up to 0.2 % once the fluid mesh resolves its facets (measured: 0.03 %,
 // 0.10 %, 0.23 % at a/h = 1, 2, 3 with the coarse mesh). Measured: 3.4e-4, 3.2e-4,

@@ -1,6 +1,6 @@
 #pragma once
 // The optical-tweezers stretch of one red blood cell as a static solve of the solid alone
-// (Mills, Qie, Dao, Lim & Suresh 2004; DESIGN.md, Decisions → Cells), for
+// (Mills, Qie, Dao, Lim & Suresh 2004; docs/method.md, "Static stretch"), for
 // tests/test_mills_stretch.cpp (whose head says what is compared and measured) and the
 // work–precision study (bench/work_precision_cells.cpp): Mills et al.'s data, the two
 // membrane laws, and the solve.

@@ -1,4 +1,4 @@
-// The distributed fluid operator on 2 (or more) MPI ranks (issue 10): the shared nodes'
+// The distributed fluid operator on 2 (or more) MPI ranks: the shared nodes'
 // exchange (NodeHalo) and the rank-local operators give the single-rank answer to
 // round-off. Every rank also builds the whole mesh and its operator, the reference.
 // Also the gather of whole vectors on one rank for output and checkpoints (RootGather), and

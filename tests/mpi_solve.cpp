@@ -1,4 +1,4 @@
-// Distributed GMRES solves on 2 (or more) MPI ranks (issue 10): the Stokes system of the
+// Distributed GMRES solves on 2 (or more) MPI ranks: the Stokes system of the
 // shear box (moving walls at y = ±5 μm, periodic in x and z, the pressure pinned at one
 // node) with a manufactured right-hand side b = A x*, solved to 1e-10 by one rank and by
 // all ranks together (each rank's operator completing its element sums across ranks),

@@ -1,5 +1,5 @@
 #pragma once
-// The meshes the MPI layer's tests partition (issue 10): the shear box of the paper's
+// The meshes the MPI layer's tests partition: the shear box of the paper's
 // scenes, small and graded in y, periodic in x and z (block partition), and its
 // tetrahedra (a METIS partition: the path of Gmsh vessels) when the build has METIS.
 #include <vector>

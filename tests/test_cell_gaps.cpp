@@ -1,7 +1,7 @@
 // Gaps and contact areas between cells (kernels/surface_gap.hpp, src/cells/cell_gaps): the
 // point–triangle distance against a plain serial reference by another construction, and
 // two capsules at a known separation against the exact sphere–sphere gap and the contact
-// area of two spheres (issue 7).
+// area of two spheres.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -125,7 +125,7 @@ TEST(Coupling, CapsuleDeformsInProportionToCaAndKeepsItsVolume) {
   // 1981: D → (25/4) Ca), so doubling Ca from 0.0125 doubles D, less the O(Ca²) term's
   // 3 % (the long tier's D / (25/4) Ca falls from 0.90 at Ca = 0.0125 to 0.82 at 0.05);
   // D stays below the limit (well below at this resolution: D converges from below as
-  // a/h_f grows, README.md; the long tier checks the values); the enclosed volume is kept
+  // a/h_f grows, docs/validation.md; the long tier checks the values); the enclosed volume is kept
   // within 1 %.
   const std::vector<std::string> coarse{"domain.elements=[18, 23, 18]", "time.dt_s=2e-4", "time.end_s=0.02"};
   const auto small = rouleau::testing::run_capsule(0.0125, coarse);

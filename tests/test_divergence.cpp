@@ -1,5 +1,5 @@
 // Each cause of divergence stops the step with the stage and the offending values named
-// (DESIGN.md, "Divergence"; issue 9): a NaN in the fluid state, a NaN reaching a cell's
+// (docs/running.md, "Divergence"): a NaN in the fluid state, a NaN reaching a cell's
 // forces, an inverted cell element, a cell that has left the fluid domain. Each test
 // breaks one thing in a running two-capsule scene and checks the DivergenceError's
 // message. (GMRES not converging and a cell's volume drift are tested through the

@@ -306,8 +306,8 @@ TEST(FluidFlows, Ilu0NeedsFarFewerIterationsThanBlockJacobi) {
 
 TEST(FluidFlows, MultigridIterationsBarelyGrowWithTheMesh) {
   // The Stokes manufactured problem at 8³ and 16³ with the aggregation multigrid
-  // (W-cycle): the GMRES iterations may grow by at most 1.5× per halving of h (issue 8,
-  // DESIGN.md), on hexahedra and on tetrahedra, and it reaches ILU(0)'s solution. ILU(0)
+  // (W-cycle): the GMRES iterations may grow by at most 1.5× per halving of h,
+  // on hexahedra and on tetrahedra, and it reaches ILU(0)'s solution. ILU(0)
   // alone nearly doubles its count (printed for comparison). Measured: hexahedra 12, 15
   // (ILU(0) 22, 41), tetrahedra 15, 19 (ILU(0) 30, 63); at 24³ multigrid needs 19 and 25,
   // ILU(0) 65 and 103 (2.5 min, so not in the quick tier).

@@ -3,7 +3,7 @@
 // between device Views (BDF history, preconditioner input), but nothing through a host
 // mirror. On a GPU build a
 // host mirror is the only way a field reaches the host, so this guards the hot path
-// against per-step host-device copies (DESIGN.md: the host only reads scalars).
+// against per-step host-device copies (docs/design.md: the host only reads scalars).
 #include <gtest/gtest.h>
 
 #include <Kokkos_Core.hpp>

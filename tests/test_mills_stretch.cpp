@@ -1,6 +1,6 @@
 // The optical-tweezers stretch of one red blood cell (Mills, Qie, Dao, Lim & Suresh 2004,
-// Mech. Chem. Biosystems 1, 169) as a static solve of the solid alone (DESIGN.md,
-// Decisions → Cells): a hollow Evans–Fung shell (h = 0.36 μm, the paper's mesh resolution:
+// Mech. Chem. Biosystems 1, 169) as a static solve of the solid alone (docs/method.md,
+// "Static stretch"): a hollow Evans–Fung shell (h = 0.36 μm, the paper's mesh resolution:
 // 1238 nodes, 3767 tetrahedra) pulled by a force F spread as a uniform traction over the
 // outer-surface nodes within a 2 μm contact patch at each end of a diameter (x), along the
 // line through the patches' centres (src/cells/static_equilibrium.hpp).
@@ -44,7 +44,7 @@
 //    the area within 2 % at 193 pN (+1.4 %), and a stiffer k_A changes little: k_A = 3000
 //    (+0.5 %) gives 16.55 μm axial at 193 pN against 16.77 μm here, k_A = 300 (+3.7 %)
 //    17.25 μm. It is far below the membrane's local dilation modulus (5e5 pN/μm,
-//    DESIGN.md): a global term keeps the total area with a much smaller modulus.
+//    the paper's): a global term keeps the total area with a much smaller modulus.
 //    MillsStretch.MillsMembraneInsideMillsErrorBars: inside every bar from 0 to 193 pN.
 //    Both options are needed: without the hardening the axial diameter is 22.8 μm at
 //    193 pN; without the area constraint it is 14.1 μm at 68 pN (bar up to 13.8) and
@@ -395,7 +395,7 @@ TEST(MillsStretch, MillsMembraneInsideMillsErrorBars) {
 }
 
 // The evidence behind the head of this file: membrane shear modulus (the paper's 4.2, the
-// 5.3 Mills et al. fitted, stiffer), Poisson ratio (DESIGN.md's 0.45–0.49), the enclosed
+// 5.3 Mills et al. fitted, stiffer), Poisson ratio (0.45–0.49), the enclosed
 // volume held, and the Mills membrane's ingredients one at a time (strain hardening, area
 // constraint and its modulus, volume), at 68 and 193 pN.
 // About 17 s on one core: run with --gtest_also_run_disabled_tests.

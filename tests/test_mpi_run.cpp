@@ -1,4 +1,4 @@
-// `mpirun -np 2 rouleau run` (issue 10) through the real executable: the fluid split
+// `mpirun -np 2 rouleau run` through the real executable: the fluid split
 // across two ranks, every cell on both, each computed by the rank holding its centroid
 // (the rank owning the fluid node nearest to it). Compared with
 // the same case on one rank:

@@ -1,4 +1,4 @@
-// The fluid mesh split across ranks (issue 10), checked in one process by building every
+// The fluid mesh split across ranks, checked in one process by building every
 // rank's partition: the block grid cuts the fewest faces; every element, every dof node
 // and every boundary face has exactly one owner; the shared-node lists of two ranks match entry for entry; and the
 // rank-local operators, their element sums added at the owners, give the whole mesh's

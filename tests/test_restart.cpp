@@ -1,4 +1,4 @@
-// Never lose a run (issue 9): checkpoints, restart and signals through the real
+// Never lose a run: checkpoints, restart and signals through the real
 // executable. A restart repeats the straight run bit for bit on the same thread count and
 // to round-off on another; a damaged checkpoint is passed over; SIGTERM finishes the step
 // and checkpoints (exit 4), a second signal exits at once (128 + N) leaving no damaged

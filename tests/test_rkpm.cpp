@@ -199,7 +199,7 @@ TEST(Rkpm, SupportNodesAreEveryNodeOfTheRowsOnce) {
 }
 
 TEST(Rkpm, RestrictedRowsAreTheFullRowsOfTheActivePointsAndEmptyElsewhere) {
-  // restrict_rows (a rank's own and ghost cells, issue 10): against the rows of every
+  // restrict_rows (a rank's own and ghost cells): against the rows of every
   // point, the active points' rows are the same nodes and shape functions bit for bit,
   // the others are empty (interpolation gives them zero, spreading takes nothing from
   // them), and a point outside the fluid is refused only when it is active.

@@ -132,7 +132,7 @@ TEST(Scenes, CapsuleMovingWithTheWholeVelocityEntersTheCapillary) {
   // cases/capillary coarsened (3.0/1.5 um elements), the capsule started at the capillary's
   // entrance (centre at x = 17 um, the capillary from 20 um), 20 semi-implicit steps of
   // 1e-3 s. Moving with u_h alone, the plasma passes through the capsule in PSPG's
-  // subscale velocity u' (README "Mass at the membranes"): between 0.01 and 0.02 s it
+  // subscale velocity u' (docs/validation.md, "Mass at the membranes"): between 0.01 and 0.02 s it
   // creeps (measured: 1.8 um/s) and the driving pressure rises slowly (9.4 Pa/s). Moving
   // with u_h + u' (the case file) it is pushed in: at least three times as fast (measured:
   // 9.8 um/s) with the pressure rising at least twice as fast (46.6 Pa/s); 18 s on one thread.

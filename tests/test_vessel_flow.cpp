@@ -1,4 +1,4 @@
-// Flow in Gmsh vessels on tetrahedra (issue 6): Hagen–Poiseuille flow in a tube against
+// Flow in Gmsh vessels on tetrahedra: Hagen–Poiseuille flow in a tube against
 // the exact solution (velocity profile, flow rate, pressure drop 8 μ L Q / (π R⁴)) with
 // measured convergence rates, and the flow rate through the cross-sections of a contraction.
 #include <gtest/gtest.h>
@@ -117,7 +117,7 @@ TEST(VesselFlow, HagenPoiseuilleInATubeConverges) {
 // at about first order (−1.7e-2, −1.3e-2, −8.4e-3 from h = 0.57 to 0.28; at h = 0.8 errors
 // of both signs cancel), because the mean pressure on the inlet's nodes approaches the
 // imposed Δp only as fast as the pressure next to the inlet's rim converges (the tetrahedra
-// there have all their nodes on the boundary: README, "Vessels").
+// there have all their nodes on the boundary: docs/validation.md, "Vessels").
 TEST(VesselFlow, PressureDrivenTubeCarriesHagenPoiseuillesFlowRate) {
   const double radius = 2.0, length = 8.0, drop = 16.0;
   const double exact = pi * std::pow(radius, 4) * drop / (8.0 * length);

@@ -1,6 +1,6 @@
 // The vessels' radius profile (src/geometry/vessel_profile): a tube, a contraction with
 // cosine and conical transitions, the exact lumen volume against numerical quadrature,
-// and the refusal of bad geometry with the key and the reason (issue 6).
+// and the refusal of bad geometry with the key and the reason.
 #include <gtest/gtest.h>
 
 #include <cmath>

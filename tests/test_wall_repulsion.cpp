@@ -1,7 +1,7 @@
 // The vessel wall's repulsion of cell surface nodes (kernels/wall_repulsion.hpp): the force
 // against minus the gradient of the energy, against a plain serial reference on the exact
 // profile, its range and contact pressure, and a node pushed at the wall coming to rest at
-// the distance where the two forces balance (issue 6).
+// the distance where the two forces balance.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -100,7 +100,7 @@ class BasicCellPopulation {
   // population's own state (internal_forces(), the constraints' tensions and pressures)
   // as it is.
   void internal_forces_at(const NodeVectors& positions, const NodeVectors& forces) const;
-  // This rank's share of the elastic work when the cells are on every rank (issue 10):
+  // This rank's share of the elastic work when the cells are on every rank:
   // the two calls above then give the forces and energy of `cells` (ascending, each once)
   // alone (their elements and constraints; zero at the other cells' nodes), and the shares
   // of all ranks sum to the whole. Every cell by default. Throws std::invalid_argument on

@@ -4,7 +4,7 @@
 //                G = Σ_n w_n r_n r_nᵀ (r_n = (x_n − x_c, y_n − y_c), w_n the nodes' area
 //                weights), in degrees in (−90, 90];
 //   L, B         the largest and smallest distance to the centroid of the membrane's
-//                mid-surface in the shear plane (DESIGN.md, capsule test): among the
+//                mid-surface in the shear plane (docs/validation.md, "The coupling"): among the
 //                outer-surface nodes in a slab |z − z_c| < δ about the cell's mid-plane,
 //                δ = 0.6 × the mean outer-surface edge, the largest and smallest distance
 //                less the membrane's depth below the outer surface (half the thickness of

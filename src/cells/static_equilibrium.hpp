@@ -8,9 +8,9 @@
 //
 // i.e. a stationary point of the total potential energy Π = W + Π_ext (f_ext = −∂Π_ext/∂x;
 // W the elastic energy, strain energy plus area term). Used for
-// the optical-tweezers stretching test (Mills et al. 2004; DESIGN.md, Decisions → Cells:
-// "a static solve of the solid alone ... forces spread over the nodes within a 2 μm patch
-// at each end").
+// the optical-tweezers stretching test (Mills et al. 2004; docs/method.md, "Static stretch":
+// a static solve of the solid alone, the force spread over the nodes within a 2 μm patch
+// at each end).
 //
 // Method: FIRE 2.0 (Bitzek et al., PRL 97, 170201, 2006; Guénolé et al., Comput. Mater.
 // Sci. 175, 109584, 2020), a damped dynamic relaxation that needs only forces. It runs a

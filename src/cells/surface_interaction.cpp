@@ -50,7 +50,7 @@ void points_to_nodes(const PointVectors& points, const Kokkos::View<int* [3]>& p
 
 // On host threads the half list's rows run in blocks of 64, interleaved with stride 64
 // (InterleavedRows) over a static partition: balanced threads, and the same sums in the
-// same order on every run and restart with a given thread count (issue 9; dynamic
+// same order on every run and restart with a given thread count (dynamic
 // scheduling balanced them too but regrouped the sums run to run). On a GPU each row is a
 // thread anyway: the plain order keeps neighbouring rows together.
 template <class ExecSpace>

@@ -28,7 +28,7 @@ class BasicSurfaceInteraction {
 
   // `cell_kind[c]`: the kind index of cell c; `potentials[a * num_kinds + b]`: the law
   // between kinds a and b (symmetric). `skin` [μm] > 0. `half_list` chooses the pair loop
-  // (the half list is 1.3–1.9× faster on CPU threads, bench/README.md), `quadrature` the
+  // (the half list is 1.3–1.9× faster on CPU threads, bench/kernels.md), `quadrature` the
   // surface points.
   BasicSurfaceInteraction(const Population& cells, const std::vector<int>& cell_kind, int num_kinds,
                           const std::vector<MorsePotential>& potentials, double skin, bool half_list = true,
@@ -94,7 +94,7 @@ class BasicSurfaceInteraction {
   // (compute_forces() calls it when the list is stale).
   void rebuild();
 
-  // This rank's share of the pair work when the cells are on every rank (issue 10): the
+  // This rank's share of the pair work when the cells are on every rank: the
   // list's rows are the points of `cells` alone (their columns any point), so the forces,
   // the energy and the stiffness are those of the pairs rooted at them, and the shares of
   // all ranks sum to the whole; a half list is then balanced (kernels/surface_neighbors.hpp).

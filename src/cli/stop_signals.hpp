@@ -1,5 +1,5 @@
 #pragma once
-// Stopping a long run cleanly on a signal (DESIGN.md, "Configuration, errors, output"):
+// Stopping a long run cleanly on a signal (docs/running.md, "Signals"):
 //   SIGINT, SIGTERM  the first asks the time loop to finish the current step, write a
 //                    checkpoint and exit with ExitCode::interrupted (4); a second one ends
 //                    the process at once with 128 + the signal's number (every file is

@@ -100,7 +100,7 @@ struct SolverConfig {
   int gmres_restart = 60;
   double gmres_rtol = 1e-8;                       // relative to the right-hand side
   int gmres_max_iterations = 3000;
-  // The aggregation multigrid: on the work–precision study (bench/README.md) it is on the
+  // The aggregation multigrid: on the work–precision study (bench/work_precision.md) it is on the
   // Pareto front from about 2e4 unknowns on, where every paper scene lies, and its 2–5×
   // fewer GMRES iterations save the semi-implicit cells' force evaluation per iteration.
   PreconditionerType preconditioner = PreconditionerType::multigrid;
@@ -140,7 +140,7 @@ struct CellKindConfig : CellGeometry {
   double volume_modulus = 0.0;
   // The Morse well depth of this kind relative to [interaction]'s: the depth between
   // kinds a and b is De √(f_a f_b) unless an [[interaction.pair]] sets it (sickle: 5,
-  // "stickier", DESIGN.md).                                  key morse_well_depth_factor
+  // "stickier").                                             key morse_well_depth_factor
   double morse_well_depth_factor = 1.0;
 };
 
@@ -160,7 +160,7 @@ struct CellPlacement {
 // The Morse law φ(r) = De [e^{2β(r0−r)} − 2 e^{β(r0−r)}] between two surfaces' points,
 // an energy per area per area. Defaults: r0 and the cut-off are the paper's; β = 4/μm
 // (> ln 2 / r0, so that flat faces balance at a positive gap h* = r0 − ln 2/β = 0.077 μm);
-// De calibrated as DESIGN.md asks, on the paper's four-cell stack (cases/stack_shear/
+// De calibrated as the paper did, on its four-cell stack (cases/stack_shear/
 // README.md): it holds at 0.25 1/s and comes apart at 0.5 1/s with this De and not with
 // 2.5 times it. It gives flat faces an adhesion energy of 1 μJ/m² = 1 pN/μm at h*
 // (−2π∫_{h*}^{r_c} φ r dr), the low end of Neu & Meiselman's 1–10 μJ/m² for
@@ -180,7 +180,7 @@ struct MorsePairConfig {
 
 // Where the surface integral is sampled: at the surface nodes, or at 3 or 6 Gauss points
 // per surface triangle; "auto" takes the nodes when they are at most 1/β apart and 3
-// Gauss points otherwise (DESIGN.md).
+// Gauss points otherwise (docs/method.md, "Quadrature").
 enum class InteractionQuadrature { automatic, nodes, gauss3, gauss6 };
 
 struct InteractionConfig {
@@ -192,9 +192,9 @@ struct InteractionConfig {
   std::vector<MorsePairConfig> pairs;  // [[interaction.pair]]
 };
 
-// ---- the fluid–structure coupling (paper eqs. 5–7, 15, 16; DESIGN.md "Coupling")
+// ---- the fluid–structure coupling (paper eqs. 5–7, 15, 16; docs/method.md, "The coupling")
 // How the cells' forces meet the fluid solve (ImmersedCoupling):
-//   explicit:      the forces at x^n are spread and the fluid solved (DESIGN.md); stable
+//   explicit:      the forces at x^n are spread and the fluid solved; stable
 //                  only below Δt ≈ C μ h_f / G_eff;
 //   semi_implicit: the forces at x^{n+1} = x^n + Δt I u^{n+1}, linearized about x^n
 //                  (f^n + K Δt I u^{n+1}), enter the fluid solve, so the cells' stiffness
@@ -215,7 +215,7 @@ struct CouplingConfig {
   // volume stops the run as diverged (the cells are incompressible).   key volume_tolerance
   double volume_tolerance = 0.1;
   // The spread forces also enter SUPG/PSPG's strong residual as the force density they
-  // stand for (FluidOperator::load_stabilization). Off (DESIGN.md's decision: nodal loads
+  // stand for (FluidOperator::load_stabilization). Off (the design's default: nodal loads
   // only), PSPG drives a flux τ ∇p through a loaded membrane; on, τ (∇p − f_h): 3.5-7
   // times less spurious flow around a pressurized shell (tests/test_fluid_flows.cpp),
   // and the explicit coupling stays stable at ten times its step estimate in the reduced
@@ -229,7 +229,7 @@ struct CouplingConfig {
   bool subscale_velocity = false;
 };
 
-// What the scene builds and runs (DESIGN.md, "skip what a scene doesn't need").
+// What the scene builds and runs (docs/design.md, "The scene decides what runs").
 struct SceneConfig {
   // Leave out the stages that cannot change the result (beyond round-off): the Morse
   // stage between cells apart, the inertia/buoyancy stage when ρ_s = ρ_f, the RKPM

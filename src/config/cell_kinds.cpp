@@ -32,8 +32,8 @@ std::vector<CellKindConfig> builtin_cell_kinds() {
   normal.diameter = rbc_diameter;
 
   // Sickle cell: an ellipsoid 14 × 4.2 × 3.0 μm bent along an 8 μm arc (a crescent of
-  // about the normal cell's volume), ten times stiffer and five times stickier (DESIGN.md,
-  // Decisions → Cells).
+  // about the normal cell's volume), ten times stiffer and five times stickier (docs/method.md,
+  // "The cells").
   CellKindConfig sickle = membrane_cell("sickle", CellShape::sickle, sickle_stiffness_factor);
   sickle.length = 14.0;
   sickle.width = 4.2;

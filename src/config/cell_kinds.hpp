@@ -18,15 +18,15 @@ inline constexpr double paper_membrane_shear_modulus = 4.2;  // [pN/μm]
 // Membrane bending modulus, κ = 1.8e-12 dyn·cm (the paper) = 0.18 pN·μm.
 inline constexpr double paper_bending_modulus = 0.18;  // [pN·μm]
 // The paper's area dilation modulus, 500 dyn/cm = 5e5 pN/μm. Deliberately NOT used for the
-// bulk modulus (DESIGN.md, Decisions → Cells): a thin neo-Hookean shell cannot represent it
+// bulk modulus (docs/method.md, design decisions): a thin neo-Hookean shell cannot represent it
 // and it would cut the explicit time step by ~1e5. K comes from a Poisson ratio instead;
 // a kind's area_modulus_pN_um (a global area constraint, off by default) holds the area
 // where a scene needs it (the Mills stretch).
 inline constexpr double paper_area_dilation_modulus = 5e5;  // [pN/μm] (documentation only)
 // Shell thickness h from κ = G_s h²/3: h = sqrt(3κ/G_s) = sqrt(3 · 0.18 / 4.2) = 0.3586 μm,
-// rounded to 0.36 μm as in DESIGN.md.
+// rounded to 0.36 μm.
 inline constexpr double rbc_shell_thickness = 0.36;  // [μm]
-// Poisson ratio that gives the bulk modulus from G (DESIGN.md: 0.45–0.49).
+// Poisson ratio that gives the bulk modulus from G (in 0.45–0.49).
 inline constexpr double rbc_poisson_ratio = 0.45;
 // RBC density, 1100 kg/m³, in pN·s²/μm⁴ (1000 kg/m³ = 1e-9).
 inline constexpr double rbc_density = 1.1e-9;  // [pN·s²/μm⁴]
@@ -36,11 +36,11 @@ inline constexpr double rbc_diameter = 7.82;  // [μm]
 // with a0 = 0.207 (0.81 μm for D = 7.82 μm), its thinnest place away from the rim.
 inline constexpr double rbc_centre_thickness_per_diameter = 0.207 / 2.0;
 // Sickle cells are "stickier": their Morse well depth is 5 times the normal cells'
-// (DESIGN.md, Decisions → Cells); between a sickle and a normal cell √5 times.
+// (docs/method.md, "The cells"); between a sickle and a normal cell √5 times.
 inline constexpr double sickle_morse_well_depth_factor = 5.0;
 // Diameter of the sphere with the normal RBC's volume, (6 · 94.1 / π)^(1/3) = 5.64 μm.
 inline constexpr double capsule_diameter = 5.64;  // [μm]
-// A sickle cell's shear modulus relative to a normal cell's (DESIGN.md, Decisions → Cells).
+// A sickle cell's shear modulus relative to a normal cell's (docs/method.md, "The cells").
 inline constexpr double sickle_stiffness_factor = 10.0;
 
 // The built-in kinds, in this order: "normal" (hollow Evans–Fung RBC), "sickle" (hollow

@@ -94,7 +94,7 @@ double smallest_fluid_element(const CaseConfig& config) {
 // inflation, which the cavity blocks, changes its area); the sickle is taken as the disc.
 double area_mode_shape_factor(CellShape shape) { return shape == CellShape::sphere ? 0.014 : 1.6; }
 
-// The explicit coupling's stable step (DESIGN.md, "Coupling"): a membrane of modulus G_s
+// The explicit coupling's stable step (docs/method.md, "The stable step"): a membrane of modulus G_s
 // relaxes a wrinkle of the fluid mesh's wavelength h_f through fluid of viscosity μ at the
 // rate G_s / (μ h_f), so Δt ≤ C μ h_f / G_eff, with
 //   G_eff = (4/3) [G_s (1 + 30 r) + k_A κ h_f / R]:
@@ -105,12 +105,12 @@ double area_mode_shape_factor(CellShape shape) { return shape == CellShape::sphe
 // stiffness k_A ⟨4(H − H̄)²⟩ per area and mobility R/(4μ), i.e. a grid-scale modulus of
 // k_A κ h_f / R (κ: area_mode_shape_factor). The global volume constraint k_V is left
 // out, and the reason says so: its uniform-inflation mode is held back by the enclosed
-// fluid as far as the fluid mesh resolves the cell, which no formula here knows (README.md,
-// "The coupling": stable for the capsule at a/h_f 2.7 and 5.5 with k_V = 50 Pa, divergent
+// fluid as far as the fluid mesh resolves the cell, which no formula here knows (docs/validation.md,
+// "What is still weak": stable for the capsule at a/h_f 2.7 and 5.5 with k_V = 50 Pa, divergent
 // for a red cell at h_f = 1 μm).
 //
 // The membrane's G_eff carries a factor 4/3 that the stability map measured
-// (bench/stability.py, bench/README.md): the reduced one-cell shear box at 3 1/s ran 300
+// (bench/stability.py, bench/stability.md): the reduced one-cell shear box at 3 1/s ran 300
 // explicit steps within 0.11 % of its volume at 0.75 μ h_f / G_s and drifted 8 % (then
 // inverted an element) at 0.9; at 1.0 every membrane-bound scene drifted 4–5 % in 30
 // steps. The Morse-bound scenes held at the full estimate (the reduced aggregation at

@@ -135,7 +135,7 @@ void read_cell_kind(const TableReader& reader, CellKindConfig& kind) {
 }
 
 // The Morse keys of `reader` over `morse`; β must exceed ln 2 / r0 (flat faces then balance
-// at a positive gap, DESIGN.md) and the cut-off r0.
+// at a positive gap) and the cut-off r0.
 void read_morse(const TableReader& reader, MorseConfig& morse) {
   assign(morse.well_depth, reader.number("well_depth_pN_um3"));
   assign(morse.beta, reader.number("beta_per_um"));

@@ -46,7 +46,7 @@ class BasicRkpmCoupler {
   // outside the fluid domain).
   void update(const PointVectors& points);
   // From the next update() on, rows only for the points p with active(p) ≠ 0 (a rank's
-  // cells and those its Morse pairs reach, issue 10): the others get empty rows, so
+  // cells and those its Morse pairs reach): the others get empty rows, so
   // interpolation gives them zero and spreading takes nothing from them, and only the
   // active points are checked for leaving the fluid. An empty view: every point (the
   // default).

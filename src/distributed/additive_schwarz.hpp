@@ -1,5 +1,5 @@
 #pragma once
-// A preconditioner across ranks stronger than point-block Jacobi (issue 10): additive
+// A preconditioner across ranks stronger than point-block Jacobi: additive
 // Schwarz without overlap, each rank's subdomain solved inexactly by ILU(0) or by one cycle
 // of the aggregation multigrid of its owned block,
 //   M⁻¹ = blockdiag_r S_r⁻¹,   S_r⁻¹ ≈ A_r⁻¹,

@@ -1,6 +1,6 @@
 #pragma once
 // The fluid's Stokes operator and its block-Jacobi preconditioner on the owned unknowns of
-// all ranks (issue 10), for the distributed GMRES (solver/gmres.hpp with a Communicator).
+// all ranks, for the distributed GMRES (solver/gmres.hpp with a Communicator).
 //
 // A vector here is a rank's owned entries (4 per owned dof node, the prefix of its local
 // vectors). The rank's operator must complete its element sums across ranks

@@ -1,5 +1,5 @@
 #pragma once
-// The fluid mesh of a run split across its ranks (issue 10), as the fluid solver sees it:
+// The fluid mesh of a run split across its ranks (docs/mpi.md), as the fluid solver sees it:
 // the rank's part of the mesh (make_local_mesh), the node sums that complete its element
 // sums (FluidOperator::set_node_sums), the halo that fills its copies, and the maps between
 // its local vectors and the global ones (4 unknowns per dof node, node-interleaved).
@@ -84,7 +84,7 @@ class FluidDistribution final : public FluidExchange {
   std::unique_ptr<FluidPreconditioner> make_preconditioner(PreconditionerType type,
                                                            const std::vector<int>& owned_dirichlet) const override;
 
-  // The rank holding each point [μm] (a cell's centroid, issue 10): the owner of the fluid
+  // The rank holding each point [μm] (a cell's centroid): the owner of the fluid
   // dof node nearest to it (minimum image in periodic directions; the lowest such rank on
   // ties), the same on every rank. A point farther than any element's diameter from every
   // node (outside the fluid) goes to rank 0. One MPI_Allreduce; all ranks call it together.

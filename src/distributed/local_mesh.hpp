@@ -1,5 +1,5 @@
 #pragma once
-// A rank's part of the fluid mesh (issue 10): the elements it owns as a FluidMesh of their
+// A rank's part of the fluid mesh: the elements it owns as a FluidMesh of their
 // own, on which every element kernel (FluidOperator) runs unchanged; the shared nodes'
 // sums then meet through a NodeHalo.
 #include "mesh/fluid_mesh.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// The exchange of shared dof nodes' values between ranks (issue 10), for node-interleaved
+// The exchange of shared dof nodes' values between ranks, for node-interleaved
 // vectors of `components` entries per node (4 for the fluid's u, v, w, p) on the local
 // dof nodes of an ElementPartition (parallel/element_partition.hpp).
 //

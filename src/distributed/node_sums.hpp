@@ -1,6 +1,6 @@
 #pragma once
 // The element sums of a rank's mesh completed across ranks, for
-// FluidOperator::set_node_sums (issue 10; the protocol in fluid/element_sum_exchange.hpp):
+// FluidOperator::set_node_sums (the protocol in fluid/element_sum_exchange.hpp):
 // each shared node's partial sums are added at its owner (NodeHalo::add_copies_to_owners)
 // and the total goes back to the copies (NodeHalo::update_copies), so every local entry,
 // owned or copy, holds what one rank with the whole mesh would have. With overlap on, the
@@ -11,8 +11,8 @@
 // touches one atomic buffer. Off by default on CPU threads: there the extra pass runs over
 // every thread's copy of the sums, and between two ranks of this project's machine the
 // overlapped action ran 0.94-1.07x the baseline's time (paired medians, no gain), the
-// exchanges it would hide being 0.3-0.5 % of it (bench/README.md, "Scaling across MPI
-// ranks"); set_overlap(true) where a network's latency outweighs that. One NodeHalo per
+// exchanges it would hide being 0.3-0.5 % of it (bench/mpi.md, "A GMRES iteration
+// on 1 and 2 ranks"); set_overlap(true) where a network's latency outweighs that. One NodeHalo per
 // number of components per node (1, 4, 9, 16), made on first use.
 #include <Kokkos_Core.hpp>
 #include <map>

@@ -1,5 +1,5 @@
 #pragma once
-// One output file and one checkpoint per run, whatever the rank count (issue 10, item 4):
+// One output file and one checkpoint per run, whatever the rank count (docs/mpi.md):
 // node-interleaved vectors gathered on one rank in the global numbering, and the reverse.
 // A vector gathered this way is the same, entry for entry, for any number of ranks (each
 // unknown is taken from its owner), so a checkpoint written on P ranks restarts on Q.

@@ -1,5 +1,5 @@
 #pragma once
-// How a rank's element loops complete their sums across ranks (issue 10), as
+// How a rank's element loops complete their sums across ranks, as
 // FluidOperator::set_node_sums sees it; distributed/node_sums.hpp implements it with MPI.
 //
 // After an element loop each shared dof node holds this rank's partial sum; the exchange

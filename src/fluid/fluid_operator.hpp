@@ -104,7 +104,7 @@ class BasicFluidOperator {
   // gradient(9·node + 3i + j) = G_node,ij ≈ ∂_j u_i (scaled).
   void project_gradient(const ConstVector& state, const Vector& gradient) const;
 
-  // Distributed runs (issue 10): `sums` completes every vector of element sums
+  // Distributed runs: `sums` completes every vector of element sums
   // (node-interleaved, `components` per dof node: 1 lumped mass, 4 residuals and actions,
   // 9 projected gradients, 16 diagonal blocks) right after its element loop and before any
   // constrained row, load or division reads it: on a rank's mesh it adds the other ranks'

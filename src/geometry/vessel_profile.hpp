@@ -1,5 +1,5 @@
 #pragma once
-// The axisymmetric vessels of issue 6 as a radius profile r(x) along the axis (x), the
+// The axisymmetric vessels (docs/vessels.md) as a radius profile r(x) along the axis (x), the
 // shape the Gmsh vessel mesher revolves: a straight tube, or a tube with a contraction
 // and diffuser (the paper's micro-vessel contraction, Figs. 13–15; a capillary with
 // straight feeders, Figs. 16–17, is the same shape with a long narrow throat). Along x:

@@ -1,7 +1,7 @@
 #pragma once
 // Provenance: where an output file came from (code version, dependency versions, machine,
-// time, inputs). Every output file carries these as string attributes (DESIGN.md, "CI, exit
-// codes, provenance"). Host-only: includes no Kokkos header.
+// time, inputs). Every output file carries these as string attributes (docs/design.md,
+// "Provenance"). Host-only: includes no Kokkos header.
 #include <cstddef>
 #include <string>
 #include <utility>

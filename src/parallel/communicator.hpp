@@ -1,5 +1,5 @@
 #pragma once
-// The ranks of a run and what they say to each other (issue 10): MPI_COMM_WORLD when the
+// The ranks of a run and what they say to each other (docs/mpi.md): MPI_COMM_WORLD when the
 // build has MPI (ROULEAU_HAS_MPI, CMake option ROULEAU_MPI), otherwise one rank on its own.
 // Host-only: no Kokkos; the buffers are host memory (device data is staged by the caller,
 // distributed/node_halo.hpp).

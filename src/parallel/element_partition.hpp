@@ -1,5 +1,5 @@
 #pragma once
-// The fluid mesh split across ranks (issue 10): which rank owns each element, and each
+// The fluid mesh split across ranks: which rank owns each element, and each
 // rank's local view of the dof nodes, with global ids beside local indices.
 //
 // Elements are owned, nodes shared. A rank holds the dof nodes of its elements; a node

@@ -1,5 +1,5 @@
 #pragma once
-// MPI for the lifetime of an MpiSession (issue 10): `rouleau run` and the case drivers
+// MPI for the lifetime of an MpiSession (docs/mpi.md): `rouleau run` and the case drivers
 // start it before Kokkos, so `mpirun -np N rouleau run case.toml` splits the fluid across
 // N ranks, and a plain `rouleau run` is one rank. In a build without MPI it does nothing,
 // but refuses (std::runtime_error) to run as one of several ranks an MPI launcher started.

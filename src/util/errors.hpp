@@ -6,7 +6,7 @@
 
 namespace rouleau {
 
-// Process exit codes (DESIGN.md, "CI, exit codes, provenance").
+// Process exit codes (docs/running.md, "Exit codes").
 enum class ExitCode : int {
   done = 0,
   internal_error = 1,

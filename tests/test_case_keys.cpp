@@ -10,7 +10,6 @@
 #include <optional>
 #include <sstream>
 #include <string>
-#include <toml++/toml.h>
 #include <utility>
 #include <vector>
 
@@ -19,6 +18,7 @@
 #include "config/derived.hpp"
 #include "config/load_case.hpp"
 #include "config/resolved_case.hpp"
+#include "support/toml_document.hpp"
 #include "util/errors.hpp"
 
 namespace {
@@ -141,60 +141,27 @@ TEST(CaseKeys, NoKeyOutsideTheTableIsAccepted) {
   }
 }
 
-// The TOML value `text` stands for, when it is one ("0.0012", "[0, 0, 0]", "\"wall\"").
-std::optional<toml::table> as_toml_value(std::string_view text) {
-  try {
-    return toml::parse("value = " + std::string(text));
-  } catch (const toml::parse_error&) {
-    return std::nullopt;  // "required", "radius_um", ...
-  }
-}
-
-// Whether two TOML values are equal, numbers to the 6 digits the table gives them with.
-bool same_value(const toml::node& documented, const toml::node& resolved) {
-  if (documented.is_number() && resolved.is_number()) {
-    const double a = documented.value<double>().value(), b = resolved.value<double>().value();
-    return std::abs(a - b) <= 1e-5 * std::abs(b);
-  }
-  if (documented.is_array() && resolved.is_array()) {
-    const toml::array &a = *documented.as_array(), &b = *resolved.as_array();
-    if (a.size() != b.size()) return false;
-    for (std::size_t i = 0; i < a.size(); ++i)
-      if (!same_value(*a.get(i), *b.get(i))) return false;
-    return true;
-  }
-  if (documented.is_string() && resolved.is_string()) return documented.value<std::string>() == resolved.value<std::string>();
-  if (documented.is_boolean() && resolved.is_boolean()) return documented.value<bool>() == resolved.value<bool>();
-  return false;
-}
-
-std::string text_of(const toml::node& node) {
-  std::ostringstream text;
-  node.visit([&](const auto& value) { text << value; });
-  return text.str();
-}
-
 // The defaults the reference states are those of a case that leaves the key out: the value
 // its resolved case (which writes every key that applies) gives.
 TEST(CaseKeys, DefaultsAreTheValuesOfACaseWithoutTheKey) {
   const auto resolved = [](const CaseTables& tables) {
     const rouleau::CaseConfig config = rouleau::load_case_text(case_text(tables), "defaults.toml");
-    return toml::parse(rouleau::resolved_case_toml(config, rouleau::derive_quantities(config)));
+    return rouleau::testing::TomlDocument(rouleau::resolved_case_toml(config, rouleau::derive_quantities(config)));
   };
-  const toml::table box = resolved(box_case), vessel = resolved(vessel_case);
+  const rouleau::testing::TomlDocument box = resolved(box_case), vessel = resolved(vessel_case);
   int compared = 0;
   for (const CaseKey& key : rouleau::case_keys()) {
-    const std::optional<toml::table> documented = as_toml_value(key.default_value);
-    if (!documented) continue;
     const KeyPlace place = place_of(key);
     std::string path = place.dotted_table + "." + std::string(key.name);
     if (key.section == "boundary.SIDE") path = "boundary.x_max." + std::string(key.name);  // a side the case leaves out
     if (key.section == "cells" && key.name == "kind") continue;  // the base case gives it
-    const toml::table& document = place.base == &box_case ? box : vessel;
-    const toml::node* value = document.at_path(path).node();
-    if (!value) continue;  // a key that does not apply to the kind's shape or the side's type
-    EXPECT_TRUE(same_value(*documented->get("value"), *value))
-        << path << ": the reference says " << key.default_value << ", a loaded case has " << text_of(*value);
+    const rouleau::testing::TomlDocument& document = place.base == &box_case ? box : vessel;
+    // Nothing when the reference states no value ("required") or the key does not apply
+    // to the kind's shape or the side's type.
+    const std::optional<bool> same = document.equals(key.default_value, path);
+    if (!same) continue;
+    EXPECT_TRUE(*same) << path << ": the reference says " << key.default_value << ", a loaded case has "
+                       << document.value_text(path).value_or("nothing");
     ++compared;
   }
   EXPECT_GT(compared, 60);

@@ -68,8 +68,7 @@ void read_scales(const TableReader& root, ScalesConfig& scales) {
 }
 
 void read_output(const TableReader& root, OutputConfig& output) {
-  const TableReader section =
-      root.table("output");
+  const TableReader section = root.table("output");
   assign(output.write_fields, section.boolean("fields"));
   assign(output.fields_every_steps, section.integer("fields_every_steps"));
   assign(output.diagnostics_every_steps, section.integer("diagnostics_every_steps"));

@@ -1,7 +1,9 @@
 #pragma once
 // RKPM kernels of the coupling (paper eqs. 15, 16; Liu, Jun & Zhang 1995): the window,
 // the shape functions of each solid point over the fluid nodes in its support, and the
-// two transfers — interpolation (a pure gather) and spreading (its exact transpose).
+// two transfers — interpolation (a pure gather) and spreading (its exact transpose). The
+// three are free functions that take the execution space first; coupling/rkpm_coupler
+// keeps their buffers and sequences them.
 //
 // Window: tensor-product cubic B-spline w_J(x) = Π_d φ((x_d − x_Jd)/a_Jd), with support
 // radius a_Jd (2 element sizes at node J by default) and
@@ -16,6 +18,8 @@
 #include <Kokkos_Core.hpp>
 #include <cmath>
 
+#include "kernels/point_bins.hpp"
+
 namespace rouleau {
 
 KOKKOS_INLINE_FUNCTION double cubic_bspline_window(double z) {
@@ -24,25 +28,6 @@ KOKKOS_INLINE_FUNCTION double cubic_bspline_window(double z) {
   if (z <= 1.0) return 4.0 / 3.0 * (1.0 - z) * (1.0 - z) * (1.0 - z);
   return 0.0;
 }
-
-// The fluid nodes' bins (built once, at least as wide as the largest support, so a
-// point's support lies in the 3³ bins around its own) and the periodic minimum image.
-struct RkpmSupportSearch {
-  double lower[3], length[3], bin_size[3];
-  int periodic[3], bins[3];
-
-  // x_J − x along d, by the minimum image on periodic directions.
-  KOKKOS_INLINE_FUNCTION double offset(double node, double point, int d) const {
-    double y = node - point;
-    if (periodic[d]) y -= length[d] * floor(y / length[d] + 0.5);
-    return y;
-  }
-  KOKKOS_INLINE_FUNCTION int bin_coordinate(double x, int d) const {
-    int i = static_cast<int>(floor((x - lower[d]) / bin_size[d]));
-    if (periodic[d]) return ((i % bins[d]) + bins[d]) % bins[d];
-    return i < 0 ? 0 : (i >= bins[d] ? bins[d] - 1 : i);
-  }
-};
 
 // Solves the 4×4 symmetric system M c = e0 by Gaussian elimination with partial
 // pivoting in registers; returns false when M is singular.
@@ -75,6 +60,122 @@ KOKKOS_INLINE_FUNCTION bool solve_moment_system(double m[4][4], double c[4]) {
     c[i] = s / m[i][i];
   }
   return true;
+}
+
+// The shape functions of a set of points as CSR rows: row p holds the dof nodes J with
+// w_J(x_p) > 0 and Φ_J(x_p). Points with active(p) = 0 (when `active` is not empty) get
+// an empty row.
+template <class MemorySpace>
+struct RkpmSupports {
+  BinnedPoints<MemorySpace> node_bins;                      // the dof nodes, binned
+  Kokkos::View<const double* [3], MemorySpace> node_position;  // x_J [μm]
+  Kokkos::View<const double* [3], MemorySpace> node_support;   // a_Jd [μm]
+};
+
+// One pass over the points (count_only: the rows' lengths into offsets(p); else the rows
+// themselves at offsets(p), corrected where they must be, or everywhere with
+// `always_correct`). Returns the number of points p with counted(p) (every point when
+// `counted` is empty) whose row needed the correction. A singular moment matrix leaves
+// NaN in its row.
+template <class ExecSpace, class MemorySpace, class Points, class Flags, class Offsets, class Nodes, class Phi>
+int rkpm_shape_functions(const ExecSpace& space, const RkpmSupports<MemorySpace>& supports, const Points& points,
+                         const Flags& active, const Flags& counted, const bool always_correct, const bool count_only,
+                         const Offsets& offsets, const Nodes& nodes, const Phi& phi) {
+  const auto node_bins = supports.node_bins;
+  const BinGrid grid = node_bins.grid;
+  const auto node_position = supports.node_position;
+  const auto node_support = supports.node_support;
+  const bool restricted = active.extent(0) > 0;
+  const bool counting_some = counted.extent(0) > 0;
+  int corrected = 0;
+  Kokkos::parallel_reduce(
+      "rouleau::rkpm_shape_functions", Kokkos::RangePolicy<ExecSpace>(space, 0, points.extent(0)),
+      KOKKOS_LAMBDA(const int p, int& corrected_count) {
+        if (restricted && !active(p)) {  // an empty row
+          if (count_only) offsets(p) = 0;
+          return;
+        }
+        const double x[3] = {points(p, 0), points(p, 1), points(p, 2)};
+        int count = 0;
+        const int first = count_only ? 0 : offsets(p);
+        // M = Σ H H^T w with H = (1, y), y = x_J − x
+        double m[4][4] = {{0, 0, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}};
+        node_bins.for_each_point_near(x, [&](const int node) {
+          double y[3], w = 1.0;
+          for (int d = 0; d < 3; ++d) {
+            y[d] = grid.offset(node_position(node, d), x[d], d);
+            w *= cubic_bspline_window(y[d] / node_support(node, d));
+          }
+          if (!(w > 0.0)) return;
+          if (!count_only) {
+            nodes(first + count) = node;
+            phi(first + count) = w;
+            const double h[4] = {1.0, y[0], y[1], y[2]};
+            for (int i = 0; i < 4; ++i)
+              for (int j = 0; j < 4; ++j) m[i][j] += h[i] * h[j] * w;
+          }
+          ++count;
+        });
+        if (count_only) {
+          offsets(p) = count;
+          return;
+        }
+        // Skip the correction where the window alone is a partition of unity with zero
+        // first moments (it then reproduces linear fields as it is).
+        const double scale = m[0][0] > 0 ? 1.0 : 0.0;
+        const double first_moment = fabs(m[0][1]) + fabs(m[0][2]) + fabs(m[0][3]);
+        const double support_scale = node_support(nodes(first), 0) + node_support(nodes(first), 1) +
+                                     node_support(nodes(first), 2);
+        const bool plain_reproduces =
+            scale > 0 && fabs(m[0][0] - 1.0) < 1e-12 && first_moment < 1e-12 * support_scale;
+        if (plain_reproduces && !always_correct) return;
+        double c[4] = {0, 0, 0, 0};
+        if (!solve_moment_system(m, c)) {
+          for (int k = first; k < first + count; ++k) phi(k) = NAN;
+          return;
+        }
+        // Φ_J = H(0)^T M⁻¹ H(y_J) w_J = (c · H(y_J)) w_J with M c = H(0)
+        for (int k = first; k < first + count; ++k) {
+          const int node = nodes(k);
+          double y[3];
+          for (int d = 0; d < 3; ++d) y[d] = grid.offset(node_position(node, d), x[d], d);
+          phi(k) *= c[0] + c[1] * y[0] + c[2] * y[1] + c[3] * y[2];
+        }
+        if (!counting_some || counted(p)) ++corrected_count;
+      },
+      corrected);
+  return corrected;
+}
+
+// u(x_p) = Σ_J Φ_J(x_p) u_J: values(p, c) = Σ_k phi(k) nodal(stride · nodes(k) + c) over
+// row p, c = 0, 1, 2, for the offsets.extent(0) − 1 rows. One thread per point, a pure
+// gather.
+template <class ExecSpace, class Offsets, class Nodes, class Phi, class Nodal, class Values>
+void rkpm_interpolate(const ExecSpace& space, const Offsets& offsets, const Nodes& nodes, const Phi& phi,
+                      const Nodal& nodal, const int stride, const Values& values) {
+  Kokkos::parallel_for(
+      "rouleau::rkpm_interpolate", Kokkos::RangePolicy<ExecSpace>(space, 0, static_cast<int>(offsets.extent(0)) - 1),
+      KOKKOS_LAMBDA(const int p) {
+        double u[3] = {0, 0, 0};
+        for (int k = offsets(p); k < offsets(p + 1); ++k)
+          for (int c = 0; c < 3; ++c) u[c] += phi(k) * nodal(stride * nodes(k) + c);
+        for (int c = 0; c < 3; ++c) values(p, c) = u[c];
+      });
+}
+
+// F_J += Σ_p Φ_J(x_p) F_p, the transpose of rkpm_interpolate: the rows' contributions
+// into `scatter` (a ScatterView over the nodal vector, stride per node), which the caller
+// resets before and gathers after.
+template <class ExecSpace, class Offsets, class Nodes, class Phi, class Forces, class Scatter>
+void rkpm_spread(const ExecSpace& space, const Offsets& offsets, const Nodes& nodes, const Phi& phi,
+                 const Forces& forces, const Scatter& scatter, const int stride) {
+  Kokkos::parallel_for(
+      "rouleau::rkpm_spread", Kokkos::RangePolicy<ExecSpace>(space, 0, static_cast<int>(offsets.extent(0)) - 1),
+      KOKKOS_LAMBDA(const int p) {
+        auto access = scatter.access();
+        for (int k = offsets(p); k < offsets(p + 1); ++k)
+          for (int c = 0; c < 3; ++c) access(stride * nodes(k) + c) += phi(k) * forces(p, c);
+      });
 }
 
 }  // namespace rouleau

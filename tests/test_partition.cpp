@@ -11,14 +11,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <map>
-#include <random>
 #include <stdexcept>
 #include <vector>
 
 #include "distributed/local_mesh.hpp"
-#include "geometry/binned_points.hpp"
 #include "fluid/fluid_operator.hpp"
 #include "mesh/fluid_mesh.hpp"
 #include "parallel/element_partition.hpp"
@@ -231,45 +228,6 @@ TEST(ElementPartition, RankLocalOperatorsSumToTheGlobalOperator) {
     }
   }
   }
-}
-
-TEST(BinnedPoints, NearestDistanceWithinTheRadiusMatchesASearchOfEveryPoint) {
-  // 500 random points in a box periodic along x and z, 2000 queries inside, near and
-  // outside it (and beyond a periodic side): the binned search gives the nearest distance
-  // of a search of every point (minimum image where periodic), or +∞ beyond the radius.
-  const std::array<double, 3> lower{-3, 0, 1}, upper{5, 4, 7};
-  const std::array<bool, 3> periodic{true, false, true};
-  const double radius = 0.9;
-  std::mt19937 generator(11);
-  auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(generator); };
-  std::vector<std::array<double, 3>> points(500);
-  for (auto& p : points)
-    for (int d = 0; d < 3; ++d) p[d] = uniform(lower[d], upper[d]);
-  const BinnedPoints binned(points, lower, upper, periodic, radius);
-  int mismatches = 0, within = 0;
-  for (int q = 0; q < 2000; ++q) {
-    std::array<double, 3> x{};
-    for (int d = 0; d < 3; ++d) x[d] = uniform(lower[d] - 2.0, upper[d] + 2.0);
-    double nearest = std::numeric_limits<double>::infinity();
-    for (const auto& p : points) {
-      double d2 = 0.0;
-      for (int d = 0; d < 3; ++d) {
-        double offset = x[d] - p[d];
-        if (periodic[d]) offset -= (upper[d] - lower[d]) * std::round(offset / (upper[d] - lower[d]));
-        d2 += offset * offset;
-      }
-      nearest = std::min(nearest, std::sqrt(d2));
-    }
-    const double expected = nearest <= radius ? nearest : std::numeric_limits<double>::infinity();
-    const double found = binned.nearest_distance(x);
-    mismatches += !(found == expected || std::fabs(found - expected) <= 1e-14);
-    within += std::isfinite(expected);
-  }
-  std::printf("  %d of 2000 queries have a point within the radius; %d mismatches\n", within, mismatches);
-  EXPECT_EQ(mismatches, 0);
-  EXPECT_GT(within, 500);  // the test sees both answers
-  EXPECT_LT(within, 1999);
-  EXPECT_THROW(BinnedPoints(points, lower, upper, periodic, 0.0), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,11 +1,16 @@
 // RKPM interpolation and spreading (paper eqs. 15, 16): exact reproduction of constant
 // and linear fields anywhere (next to walls, on graded meshes, across periodic sides),
 // partition of unity, adjointness ⟨I u, F⟩ = ⟨u, S F⟩, and the skipped correction agreeing
-// with the computed one where the plain window already reproduces linear fields.
+// with the computed one where the plain window already reproduces linear fields; the
+// shape functions, interpolation and spreading against plain serial references.
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
 #include <Kokkos_Core.hpp>
+#include <Kokkos_ScatterView.hpp>
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <iostream>
 #include <random>
 #include <set>
@@ -307,6 +312,150 @@ TEST(Rkpm, RefusesPointsOutsideTheFluid) {
   h(0, 1) = h(0, 2) = 5.0;
   Kokkos::deep_copy(points, h);
   EXPECT_THROW(coupler.update(points), std::runtime_error);
+}
+
+// The shape functions against a serial reference that searches every dof node (minimum
+// image across the periodic sides), weighs it with the window and corrects with an
+// independent 4×4 solve (Eigen): same supports, same values to 1e-12; with the skip (the
+// correction only where the plain window does not reproduce linear fields) and without.
+TEST(Rkpm, ShapeFunctionsMatchASerialSearchOfEveryNode) {
+  const FluidMesh mesh = make_box_mesh({0, 0, 0}, {20, 10, 10}, {8, 6, 6}, {1, 1, 1}, {true, false, true});
+  const auto points = random_points(mesh, 300, 0.0, 21);
+  const auto x = host_copy(points);
+  const auto coordinates = host_copy(mesh.coordinates);
+  const double h[3] = {20.0 / 8, 10.0 / 6, 10.0 / 6}, length[3] = {20, 10, 10};
+  std::map<int, std::array<double, 3>> node_position;  // the first geometric node of each dof node
+  for (int n = 0; n < mesh.num_nodes; ++n)
+    node_position.emplace(mesh.dof_node_of_node[n],
+                          std::array<double, 3>{coordinates(n, 0), coordinates(n, 1), coordinates(n, 2)});
+  for (const bool always_correct : {false, true}) {
+    RkpmCoupler coupler(mesh);
+    coupler.always_correct(always_correct);
+    coupler.update(points);
+    const auto offsets = host_copy(coupler.offsets());
+    const auto nodes = host_copy(coupler.nodes());
+    const auto phi = host_copy(coupler.shape_functions());
+    double largest_difference = 0.0;
+    int wrong_supports = 0, corrected = 0;
+    for (int p = 0; p < 300; ++p) {
+      std::map<int, double> expected;  // node → Φ
+      std::map<int, std::array<double, 3>> offset_of;
+      Eigen::Matrix4d m = Eigen::Matrix4d::Zero();
+      for (const auto& [node, position] : node_position) {
+        std::array<double, 3> y{};
+        double w = 1.0;
+        for (int d = 0; d < 3; ++d) {
+          y[d] = position[d] - x(p, d);
+          if (mesh.periodic[d]) y[d] -= length[d] * std::round(y[d] / length[d]);
+          w *= cubic_bspline_window(y[d] / (2.0 * h[d]));
+        }
+        if (!(w > 0.0)) continue;
+        expected[node] = w;
+        offset_of[node] = y;
+        const Eigen::Vector4d hy(1.0, y[0], y[1], y[2]);
+        m += w * hy * hy.transpose();
+      }
+      const bool plain = std::fabs(m(0, 0) - 1.0) < 1e-12 &&
+                         std::fabs(m(0, 1)) + std::fabs(m(0, 2)) + std::fabs(m(0, 3)) < 1e-12 * 2.0 * (h[0] + h[1] + h[2]);
+      if (!plain || always_correct) {
+        ++corrected;
+        const Eigen::Vector4d c = m.partialPivLu().solve(Eigen::Vector4d(1, 0, 0, 0));
+        for (auto& [node, value] : expected) {
+          const auto& y = offset_of[node];
+          value *= c[0] + c[1] * y[0] + c[2] * y[1] + c[3] * y[2];
+        }
+      }
+      std::map<int, double> found;
+      for (int k = offsets(p); k < offsets(p + 1); ++k) found[nodes(k)] = phi(k);
+      if (found.size() != expected.size()) {
+        ++wrong_supports;
+        continue;
+      }
+      for (const auto& [node, value] : expected) {
+        if (!found.count(node)) {
+          ++wrong_supports;
+          break;
+        }
+        largest_difference = std::max(largest_difference, std::fabs(found[node] - value));
+      }
+    }
+    std::printf("  %s: %d of 300 points corrected, %d wrong supports, largest |Φ − Φ_serial| %.2e\n",
+                always_correct ? "corrected everywhere" : "corrected where needed", corrected, wrong_supports,
+                largest_difference);
+    EXPECT_EQ(wrong_supports, 0);
+    EXPECT_LT(largest_difference, 1e-12);
+    EXPECT_GT(corrected, 0);  // the walls in y need it
+    EXPECT_EQ(coupler.corrected_points(), corrected);
+  }
+}
+
+// rkpm_interpolate and rkpm_spread on random CSR rows (a stride of 4, as the fluid's
+// unknowns) against serial loops: the same values to 1e-14, relative.
+TEST(Rkpm, TransferKernelsMatchSerialLoops) {
+  const int n_points = 500, n_nodes = 2000, stride = 4;
+  std::mt19937 generator(4);
+  auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(generator); };
+  std::vector<int> row_offsets{0}, row_nodes;
+  std::vector<double> row_phi;
+  for (int p = 0; p < n_points; ++p) {
+    const int length = std::uniform_int_distribution<int>(0, 40)(generator);
+    for (int k = 0; k < length; ++k) {
+      row_nodes.push_back(std::uniform_int_distribution<int>(0, n_nodes - 1)(generator));
+      row_phi.push_back(uniform(-0.2, 1.0));
+    }
+    row_offsets.push_back(static_cast<int>(row_nodes.size()));
+  }
+  std::vector<double> nodal(stride * n_nodes), forces(3 * n_points);
+  for (double& v : nodal) v = uniform(-1, 1);
+  for (double& v : forces) v = uniform(-1, 1);
+  auto to_device = [](const auto& values, const char* label) {
+    Kokkos::View<typename std::decay_t<decltype(values)>::value_type*> view(std::string(label), values.size());
+    auto host = Kokkos::create_mirror_view(view);
+    for (std::size_t i = 0; i < values.size(); ++i) host(i) = values[i];
+    Kokkos::deep_copy(view, host);
+    return view;
+  };
+  const auto offsets = to_device(row_offsets, "offsets");
+  const auto nodes = to_device(row_nodes, "nodes");
+  const auto phi = to_device(row_phi, "phi");
+  const auto nodal_view = to_device(nodal, "nodal");
+  RkpmCoupler::PointVectors values("values", n_points), point_forces("forces", n_points);
+  auto host_forces = Kokkos::create_mirror_view(point_forces);
+  for (int p = 0; p < n_points; ++p)
+    for (int c = 0; c < 3; ++c) host_forces(p, c) = forces[3 * p + c];
+  Kokkos::deep_copy(point_forces, host_forces);
+
+  rkpm_interpolate(Kokkos::DefaultExecutionSpace(), offsets, nodes, phi, nodal_view, stride, values);
+  using Scatter = Kokkos::Experimental::ScatterView<double*>;
+  Kokkos::View<double*> spread("spread", stride * n_nodes);
+  Scatter scatter(spread);
+  rkpm_spread(Kokkos::DefaultExecutionSpace(), offsets, nodes, phi, point_forces, scatter, stride);
+  Kokkos::Experimental::contribute(spread, scatter);
+
+  const auto interpolated = host_copy(values);
+  const auto spread_host = host_copy(spread);
+  std::vector<double> expected_spread(stride * n_nodes, 0.0);
+  double interpolation_error = 0.0, spread_error = 0.0, scale = 0.0;
+  for (int p = 0; p < n_points; ++p)
+    for (int c = 0; c < 3; ++c) {
+      double u = 0.0;
+      for (int k = row_offsets[p]; k < row_offsets[p + 1]; ++k) {
+        u += row_phi[k] * nodal[stride * row_nodes[k] + c];
+        expected_spread[stride * row_nodes[k] + c] += row_phi[k] * forces[3 * p + c];
+      }
+      interpolation_error = std::max(interpolation_error, std::fabs(interpolated(p, c) - u));
+      scale = std::max(scale, std::fabs(u));
+    }
+  double spread_scale = 0.0;
+  for (int i = 0; i < stride * n_nodes; ++i) {
+    spread_error = std::max(spread_error, std::fabs(spread_host(i) - expected_spread[i]));
+    spread_scale = std::max(spread_scale, std::fabs(expected_spread[i]));
+  }
+  std::printf("  interpolation: largest difference %.2e of %.2e; spreading: %.2e of %.2e\n", interpolation_error,
+              scale, spread_error, spread_scale);
+  EXPECT_LE(interpolation_error, 1e-14 * scale);
+  EXPECT_LE(spread_error, 1e-14 * spread_scale);
+  EXPECT_GT(spread_scale, 0.0);
 }
 
 }  // namespace

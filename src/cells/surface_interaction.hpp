@@ -2,18 +2,15 @@
 // The Morse interaction between the surfaces of different cells (paper eqs. 3, 4, 11) on
 // the device: the surface points (the outer-surface nodes with their reference area
 // weights, or Gauss points of the outer-surface triangles: cells/surface_quadrature.hpp),
-// a broad phase over the cells' bounding boxes, a cell list and a CSR neighbour list with
-// a skin, and the pair forces.
-//
-// The list holds the pairs of points of different cells closer than r_c + skin and is
-// rebuilt only when some point has moved more than skin/2 since the last build (then no
-// pair closer than r_c can be missing). Cells whose bounding boxes, grown by r_c + skin,
-// meet no other cell's are left out of the bins and do no pair work.
+// their neighbour list with a skin (cells/surface_neighbor_list.hpp), the pair forces and
+// the pairs' stiffness.
 #include <Kokkos_Core.hpp>
 #include <Kokkos_ScatterView.hpp>
+#include <optional>
 #include <vector>
 
 #include "cells/cell_population.hpp"
+#include "cells/surface_neighbor_list.hpp"
 #include "cells/surface_quadrature.hpp"
 #include "kernels/morse.hpp"
 #include "kernels/surface_neighbors.hpp"
@@ -67,18 +64,18 @@ class BasicSurfaceInteraction {
   // The pairs within the cut-off at the last linearize() (the list entries less the skin's).
   int linearized_pairs() const { return linearized_pairs_; }
   // The list: CSR rows per surface point (columns are surface points).
-  const Kokkos::View<int*>& neighbor_offsets() const { return neighbor_offsets_; }
-  const Kokkos::View<int*>& neighbors() const { return neighbors_; }
-  int num_list_entries() const { return list_entries_; }
-  int rebuild_count() const { return rebuilds_; }
+  const Kokkos::View<int*>& neighbor_offsets() const { return list_->offsets(); }
+  const Kokkos::View<int*>& neighbors() const { return list_->neighbors(); }
+  int num_list_entries() const { return list_->num_entries(); }
+  int rebuild_count() const { return list_->build_count(); }
   // Per cell: 1 when a point of it is a row or a column of the list (the cells whose nodes
   // the pairs of this rank's rows move, share_rows), else 0; and how many times the list
   // has been built by this object (the flags change only then).
-  const Kokkos::View<int*>& cells_in_list() const { return cells_in_list_; }
-  int list_version() const { return list_version_; }
+  const Kokkos::View<int*>& cells_in_list() const { return list_->cells_in_list(); }
+  int list_version() const { return list_->version(); }
   // Cells that take part in pair work after the last broad phase (with shared rows: the
   // rows' cells that have a partner, and their partners).
-  int active_cell_count() const { return active_cells_; }
+  int active_cell_count() const { return list_->active_cell_count(); }
   double search_radius() const { return search_radius_; }
 
   // Checkpoints ("interaction/..." entries): the surface points' positions at the last
@@ -116,22 +113,8 @@ class BasicSurfaceInteraction {
   Kokkos::View<int*> point_cell_, point_kind_;
   Kokkos::View<double*> point_weight_;
   PointVectors point_positions_;
-  std::vector<int> cell_first_point_;            // host: points of cell c are [first[c], first[c+1])
-  Kokkos::View<int*> cell_first_point_device_;
   PointVectors forces_;
-  PointVectors positions_at_build_;              // (point, 3)
-  Kokkos::View<double* [6]> cell_boxes_;         // (cell, [lower xyz, upper xyz])
-  Kokkos::View<int*> point_active_;              // 1 when the point's cell has a partner
-  Kokkos::View<int*> bin_offsets_, sorted_points_;
-  Kokkos::View<int*> neighbor_offsets_, neighbors_;
-  BinGrid grid_{};
-  int list_entries_ = 0, rebuilds_ = 0, active_cells_ = 0;
-  Kokkos::View<int*> cells_in_list_;  // cells_in_list()
-  int list_version_ = 0;
-  Kokkos::View<int*> row_cells_;                 // (cell): 1 when its points are rows (share_rows)
-  std::vector<int> row_cells_host_;              // the same on the host
-  bool rows_shared_ = false;                     // share_rows() was called
-  bool built_ = false;
+  std::optional<BasicSurfaceNeighborList<ExecSpace>> list_;  // made once the points are known
   using Scatter = Kokkos::Experimental::ScatterView<double* [3], typename PointVectors::array_layout,
                                                     typename ExecSpace::device_type>;
   Scatter force_scatter_;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "config/number_text.hpp"
+#include "geometry/box_overlaps.hpp"
 #include "geometry/cell_shapes.hpp"
 #include "util/errors.hpp"
 
@@ -141,31 +142,26 @@ void check_cell_placement(const CaseConfig& config) {
     }
   }
 
-  // Overlaps: only pairs whose bounding spheres meet, found by sweeping along x over the
-  // cells sorted by centre x; then no sample of either inside the other.
-  double largest_radius = 0.0;
-  for (const auto& entry : samples_of_kind) largest_radius = std::max(largest_radius, entry.second.bounding_radius);
-  std::vector<std::size_t> by_x(config.cells.size());
-  for (std::size_t i = 0; i < by_x.size(); ++i) by_x[i] = i;
-  std::sort(by_x.begin(), by_x.end(), [&](std::size_t l, std::size_t r) {
-    return config.cells[l].center[0] < config.cells[r].center[0] || (config.cells[l].center[0] == config.cells[r].center[0] && l < r);
-  });
-  std::vector<std::pair<std::size_t, std::size_t>> near_pairs;  // (later cell j, earlier cell i)
-  for (std::size_t a = 0; a < by_x.size(); ++a) {
-    const std::size_t i = by_x[a];
-    const double radius_i = samples_of_kind.at(kind_of_cell[i]).bounding_radius;
-    for (std::size_t b = a + 1; b < by_x.size(); ++b) {
-      const std::size_t j = by_x[b];
-      if (config.cells[j].center[0] - config.cells[i].center[0] > radius_i + largest_radius) break;
-      const double radius_j = samples_of_kind.at(kind_of_cell[j]).bounding_radius;
-      double distance_squared = 0.0;
-      for (int axis = 0; axis < 3; ++axis) {
-        const double d = config.cells[j].center[axis] - config.cells[i].center[axis];
-        distance_squared += d * d;
-      }
-      if (distance_squared < (radius_i + radius_j) * (radius_i + radius_j))
-        near_pairs.emplace_back(std::max(i, j), std::min(i, j));
+  // Overlaps: only pairs whose bounding spheres meet (their boxes first,
+  // geometry/box_overlaps.hpp); then no sample of either inside the other.
+  std::vector<Box> boxes(config.cells.size());
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const double radius = samples_of_kind.at(kind_of_cell[i]).bounding_radius;
+    for (int axis = 0; axis < 3; ++axis) {
+      boxes[i][axis] = config.cells[i].center[axis] - radius;
+      boxes[i][3 + axis] = config.cells[i].center[axis] + radius;
     }
+  }
+  std::vector<std::pair<std::size_t, std::size_t>> near_pairs;  // (later cell j, earlier cell i)
+  for (const auto& [i, j] : boxes_within(boxes, 0.0)) {
+    const double radius_i = samples_of_kind.at(kind_of_cell[i]).bounding_radius;
+    const double radius_j = samples_of_kind.at(kind_of_cell[j]).bounding_radius;
+    double distance_squared = 0.0;
+    for (int axis = 0; axis < 3; ++axis) {
+      const double d = config.cells[j].center[axis] - config.cells[i].center[axis];
+      distance_squared += d * d;
+    }
+    if (distance_squared < (radius_i + radius_j) * (radius_i + radius_j)) near_pairs.emplace_back(j, i);
   }
   std::sort(near_pairs.begin(), near_pairs.end());  // report the first pair in file order
   const auto any_sample_inside = [&](std::size_t from, std::size_t into) {

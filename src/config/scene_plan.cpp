@@ -41,7 +41,7 @@ ScenePlan plan_scene(const CaseConfig& config, const DerivedQuantities& derived)
   else
     fluid << "; " << (config.time.scheme == TimeScheme::bdf2 ? "BDF2" : "backward Euler") << " steps of "
           << config.time.dt << " s to " << config.time.end << " s";
-  stages.push_back({"fluid", true, fluid.str()});
+  stages.push_back({stage_name::fluid_solve, true, fluid.str()});
   stages.push_back({"fluid operator", true, fluid_operator_path(config, derived, plan.stencil)});
   std::string preconditioner;
   const char* when = derived.stokes ? "built once (the Stokes operator is constant while dt is)"
@@ -65,11 +65,11 @@ ScenePlan plan_scene(const CaseConfig& config, const DerivedQuantities& derived)
   if (config.cells.empty()) {
     const char* no_cells = "skipped: the scene has no cells";
     stages.push_back({"cells", false, no_cells});
-    stages.push_back({"neo-Hookean cell forces", false, no_cells});
-    stages.push_back({"Morse cell-cell forces", false, no_cells});
-    stages.push_back({"inertia/buoyancy", false, no_cells});
-    stages.push_back({"RKPM interpolate/spread", false, no_cells});
-    if (config.vessel.enabled) stages.push_back({"wall repulsion", false, no_cells});
+    for (const char* stage : {stage_name::elastic_forces, stage_name::interaction_forces, stage_name::inertia,
+                              stage_name::spread, stage_name::cell_stiffness, stage_name::interpolate,
+                              stage_name::move_cells})
+      stages.push_back({stage, false, no_cells});
+    if (config.vessel.enabled) stages.push_back({stage_name::wall_repulsion, false, no_cells});
   } else {
     std::map<std::string, int> count_per_kind;
     for (const CellPlacement& cell : config.cells) ++count_per_kind[cell.kind];
@@ -100,7 +100,7 @@ ScenePlan plan_scene(const CaseConfig& config, const DerivedQuantities& derived)
     }
     stages.push_back({"cells", true, cells.str()});
     const char* steady_only = "skipped: a steady solve does not move the cells (output steps only)";
-    stages.push_back({"neo-Hookean cell forces", true,
+    stages.push_back({stage_name::elastic_forces, true,
                       moving ? "total-Lagrangian tetrahedra, every step" : "total-Lagrangian tetrahedra, output steps only"});
     const InteractionConfig& interaction = config.interaction;
     if (interaction.enabled) {
@@ -117,10 +117,10 @@ ScenePlan plan_scene(const CaseConfig& config, const DerivedQuantities& derived)
                      : "rebuilt every step (scene.skip_unneeded_stages = false)")
             << "; cells farther apart than the cut-off do no pair work; "
             << (moving ? "every step" : "output steps only");
-      stages.push_back({"Morse cell-cell forces", true, morse.str()});
+      stages.push_back({stage_name::interaction_forces, true, morse.str()});
       plan.morse_forces = true;
     } else {
-      stages.push_back({"Morse cell-cell forces", false, "skipped: interaction.enabled = false"});
+      stages.push_back({stage_name::interaction_forces, false, "skipped: interaction.enabled = false"});
     }
     if (config.vessel.enabled) {
       const VesselConfig& vessel = config.vessel;
@@ -129,24 +129,24 @@ ScenePlan plan_scene(const CaseConfig& config, const DerivedQuantities& derived)
            << " um of it with the pressure " << vessel.wall_repulsion_pressure << " Pa x (1 - d/d0)^2";
       plan.wall_repulsion = moving && vessel.wall_repulsion_pressure > 0.0;
       if (!moving)
-        stages.push_back({"wall repulsion", false, steady_only});
+        stages.push_back({stage_name::wall_repulsion, false, steady_only});
       else if (plan.wall_repulsion)
-        stages.push_back({"wall repulsion", true, wall.str()});
+        stages.push_back({stage_name::wall_repulsion, true, wall.str()});
       else
-        stages.push_back({"wall repulsion", false, "skipped: vessel.wall_repulsion_Pa = 0"});
+        stages.push_back({stage_name::wall_repulsion, false, "skipped: vessel.wall_repulsion_Pa = 0"});
     }
     bool denser = false;
     for (const CellPlacement& cell : config.cells)
       denser = denser || find_cell_kind(config, cell.kind)->density != config.fluid.density;
     plan.inertia = moving && (denser || !skip);
     if (!moving)
-      stages.push_back({"inertia/buoyancy", false, steady_only});
+      stages.push_back({stage_name::inertia, false, steady_only});
     else if (plan.inertia)
-      stages.push_back({"inertia/buoyancy", true,
+      stages.push_back({stage_name::inertia, true,
                         std::string("(rho_s - rho_f)(g - dv/dt) at the cell nodes, lumped") +
                             (denser ? "" : " (every cell is as dense as the fluid: zero; scene.skip_unneeded_stages = false)")});
     else
-      stages.push_back({"inertia/buoyancy", false, "skipped: every cell is as dense as the fluid (rho_s = rho_f)"});
+      stages.push_back({stage_name::inertia, false, "skipped: every cell is as dense as the fluid (rho_s = rho_f)"});
     if (moving) {
       std::ostringstream rkpm;
       rkpm << "cubic B-spline window, support " << config.coupling.support_elements
@@ -155,9 +155,17 @@ ScenePlan plan_scene(const CaseConfig& config, const DerivedQuantities& derived)
            << (skip ? "only where the plain window does not reproduce linear fields (walls, graded mesh)"
                     : "everywhere (scene.skip_unneeded_stages = false)")
            << "; spreading is the exact transpose of interpolation";
-      stages.push_back({"RKPM interpolate/spread", true, rkpm.str()});
+      stages.push_back({stage_name::spread, true, rkpm.str()});
+      stages.push_back({stage_name::cell_stiffness, plan.semi_implicit,
+                        plan.semi_implicit ? "the cells' forces linearized about x^n: their change K dt I u enters every "
+                                             "GMRES iteration"
+                                           : "skipped: explicit coupling (coupling.scheme = \"explicit\")"});
+      stages.push_back({stage_name::interpolate, true, "the fluid's new velocity at the cell nodes (the same shape functions)"});
+      stages.push_back({stage_name::move_cells, true, "x^(n+1) = x^n + dt v^(n+1), stopping on a speed that is not finite"});
     } else {
-      stages.push_back({"RKPM interpolate/spread", false, steady_only});
+      for (const char* stage : {stage_name::spread, stage_name::cell_stiffness, stage_name::interpolate,
+                                stage_name::move_cells})
+        stages.push_back({stage, false, steady_only});
     }
   }
   stages.push_back({"output", config.output.write_fields,

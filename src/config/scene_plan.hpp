@@ -11,8 +11,23 @@
 
 namespace rouleau {
 
+// The names of the coupled step's stages: as --explain lists them, as the step runs and
+// times them (coupling/immersed_coupling.hpp, coupling/cell_forces.hpp) and as the run
+// log's time per stage and the diagnostics' time columns name them.
+namespace stage_name {
+inline constexpr const char* elastic_forces = "neo-Hookean forces";
+inline constexpr const char* interaction_forces = "Morse forces";
+inline constexpr const char* wall_repulsion = "wall repulsion";
+inline constexpr const char* inertia = "inertia/buoyancy";
+inline constexpr const char* spread = "RKPM spread";
+inline constexpr const char* cell_stiffness = "cell stiffness (semi-implicit)";
+inline constexpr const char* fluid_solve = "fluid solve";
+inline constexpr const char* interpolate = "RKPM interpolate";
+inline constexpr const char* move_cells = "move cells";
+}  // namespace stage_name
+
 struct Stage {
-  std::string name;    // "fluid", "cells", ...
+  std::string name;    // a stage_name, or what the plan describes besides: "fluid operator", "cells", ...
   bool runs = true;
   std::string reason;  // why it runs in this form, or why it is skipped
 };

@@ -34,9 +34,9 @@ struct CellForceState {
 class CellForces {
  public:
   using NodeVectors = CellPopulation::NodeVectors;
-  static constexpr const char* elastic_stage = "neo-Hookean forces";
-  static constexpr const char* interaction_stage = "Morse forces";
-  static constexpr const char* wall_stage = "wall repulsion";
+  static constexpr const char* elastic_stage = stage_name::elastic_forces;
+  static constexpr const char* interaction_stage = stage_name::interaction_forces;
+  static constexpr const char* wall_stage = stage_name::wall_repulsion;
 
   // `population` and `interaction` (null without one) must outlive it.
   CellForces(CellPopulation& population, SurfaceInteraction* interaction, const CaseConfig& config,

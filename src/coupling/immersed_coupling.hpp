@@ -81,12 +81,12 @@ class ImmersedCoupling {
   static constexpr const char* elastic_stage = CellForces::elastic_stage;
   static constexpr const char* interaction_stage = CellForces::interaction_stage;
   static constexpr const char* wall_stage = CellForces::wall_stage;
-  static constexpr const char* inertia_stage = "inertia/buoyancy";
-  static constexpr const char* spread_stage = "RKPM spread";
-  static constexpr const char* fluid_stage = "fluid solve";
-  static constexpr const char* interpolate_stage = "RKPM interpolate";
-  static constexpr const char* move_stage = "move cells";
-  static constexpr const char* stiffness_stage = "cell stiffness (semi-implicit)";
+  static constexpr const char* inertia_stage = stage_name::inertia;
+  static constexpr const char* spread_stage = stage_name::spread;
+  static constexpr const char* fluid_stage = stage_name::fluid_solve;
+  static constexpr const char* interpolate_stage = stage_name::interpolate;
+  static constexpr const char* move_stage = stage_name::move_cells;
+  static constexpr const char* stiffness_stage = stage_name::cell_stiffness;
 
   // `fluid`, `cells` and `forces` must outlive the coupling. The cells must lie inside the
   // fluid mesh. The stages are those `plan` says run.

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "kernels/csr_rows.hpp"
 #include "kernels/rkpm.hpp"
 #include "kernels/scatter_sum.hpp"
 #include "util/instantiate.hpp"
@@ -57,127 +58,16 @@ BasicRkpmCoupler<ExecSpace>::BasicRkpmCoupler(const FluidMesh& mesh, double supp
 
   // Bins of the fluid nodes, built once: no narrower than the largest support, so a
   // point's support lies in the 3³ bins around its own.
-  RkpmSupportSearch& search = search_;
-  for (int d = 0; d < 3; ++d) {
-    search.lower[d] = mesh.lower[d];
-    search.length[d] = mesh.upper[d] - mesh.lower[d];
-    search.periodic[d] = mesh.periodic[d] ? 1 : 0;
-    search.bins[d] = std::max(1, static_cast<int>(std::floor(search.length[d] / largest_support[d])));
-    search.bin_size[d] = search.length[d] / search.bins[d];
-  }
-  const int n_bins = search.bins[0] * search.bins[1] * search.bins[2];
-  std::vector<std::vector<int>> members(n_bins);
-  for (int node = 0; node < num_dof_nodes_; ++node) {
-    int b[3];
-    for (int d = 0; d < 3; ++d) b[d] = search.bin_coordinate(position(node, d), d);
-    members[(b[2] * search.bins[1] + b[1]) * search.bins[0] + b[0]].push_back(node);
-  }
-  bin_offsets_ = Kokkos::View<int*>("rouleau::RkpmCoupler::bin_offsets", n_bins + 1);
-  binned_nodes_ = Kokkos::View<int*>("rouleau::RkpmCoupler::binned_nodes", num_dof_nodes_);
-  auto h_offsets = Kokkos::create_mirror_view(bin_offsets_);
-  auto h_binned = Kokkos::create_mirror_view(binned_nodes_);
-  int k = 0;
-  for (int b = 0; b < n_bins; ++b) {
-    h_offsets(b) = k;
-    for (const int node : members[b]) h_binned(k++) = node;
-  }
-  h_offsets(n_bins) = k;
-  Kokkos::deep_copy(bin_offsets_, h_offsets);
-  Kokkos::deep_copy(binned_nodes_, h_binned);
+  const bool periodic[3] = {mesh.periodic[0], mesh.periodic[1], mesh.periodic[2]};
+  node_bins_.grid = bins_tiling(mesh.lower.data(), mesh.upper.data(), periodic, largest_support, 1);
+  sort_into_bins<ExecSpace>(node_position_, num_dof_nodes_, KOKKOS_LAMBDA(int) { return true; }, node_bins_);
 }
 
 template <class ExecSpace>
 void BasicRkpmCoupler<ExecSpace>::fill_rows(const PointVectors& points, bool count_only) {
-  const RkpmSupportSearch search = search_;
-  auto node_position = node_position_;
-  auto node_support = node_support_;
-  auto bin_offsets = bin_offsets_;
-  auto binned = binned_nodes_;
-  auto offsets = offsets_;
-  auto nodes = nodes_;
-  auto phi = shape_functions_;
-  const bool always_correct = always_correct_;
-  const bool restricted = active_points_.extent(0) > 0;
-  auto active = active_points_;
-  const bool counting_some = counted_points_.extent(0) > 0;
-  auto counted = counted_points_;
-  int corrected = 0;
-  Kokkos::parallel_reduce(
-      "rouleau::RkpmCoupler::shape_functions", Kokkos::RangePolicy<ExecSpace>(0, num_points_),
-      KOKKOS_LAMBDA(const int p, int& corrected_count) {
-        if (restricted && !active(p)) {  // an empty row (restrict_rows)
-          if (count_only) offsets(p + 1) = 0;
-          return;
-        }
-        const double x[3] = {points(p, 0), points(p, 1), points(p, 2)};
-        int home[3];
-        for (int d = 0; d < 3; ++d) home[d] = search.bin_coordinate(x[d], d);
-        int count = 0;
-        const int first = count_only ? 0 : offsets(p);
-        // M = Σ H H^T w with H = (1, y), y = x_J − x
-        double m[4][4] = {{0, 0, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}};
-        // The 3³ bins around the point's (fewer when a direction has fewer bins).
-        int span[3];
-        for (int d = 0; d < 3; ++d) span[d] = search.bins[d] < 3 ? search.bins[d] : 3;
-        for (int iz = 0; iz < span[2]; ++iz)
-          for (int iy = 0; iy < span[1]; ++iy)
-            for (int ix = 0; ix < span[0]; ++ix) {
-              const int shift[3] = {ix, iy, iz};
-              int b[3];
-              bool inside = true;
-              for (int d = 0; d < 3; ++d) {
-                b[d] = search.bins[d] < 3 ? shift[d] : home[d] - 1 + shift[d];
-                if (search.periodic[d]) b[d] = (b[d] % search.bins[d] + search.bins[d]) % search.bins[d];
-                else if (b[d] < 0 || b[d] >= search.bins[d]) inside = false;
-              }
-              if (!inside) continue;
-              const int bin = (b[2] * search.bins[1] + b[1]) * search.bins[0] + b[0];
-              for (int k = bin_offsets(bin); k < bin_offsets(bin + 1); ++k) {
-                const int node = binned(k);
-                double y[3], w = 1.0;
-                for (int d = 0; d < 3; ++d) {
-                  y[d] = search.offset(node_position(node, d), x[d], d);
-                  w *= cubic_bspline_window(y[d] / node_support(node, d));
-                }
-                if (!(w > 0.0)) continue;
-                if (!count_only) {
-                  nodes(first + count) = node;
-                  phi(first + count) = w;
-                  const double h[4] = {1.0, y[0], y[1], y[2]};
-                  for (int i = 0; i < 4; ++i)
-                    for (int j = 0; j < 4; ++j) m[i][j] += h[i] * h[j] * w;
-                }
-                ++count;
-              }
-            }
-        if (count_only) {
-          offsets(p + 1) = count;
-          return;
-        }
-        // Skip the correction where the window alone is a partition of unity with zero
-        // first moments (it then reproduces linear fields as it is).
-        const double scale = m[0][0] > 0 ? 1.0 : 0.0;
-        const double first_moment = fabs(m[0][1]) + fabs(m[0][2]) + fabs(m[0][3]);
-        const double support_scale = node_support(nodes(first), 0) + node_support(nodes(first), 1) +
-                                     node_support(nodes(first), 2);
-        const bool plain_reproduces =
-            scale > 0 && fabs(m[0][0] - 1.0) < 1e-12 && first_moment < 1e-12 * support_scale;
-        if (plain_reproduces && !always_correct) return;
-        double c[4] = {0, 0, 0, 0};
-        if (!solve_moment_system(m, c)) {
-          for (int k = first; k < first + count; ++k) phi(k) = NAN;
-          return;
-        }
-        // Φ_J = H(0)^T M⁻¹ H(y_J) w_J = (c · H(y_J)) w_J with M c = H(0)
-        for (int k = first; k < first + count; ++k) {
-          const int node = nodes(k);
-          double y[3];
-          for (int d = 0; d < 3; ++d) y[d] = search.offset(node_position(node, d), x[d], d);
-          phi(k) *= c[0] + c[1] * y[0] + c[2] * y[1] + c[3] * y[2];
-        }
-        if (!counting_some || counted(p)) ++corrected_count;
-      },
-      corrected);
+  const RkpmSupports<typename ExecSpace::memory_space> supports{node_bins_, node_position_, node_support_};
+  const int corrected = rkpm_shape_functions(ExecSpace(), supports, points, active_points_, counted_points_,
+                                             always_correct_, count_only, offsets_, nodes_, shape_functions_);
   if (!count_only) corrected_points_ = corrected;
 }
 
@@ -190,21 +80,11 @@ void BasicRkpmCoupler<ExecSpace>::update(const PointVectors& points) {
                                 std::to_string(active_points_.extent(0)) + " flags of restrict_rows()");
   if (static_cast<int>(offsets_.extent(0)) != num_points_ + 1)
     offsets_ = Kokkos::View<int*>("rouleau::RkpmCoupler::offsets", num_points_ + 1);
-  Kokkos::deep_copy(offsets_, 0);
   fill_rows(points, true);
+  const int entries = counts_to_offsets<ExecSpace>("rouleau::RkpmCoupler::offsets", offsets_, num_points_);
+  ensure_length(nodes_, static_cast<std::size_t>(entries), "rouleau::RkpmCoupler::nodes");
+  ensure_length(shape_functions_, static_cast<std::size_t>(entries), "rouleau::RkpmCoupler::shape_functions");
   auto offsets = offsets_;
-  int entries = 0;
-  Kokkos::parallel_scan(
-      "rouleau::RkpmCoupler::offsets", Kokkos::RangePolicy<ExecSpace>(0, num_points_ + 1),
-      KOKKOS_LAMBDA(const int i, int& sum, const bool final) {
-        sum += offsets(i);
-        if (final) offsets(i) = sum;
-      },
-      entries);
-  if (static_cast<int>(nodes_.extent(0)) < entries) {
-    nodes_ = Kokkos::View<int*>("rouleau::RkpmCoupler::nodes", entries + entries / 5);
-    shape_functions_ = Kokkos::View<double*>("rouleau::RkpmCoupler::shape_functions", entries + entries / 5);
-  }
   // Active points with an empty support have left the fluid.
   const bool restricted = active_points_.extent(0) > 0;
   auto active = active_points_;
@@ -229,10 +109,7 @@ void BasicRkpmCoupler<ExecSpace>::update(const PointVectors& points) {
 template <class ExecSpace>
 Kokkos::View<int*> BasicRkpmCoupler<ExecSpace>::support_nodes() const {
   // Persistent buffers: this runs every step of a run across ranks.
-  if (static_cast<int>(in_support_.extent(0)) != num_dof_nodes_)
-    in_support_ = Kokkos::View<int*>("rouleau::RkpmCoupler::in_support", num_dof_nodes_);
-  else
-    Kokkos::deep_copy(in_support_, 0);
+  zero_with_length(in_support_, num_dof_nodes_, "rouleau::RkpmCoupler::in_support");
   auto in_support = in_support_;
   auto offsets = offsets_;
   auto nodes = nodes_;
@@ -241,39 +118,15 @@ Kokkos::View<int*> BasicRkpmCoupler<ExecSpace>::support_nodes() const {
   Kokkos::parallel_for(
       "rouleau::RkpmCoupler::mark_supports", Kokkos::RangePolicy<ExecSpace>(0, entries),
       KOKKOS_LAMBDA(const int k) { in_support(nodes(k)) = 1; });
-  // The marked nodes, compacted in order: position = the number marked before.
-  int count = 0;
-  Kokkos::parallel_reduce(
-      "rouleau::RkpmCoupler::count_supports", Kokkos::RangePolicy<ExecSpace>(0, num_dof_nodes_),
-      KOKKOS_LAMBDA(const int n, int& sum) { sum += in_support(n); }, count);
-  if (static_cast<int>(support_nodes_.extent(0)) < count)
-    support_nodes_ = Kokkos::View<int*>("rouleau::RkpmCoupler::support_nodes", count + count / 5);
-  const auto support = Kokkos::subview(support_nodes_, std::make_pair(0, count));
-  Kokkos::parallel_scan(
-      "rouleau::RkpmCoupler::compact_supports", Kokkos::RangePolicy<ExecSpace>(0, num_dof_nodes_),
-      KOKKOS_LAMBDA(const int n, int& before, const bool final) {
-        if (final && in_support(n)) support(before) = n;
-        before += in_support(n);
-      });
-  return support;
+  return gather_marked<ExecSpace>("rouleau::RkpmCoupler::support_nodes", num_dof_nodes_,
+                                  KOKKOS_LAMBDA(const int n) { return in_support(n) != 0; }, support_nodes_);
 }
 
 template <class ExecSpace>
 void BasicRkpmCoupler<ExecSpace>::interpolate(const Kokkos::View<const double*>& nodal, int stride,
                                               const PointVectors& values) const {
   ProfilingRegion region("rouleau::RkpmCoupler::interpolate");
-  auto offsets = offsets_;
-  auto nodes = nodes_;
-  auto phi = shape_functions_;
-  // u(x_p) = Σ_J Φ_J(x_p) u_J: one thread per point, a pure gather
-  Kokkos::parallel_for(
-      "rouleau::RkpmCoupler::interpolate", Kokkos::RangePolicy<ExecSpace>(0, num_points_),
-      KOKKOS_LAMBDA(const int p) {
-        double u[3] = {0, 0, 0};
-        for (int k = offsets(p); k < offsets(p + 1); ++k)
-          for (int c = 0; c < 3; ++c) u[c] += phi(k) * nodal(stride * nodes(k) + c);
-        for (int c = 0; c < 3; ++c) values(p, c) = u[c];
-      });
+  rkpm_interpolate(ExecSpace(), offsets_, nodes_, shape_functions_, nodal, stride, values);
 }
 
 template <class ExecSpace>
@@ -286,17 +139,7 @@ void BasicRkpmCoupler<ExecSpace>::spread(const PointVectors& forces, const Kokko
     spread_scatter_ = Scatter("rouleau::RkpmCoupler::spread_scatter", size);
   }
   spread_scatter_.reset();
-  auto scatter = spread_scatter_;
-  auto offsets = offsets_;
-  auto nodes = nodes_;
-  auto phi = shape_functions_;
-  // F_J += Σ_p Φ_J(x_p) F_p: the transpose of interpolate
-  Kokkos::parallel_for(
-      "rouleau::RkpmCoupler::spread", Kokkos::RangePolicy<ExecSpace>(0, num_points_), KOKKOS_LAMBDA(const int p) {
-        auto access = scatter.access();
-        for (int k = offsets(p); k < offsets(p + 1); ++k)
-          for (int c = 0; c < 3; ++c) access(stride * nodes(k) + c) += phi(k) * forces(p, c);
-      });
+  rkpm_spread(ExecSpace(), offsets_, nodes_, shape_functions_, forces, spread_scatter_, stride);
   gather_into(spread_sum_, spread_scatter_);
   auto sum = spread_sum_;
   Kokkos::parallel_for(

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "kernels/point_bins.hpp"
 #include "kernels/rkpm.hpp"
 #include "mesh/fluid_mesh.hpp"
 
@@ -81,10 +82,9 @@ class BasicRkpmCoupler {
  private:
   int num_dof_nodes_ = 0, num_points_ = 0, corrected_points_ = 0;
   bool always_correct_ = false;
-  RkpmSupportSearch search_{};
   Kokkos::View<double* [3]> node_position_;  // dof node positions [μm]
   Kokkos::View<double* [3]> node_support_;   // a_Jd [μm]
-  Kokkos::View<int*> bin_offsets_, binned_nodes_;
+  BinnedPoints<typename ExecSpace::memory_space> node_bins_;  // the dof nodes, binned once
   Kokkos::View<int*> offsets_, nodes_;
   Kokkos::View<const int*> active_points_, counted_points_;  // restrict_rows()
   Kokkos::View<double*> shape_functions_;
@@ -95,8 +95,7 @@ class BasicRkpmCoupler {
   mutable Kokkos::View<int*> in_support_, support_nodes_;  // support_nodes()
   mutable Scatter spread_scatter_;
 
- public:
-  // (Kernels with lambdas must be public for CUDA.)
+  // The shape functions' rows (count_only: their lengths) at `points`.
   void fill_rows(const PointVectors& points, bool count_only);
 };
 

@@ -7,6 +7,7 @@
 #include "distributed/additive_schwarz.hpp"
 #include "distributed/distributed_fluid_operator.hpp"
 #include "distributed/local_mesh.hpp"
+#include "kernels/csr_rows.hpp"
 #include "util/view_transfer.hpp"
 
 namespace rouleau {
@@ -74,10 +75,9 @@ std::vector<int> local_of_global_of(const ElementPartition& partition) {
   return local;
 }
 
-// The owned dof nodes' geometric nodes (a periodic dof node's every image), in bins of the
-// mesh's largest element diameter: the nearest dof node to a point inside the fluid is
-// within the diameter of the element holding it.
-BinnedPoints bin_owned_nodes(const FluidMesh& mesh, const std::vector<int>& local_of_global, const int owned_nodes) {
+// The largest distance between two nodes of an element: the nearest dof node to a point
+// inside the fluid is within it.
+double largest_element_diameter(const FluidMesh& mesh) {
   auto coordinates = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
   auto element_nodes = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.element_nodes);
   double diameter2 = 0.0;
@@ -91,12 +91,24 @@ BinnedPoints bin_owned_nodes(const FluidMesh& mesh, const std::vector<int>& loca
         }
         diameter2 = std::max(diameter2, d2);
       }
-  std::vector<std::array<double, 3>> owned;
+  return std::sqrt(diameter2);
+}
+
+// The geometric nodes of the dof nodes this rank owns (a periodic dof node's every image).
+Kokkos::View<double* [3], Kokkos::HostSpace> owned_geometric_nodes(const FluidMesh& mesh,
+                                                                   const std::vector<int>& local_of_global,
+                                                                   const int owned_nodes) {
+  auto coordinates = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
+  std::vector<int> owned;
   for (int g = 0; g < mesh.num_nodes; ++g) {
     const int local = local_of_global[mesh.dof_node_of_node[g]];
-    if (local >= 0 && local < owned_nodes) owned.push_back({coordinates(g, 0), coordinates(g, 1), coordinates(g, 2)});
+    if (local >= 0 && local < owned_nodes) owned.push_back(g);
   }
-  return BinnedPoints(owned, mesh.lower, mesh.upper, mesh.periodic, std::sqrt(diameter2));
+  Kokkos::View<double* [3], Kokkos::HostSpace> positions("rouleau::FluidDistribution::owned_node_positions",
+                                                         owned.size());
+  for (std::size_t i = 0; i < owned.size(); ++i)
+    for (int d = 0; d < 3; ++d) positions(i, d) = coordinates(owned[i], d);
+  return positions;
 }
 }  // namespace
 
@@ -107,8 +119,15 @@ FluidDistribution::FluidDistribution(const Communicator& communicator, const Flu
       halo_(communicator_, partition_, fluid_unknowns_per_node),
       node_sums_(communicator_, partition_),
       local_of_global_(local_of_global_of(partition_)),
-      owned_node_positions_(bin_owned_nodes(global_mesh, local_of_global_, partition_.num_owned_nodes)),
+      owned_node_positions_(owned_geometric_nodes(global_mesh, local_of_global_, partition_.num_owned_nodes)),
+      largest_element_diameter_(largest_element_diameter(global_mesh)),
       global_node_(device_copy(partition_.global_node, "rouleau::FluidDistribution::global_node")) {
+  const bool periodic[3] = {global_mesh.periodic[0], global_mesh.periodic[1], global_mesh.periodic[2]};
+  const double width[3] = {largest_element_diameter_, largest_element_diameter_, largest_element_diameter_};
+  owned_node_bins_.grid = bins_tiling(global_mesh.lower.data(), global_mesh.upper.data(), periodic, width, 1);
+  sort_into_bins<Kokkos::DefaultHostExecutionSpace>(owned_node_positions_,
+                                                    static_cast<int>(owned_node_positions_.extent(0)),
+                                                    KOKKOS_LAMBDA(int) { return true; }, owned_node_bins_);
   std::vector<int> owned_local(partition_.num_global_nodes, -1);
   for (int i = 0; i < partition_.num_owned_nodes; ++i) owned_local[partition_.global_node[i]] = i;
   owned_local_ = device_copy(owned_local, "rouleau::FluidDistribution::owned_local");
@@ -184,27 +203,15 @@ Kokkos::View<const int*> FluidDistribution::nodes_of_any_rank(const Kokkos::View
   Kokkos::deep_copy(host_node_bits_, node_bits_);
   communicator_.bitwise_or(host_node_bits_.data(), words);
   Kokkos::deep_copy(node_bits_, host_node_bits_);
-  // The marked nodes in order: position = the number marked before.
-  auto marked = KOKKOS_LAMBDA(const int n) { return (bits(n / 32) >> (n % 32)) & 1u; };
-  int count = 0;
-  Kokkos::parallel_reduce(
-      "rouleau::FluidDistribution::count_nodes", Kokkos::RangePolicy<ExecSpace>(0, global_nodes),
-      KOKKOS_LAMBDA(const int n, int& sum) { sum += static_cast<int>(marked(n)); }, count);
-  if (static_cast<int>(nodes_of_any_rank_.extent(0)) < count)
-    nodes_of_any_rank_ = Kokkos::View<int*>("rouleau::FluidDistribution::nodes_of_any_rank", count + count / 5);
-  const auto all = Kokkos::subview(nodes_of_any_rank_, std::make_pair(0, count));
-  Kokkos::parallel_scan(
-      "rouleau::FluidDistribution::compact_nodes", Kokkos::RangePolicy<ExecSpace>(0, global_nodes),
-      KOKKOS_LAMBDA(const int n, int& before, const bool final) {
-        if (final && marked(n)) all(before) = n;
-        before += static_cast<int>(marked(n));
-      });
-  return all;
+  return gather_marked<ExecSpace>(
+      "rouleau::FluidDistribution::nodes_of_any_rank", global_nodes,
+      KOKKOS_LAMBDA(const int n) { return ((bits(n / 32) >> (n % 32)) & 1u) != 0; }, nodes_of_any_rank_);
 }
 
 std::vector<int> FluidDistribution::rank_holding(const std::vector<std::array<double, 3>>& points) const {
   std::vector<double> distance(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) distance[i] = owned_node_positions_.nearest_distance(points[i]);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    distance[i] = nearest_distance(owned_node_bins_, owned_node_positions_, points[i].data(), largest_element_diameter_);
   return communicator_.rank_of_smallest(distance);
 }
 

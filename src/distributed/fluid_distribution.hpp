@@ -18,7 +18,7 @@
 
 #include "distributed/node_halo.hpp"
 #include "fluid/fluid_exchange.hpp"
-#include "geometry/binned_points.hpp"
+#include "kernels/point_bins.hpp"
 #include "distributed/node_sums.hpp"
 #include "mesh/fluid_mesh.hpp"
 #include "parallel/communicator.hpp"
@@ -97,7 +97,11 @@ class FluidDistribution final : public FluidExchange {
   NodeHalo halo_;
   NodeSums node_sums_;
   std::vector<int> local_of_global_;
-  BinnedPoints owned_node_positions_;  // rank_holding(): the owned dof nodes' geometric nodes
+  // rank_holding(): the owned dof nodes' geometric nodes (a periodic dof node's every
+  // image), binned on the host in bins of the mesh's largest element diameter.
+  Kokkos::View<double* [3], Kokkos::HostSpace> owned_node_positions_;
+  BinnedPoints<Kokkos::HostSpace> owned_node_bins_;
+  double largest_element_diameter_ = 0.0;
   Kokkos::View<int*> global_node_;  // local dof node → global dof node (device)
   Kokkos::View<int*> owned_local_;  // global dof node → its local node where this rank owns it, else −1 (device)
   mutable Vector node_buffer_;      // replicate() at some nodes

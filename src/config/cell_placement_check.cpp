@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "config/number_text.hpp"
+#include "util/number_text.hpp"
 #include "geometry/box_overlaps.hpp"
 #include "geometry/cell_shapes.hpp"
 #include "util/errors.hpp"

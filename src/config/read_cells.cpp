@@ -5,7 +5,7 @@
 
 #include "config/case_section_readers.hpp"
 #include "config/cell_kinds.hpp"
-#include "config/number_text.hpp"
+#include "util/number_text.hpp"
 
 namespace rouleau {
 namespace {

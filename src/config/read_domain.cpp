@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "config/case_section_readers.hpp"
-#include "config/number_text.hpp"
+#include "util/number_text.hpp"
 
 namespace rouleau {
 namespace {

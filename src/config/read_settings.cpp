@@ -6,7 +6,7 @@
 #include "config/case_section_readers.hpp"
 #include "config/derived.hpp"
 #include "config/load_case.hpp"
-#include "config/number_text.hpp"
+#include "util/number_text.hpp"
 #include "util/errors.hpp"
 
 namespace rouleau {

@@ -9,7 +9,7 @@
 #include "config/case_file_names.hpp"
 #include "config/cell_kinds.hpp"
 #include "config/load_case.hpp"
-#include "config/number_text.hpp"
+#include "util/number_text.hpp"
 #include "config/toml_table_reader.hpp"
 
 namespace rouleau {

@@ -8,7 +8,7 @@
 #include <utility>
 
 #include "config/case_overrides.hpp"
-#include "config/number_text.hpp"
+#include "util/number_text.hpp"
 #include "util/errors.hpp"
 
 namespace rouleau {

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "config/number_text.hpp"
+#include "util/number_text.hpp"
 
 namespace rouleau {
 

@@ -32,6 +32,7 @@
 #include <stdexcept>
 
 #include "geometry/cell_shape_details.hpp"
+#include "util/number_text.hpp"
 
 namespace rouleau {
 
@@ -47,12 +48,7 @@ constexpr double evans_fung_a0 = 0.207;
 constexpr double evans_fung_a1 = 2.002;
 constexpr double evans_fung_a2 = -1.122;
 
-std::string format_length(double value) {
-  std::ostringstream out;
-  out.precision(4);
-  out << value << " μm";
-  return out.str();
-}
+std::string format_length(double value) { return format_number(value, 4) + " μm"; }
 
 [[noreturn]] void fail(const CellGeometry& kind, const std::string& reason) {
   throw std::runtime_error(describe_kind(kind) + ": " + reason);

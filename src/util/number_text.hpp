@@ -1,6 +1,6 @@
 #pragma once
-// Numbers as text, the two ways the configuration writes them: rounded for a person (error
-// messages, the case-file reference) and exact for a file (the resolved case).
+// Numbers as text, the two ways rouleau writes them: rounded for a person (error messages,
+// the case-file reference) and exact for a file (the resolved case).
 // Host-only: includes no Kokkos header.
 #include <cstdint>
 #include <string>

@@ -1,4 +1,4 @@
-#include "config/number_text.hpp"
+#include "util/number_text.hpp"
 
 #include <charconv>
 

@@ -58,9 +58,6 @@ class BasicSurfaceNeighborList {
   void restore_state(const CheckpointData& data, const PointVectors& point_positions);
 
  private:
-  // The broad phase: marks point_active_ and returns the active cells' common box.
-  void find_active_cells(const PointVectors& point_positions, double lower[3], double upper[3]);
-
   int num_cells_, num_points_;
   double search_radius_, skin_;
   bool half_list_;
@@ -80,6 +77,9 @@ class BasicSurfaceNeighborList {
 
  public:
   // (Kernels with lambdas must be public for CUDA.)
+  // The broad phase: marks point_active_ and returns the active cells' common box.
+  void find_active_cells(const PointVectors& point_positions, double lower[3], double upper[3]);
+  // The list's rows at `point_positions` (count_only: their lengths into offsets_).
   void fill_rows(const PointVectors& point_positions, bool count_only);
 };
 

@@ -153,6 +153,11 @@ KOKKOS_INLINE_FUNCTION double nearest_distance(const BinnedPoints<MemorySpace>& 
   return found ? sqrt(nearest2) : HUGE_VAL;
 }
 
+// The `include` of sort_into_bins that takes every point.
+struct EveryPoint {
+  KOKKOS_INLINE_FUNCTION bool operator()(int) const { return true; }
+};
+
 // Sorts the points p < num_points with include(p) into `binned`'s grid, the position of p
 // being position(p, d): a counting sort (counts, scan, placement), then each bin's points
 // into ascending order. The Views grow when short (a build, not a per-step call).

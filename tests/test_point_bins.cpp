@@ -36,29 +36,48 @@ Positions random_positions(const int count, const double lower[3], const double 
   return positions;
 }
 
-// The points each query's search visits, as (query, point) pairs in visiting order.
+// The points each query's search visits, in visiting order (at most max_visits).
+struct VisitRecorder {
+  BinnedPoints<> binned;
+  Positions queries;
+  Kokkos::View<int**> seen;
+  Kokkos::View<int*> count;
+  int max_visits;
+  KOKKOS_INLINE_FUNCTION void operator()(const int q) const {
+    const double x[3] = {queries(q, 0), queries(q, 1), queries(q, 2)};
+    int k = 0;
+    binned.for_each_point_near(x, [&](const int p) {
+      if (k < max_visits) seen(q, k) = p;
+      ++k;
+    });
+    count(q) = k;
+  }
+};
+
 std::vector<std::vector<int>> visits(const BinnedPoints<>& binned, const Positions& queries, const int max_visits) {
   const int n = static_cast<int>(queries.extent(0));
-  Kokkos::View<int**> seen("seen", n, max_visits);
-  Kokkos::View<int*> count("count", n);
-  Kokkos::parallel_for(
-      "visits", Kokkos::RangePolicy<ExecSpace>(0, n), KOKKOS_LAMBDA(const int q) {
-        const double x[3] = {queries(q, 0), queries(q, 1), queries(q, 2)};
-        int k = 0;
-        binned.for_each_point_near(x, [&](const int p) {
-          if (k < max_visits) seen(q, k) = p;
-          ++k;
-        });
-        count(q) = k;
-      });
-  auto host_seen = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), seen);
-  auto host_count = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), count);
+  const VisitRecorder recorder{binned, queries, Kokkos::View<int**>("seen", n, max_visits),
+                               Kokkos::View<int*>("count", n), max_visits};
+  Kokkos::parallel_for("visits", Kokkos::RangePolicy<ExecSpace>(0, n), recorder);
+  auto host_seen = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), recorder.seen);
+  auto host_count = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), recorder.count);
   std::vector<std::vector<int>> result(n);
   for (int q = 0; q < n; ++q)
     for (int k = 0; k < std::min(host_count(q), max_visits); ++k) result[q].push_back(host_seen(q, k));
   for (int q = 0; q < n; ++q) EXPECT_LE(host_count(q), max_visits);
   return result;
 }
+
+// The points of a test: every third is left out.
+struct AllButEveryThird {
+  KOKKOS_INLINE_FUNCTION bool operator()(const int p) const { return p % 3 != 0; }
+};
+
+// The rows whose count is 0 or 7.
+struct CountIsZeroOrSeven {
+  Kokkos::View<int*> counts;
+  KOKKOS_INLINE_FUNCTION bool operator()(const int i) const { return counts(i) == 0 || counts(i) == 7; }
+};
 
 // For grids with many bins and with fewer bins than 2 reach + 1, periodic and walled: the
 // sorted bins hold each included point once, in its bin, in ascending order; a search
@@ -88,9 +107,7 @@ TEST(PointBins, SearchVisitsEveryNearPointOnceAndBinsAreSorted) {
     binned.grid = c.tiling ? bins_tiling(lower, upper, c.periodic, widths, c.reach)
                            : cubic_bins_covering(lower, upper, c.width, c.reach);
     const BinGrid& grid = binned.grid;
-    // Every third point is left out.
-    const int included = sort_into_bins<ExecSpace>(points, n_points, KOKKOS_LAMBDA(const int p) { return p % 3 != 0; },
-                                                   binned);
+    const int included = sort_into_bins<ExecSpace>(points, n_points, AllButEveryThird(), binned);
     auto offsets = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), binned.bin_offsets);
     auto sorted = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), binned.points);
     EXPECT_EQ(included, n_points - (n_points + 2) / 3) << c.name;
@@ -150,7 +167,7 @@ TEST(PointBins, NearestDistanceWithinTheRadiusMatchesASearchOfEveryPoint) {
     for (int d = 0; d < 3; ++d) points(p, d) = uniform(lower[d], upper[d]);
   BinnedPoints<Kokkos::HostSpace> binned;
   binned.grid = bins_tiling(lower, upper, periodic, widths, 1);
-  sort_into_bins<Kokkos::DefaultHostExecutionSpace>(points, 500, KOKKOS_LAMBDA(int) { return true; }, binned);
+  sort_into_bins<Kokkos::DefaultHostExecutionSpace>(points, 500, EveryPoint(), binned);
   int mismatches = 0, within = 0;
   for (int q = 0; q < 2000; ++q) {
     double x[3];
@@ -238,8 +255,7 @@ TEST(CsrRows, OffsetsAndGatheredIndicesMatchSerialLoops) {
   for (int i = 0; i < rows; ++i)
     if (counts[i] == 0 || counts[i] == 7) expected.push_back(i);
   for (int repeat = 0; repeat < 2; ++repeat) {
-    const auto gathered = gather_marked<ExecSpace>(
-        "gather", rows, KOKKOS_LAMBDA(const int i) { return marked_counts(i) == 0 || marked_counts(i) == 7; }, buffer);
+    const auto gathered = gather_marked<ExecSpace>("gather", rows, CountIsZeroOrSeven{marked_counts}, buffer);
     auto host_gathered = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), gathered);
     ASSERT_EQ(host_gathered.extent(0), expected.size());
     EXPECT_TRUE(std::equal(expected.begin(), expected.end(), host_gathered.data()));

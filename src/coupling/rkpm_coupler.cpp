@@ -60,7 +60,7 @@ BasicRkpmCoupler<ExecSpace>::BasicRkpmCoupler(const FluidMesh& mesh, double supp
   // point's support lies in the 3³ bins around its own.
   const bool periodic[3] = {mesh.periodic[0], mesh.periodic[1], mesh.periodic[2]};
   node_bins_.grid = bins_tiling(mesh.lower.data(), mesh.upper.data(), periodic, largest_support, 1);
-  sort_into_bins<ExecSpace>(node_position_, num_dof_nodes_, KOKKOS_LAMBDA(int) { return true; }, node_bins_);
+  sort_into_bins<ExecSpace>(node_position_, num_dof_nodes_, EveryPoint(), node_bins_);
 }
 
 template <class ExecSpace>

@@ -127,7 +127,7 @@ FluidDistribution::FluidDistribution(const Communicator& communicator, const Flu
   owned_node_bins_.grid = bins_tiling(global_mesh.lower.data(), global_mesh.upper.data(), periodic, width, 1);
   sort_into_bins<Kokkos::DefaultHostExecutionSpace>(owned_node_positions_,
                                                     static_cast<int>(owned_node_positions_.extent(0)),
-                                                    KOKKOS_LAMBDA(int) { return true; }, owned_node_bins_);
+                                                    EveryPoint(), owned_node_bins_);
   std::vector<int> owned_local(partition_.num_global_nodes, -1);
   for (int i = 0; i < partition_.num_owned_nodes; ++i) owned_local[partition_.global_node[i]] = i;
   owned_local_ = device_copy(owned_local, "rouleau::FluidDistribution::owned_local");

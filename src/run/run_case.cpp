@@ -54,36 +54,6 @@ std::string cells_per_rank(const std::vector<int>& cell_ranks, const int ranks) 
   for (int r = 0; r < ranks; ++r) text += (r > 0 ? ", " : "") + std::to_string(count[r]);
   return text;
 }
-}  // namespace
-
-std::vector<std::pair<std::string, std::string>> kokkos_runtime_info() {
-  std::vector<std::pair<std::string, std::string>> info;
-  info.emplace_back("kokkos", ROULEAU_KOKKOS_VERSION);
-  info.emplace_back("kokkos-kernels", ROULEAU_KOKKOSKERNELS_VERSION);
-  std::string backends;
-#ifdef KOKKOS_ENABLE_SERIAL
-  backends += "Serial ";
-#endif
-#ifdef KOKKOS_ENABLE_OPENMP
-  backends += "OpenMP ";
-#endif
-#ifdef KOKKOS_ENABLE_THREADS
-  backends += "Threads ";
-#endif
-#ifdef KOKKOS_ENABLE_CUDA
-  backends += "Cuda ";
-#endif
-#ifdef KOKKOS_ENABLE_HIP
-  backends += "HIP ";
-#endif
-  if (!backends.empty()) backends.pop_back();
-  info.emplace_back("kokkos backends", backends);
-  info.emplace_back("default execution space", Kokkos::DefaultExecutionSpace::name());
-  info.emplace_back("threads", std::to_string(Kokkos::DefaultHostExecutionSpace().concurrency()));
-  return info;
-}
-
-namespace {
 
 using Clock = std::chrono::steady_clock;
 

@@ -12,7 +12,6 @@
 #include <map>
 #include <optional>
 #include <sstream>
-#include <sys/resource.h>
 
 #include "cells/cells_from_case.hpp"
 #include "cli/progress.hpp"
@@ -32,12 +31,9 @@
 #include "io/xdmf_writer.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/mpi_session.hpp"
-#include "rouleau_version.hpp"
-#ifdef KOKKOS_ENABLE_OPENMP
-#include <omp.h>
-#endif
 #include "coupling/immersed_coupling.hpp"
 #include "run/run_diagnostics.hpp"
+#include "run/run_report.hpp"
 #include "config/scene_plan.hpp"
 #include "run/simulation.hpp"
 #include "util/stage_times.hpp"
@@ -46,23 +42,8 @@
 namespace rouleau {
 
 namespace {
-// "2, 1, 0": how many cells each of `ranks` ranks computes.
-std::string cells_per_rank(const std::vector<int>& cell_ranks, const int ranks) {
-  std::vector<int> count(ranks, 0);
-  for (const int r : cell_ranks) ++count[r];
-  std::string text;
-  for (int r = 0; r < ranks; ++r) text += (r > 0 ? ", " : "") + std::to_string(count[r]);
-  return text;
-}
 
 using Clock = std::chrono::steady_clock;
-
-// The process's peak resident memory so far (getrusage: kilobytes on Linux).
-double peak_resident_bytes() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return 1024.0 * static_cast<double>(usage.ru_maxrss);
-}
 
 // A checkpoint restarts only on the meshes it was made on: its mesh hashes must be those
 // of the meshes this case builds (a changed mesher or cell kind would move every node).
@@ -143,47 +124,15 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
   const std::string out = options.output_dir;
   const FoundCheckpoint* restart = options.restart.get();
   // The log's first lines: what ran, how, and where.
-  std::cerr << "rouleau " << ROULEAU_VERSION << " (" << ROULEAU_GIT_HASH << "): run of case " << config.name
-            << " into " << out << "\n";
+  report_run_opening(config, out);
 
   Simulation simulation(config, default_mesh_cache_dir(), &ranks);
   StageTimes& times = simulation.times();
   FluidSolver& solver = simulation.fluid();
   const CaseCells& cells = simulation.cells();
   ImmersedCoupling* coupling = simulation.coupling();
-  std::cerr << "fluid mesh: " << simulation.mesh().num_nodes << " nodes, " << simulation.mesh().num_elements << " "
-            << (simulation.mesh().element_type == FluidElementType::tetrahedron4 ? "tetrahedra" : "hexahedra") << ", "
-            << solver.num_global_unknowns() << " unknowns; "
-            << Kokkos::DefaultExecutionSpace::name() << " on " << Kokkos::DefaultHostExecutionSpace().concurrency()
-            << " host threads" << (ranks.size() > 1 ? " per rank, " + std::to_string(ranks.size()) + " MPI ranks" : "")
-            << "\n";
   const MemoryEstimate memory = estimate_memory(config, Kokkos::DefaultHostExecutionSpace().concurrency());
-  std::cerr << "memory: about " << format_bytes(memory.total_bytes) << " estimated (largest part: "
-            << memory.terms.front().first << ")\n";
-#ifdef KOKKOS_ENABLE_OPENMP
-  if (Kokkos::DefaultHostExecutionSpace().concurrency() > 1 && omp_get_proc_bind() == omp_proc_bind_false)
-    std::cerr << "threads not bound to cores (to bind them, as for timings: OMP_PROC_BIND=spread OMP_PLACES=threads)\n";
-#endif
-  if (const FluidDistribution* distribution = simulation.distribution())
-    std::cerr << "fluid split across " << ranks.size() << " ranks: rank 0 owns "
-              << distribution->partition().elements.size() << " elements and "
-              << distribution->partition().num_owned_nodes << " of its " << distribution->partition().num_local_nodes()
-              << " nodes" << (cells.population ? "; every rank holds every cell" : "") << "\n";
-  if (!simulation.cell_ranks().empty())
-    std::cerr << "cells computed by the rank holding their centroid; per rank: "
-              << cells_per_rank(simulation.cell_ranks(), ranks.size()) << "\n";
-  const int cell_count = static_cast<int>(config.cells.size());
-  if (cell_count > config.output.cell_gaps_max_cells && cell_count > 1)
-    std::cerr << "cell gaps: not in the diagnostics (" << cell_count << " cells, more than output.cell_gaps_max_cells = "
-              << config.output.cell_gaps_max_cells << ")\n";
-  if (coupling && coupling->semi_implicit())
-    std::cerr << "semi-implicit coupling: dt = " << config.time.dt << " s (the explicit stable step estimate, "
-              << derived.stable_dt << " s, does not bind it)\n";
-  else if (coupling)
-    std::cerr << "explicit coupling: dt = " << config.time.dt << " s, stable step estimate " << derived.stable_dt
-              << " s (" << derived.stable_dt_reason << ")"
-              << (config.time.dt > derived.stable_dt ? "; ABOVE IT (coupling.allow_unstable_step = true)" : "")
-              << "\n";
+  report_run_setup(simulation, derived, ranks, memory);
 
   std::vector<MeshDescription> output_meshes{describe_fluid_mesh(simulation.mesh())};
   const MeshDescription& fluid_mesh = output_meshes.front();
@@ -399,20 +348,10 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
   }
   flush_table();
   ranks.barrier();  // the files are complete before any rank returns (case drivers read them)
-  if (!simulation.cell_ranks().empty())
-    std::cerr << "cells changed rank " << simulation.cell_rank_changes() << " times in this run; per rank now: "
-              << cells_per_rank(simulation.cell_ranks(), ranks.size()) << "\n";
-  times.print(std::cerr, wall_seconds());
-  std::cerr << "peak memory: " << format_bytes(peak_resident_bytes()) << " (estimated " << format_bytes(memory.total_bytes)
-            << ")\n";
-  std::cerr << "wrote " << out << "/" << (fields ? "fields*.xdmf, " : "") << "diagnostics.csv, case.resolved.toml, "
-            << run_log_name << (transient ? ", checkpoints/" : "") << "\n";
-  if (fields) {
-    std::cerr << "ParaView: open";
-    for (const MeshDescription& mesh : output_meshes) std::cerr << " " << fields->mesh_xdmf_path(mesh.name);
-    std::cerr << " (reader Xdmf3ReaderT; docs/paraview.md)\n";
-  }
-  std::cerr << "figures: scripts/plot_diagnostics.py " << out << "\n";
+  std::vector<std::string> field_xdmf_paths;
+  if (fields)
+    for (const MeshDescription& mesh : output_meshes) field_xdmf_paths.push_back(fields->mesh_xdmf_path(mesh.name));
+  report_run_end(simulation, ranks, wall_seconds(), memory, out, field_xdmf_paths);
   return static_cast<int>(ExitCode::done);
 }
 

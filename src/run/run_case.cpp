@@ -28,10 +28,10 @@
 #include "io/provenance.hpp"
 #include "io/run_folder.hpp"
 #include "io/run_log.hpp"
-#include "io/xdmf_writer.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/mpi_session.hpp"
 #include "coupling/immersed_coupling.hpp"
+#include "run/field_output.hpp"
 #include "run/run_diagnostics.hpp"
 #include "run/run_report.hpp"
 #include "config/scene_plan.hpp"
@@ -79,22 +79,6 @@ std::vector<std::map<std::string, double>> read_diagnostics_rows(const std::stri
   }
 }
 
-// The fluid mesh as the XDMF writer wants it (host arrays).
-MeshDescription describe_fluid_mesh(const FluidMesh& mesh) {
-  MeshDescription d;
-  d.name = "fluid";
-  d.cell_type = mesh.element_type == FluidElementType::hexahedron8 ? CellType::hexahedron8 : CellType::tetrahedron4;
-  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
-  auto c = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.element_nodes);
-  d.coordinates.resize(3 * mesh.num_nodes);
-  for (int n = 0; n < mesh.num_nodes; ++n)
-    for (int k = 0; k < 3; ++k) d.coordinates[3 * n + k] = x(n, k);
-  d.connectivity.resize(static_cast<size_t>(mesh.num_elements) * mesh.nodes_per_element);
-  for (int e = 0; e < mesh.num_elements; ++e)
-    for (int a = 0; a < mesh.nodes_per_element; ++a) d.connectivity[e * mesh.nodes_per_element + a] = c(e, a);
-  return d;
-}
-
 // The log of a run on several ranks is the first rank's: the others' std::cerr says
 // nothing while this lives (an error they throw is reported after it, by the caller).
 class QuietOtherRanks {
@@ -134,8 +118,8 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
   const MemoryEstimate memory = estimate_memory(config, Kokkos::DefaultHostExecutionSpace().concurrency());
   report_run_setup(simulation, derived, ranks, memory);
 
-  std::vector<MeshDescription> output_meshes{describe_fluid_mesh(simulation.mesh())};
-  const MeshDescription& fluid_mesh = output_meshes.front();
+  std::vector<MeshDescription> meshes = output_meshes(simulation);
+  const MeshDescription& fluid_mesh = meshes.front();
   std::vector<std::pair<std::string, std::string>> provenance_entries{
       {"case", config.name},
       {"run_id", run_id},
@@ -145,7 +129,6 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
       {"fluid_mesh_hash", hash_mesh(fluid_mesh.coordinates.data(), fluid_mesh.coordinates.size(),
                                     fluid_mesh.connectivity.data(), fluid_mesh.connectivity.size())}};
   for (const auto& [kind, cell_mesh] : cells.meshes) provenance_entries.emplace_back("cell_mesh_hash_" + kind, cell_mesh.hash);
-  if (cells.population) output_meshes.push_back(cells.population->mesh_description());
   const Provenance provenance = build_provenance(provenance_entries);
   // The volume drift is measured from the cells as placed: before a restart moves them.
   const CellDiagnostics cell_diagnostics(cells, config, &ranks);
@@ -165,11 +148,7 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
   if (writes_files && restart && fs::exists(out + "/diagnostics.csv"))
     for (auto& row : read_diagnostics_rows(out + "/diagnostics.csv"))
       if (row.count("step") && row["step"] <= restart->data.step) earlier_rows.push_back(std::move(row));
-  std::unique_ptr<XdmfTimeSeries> fields;
-  if (config.output.write_fields && writes_files) {
-    fields = std::make_unique<XdmfTimeSeries>(out, "fields", output_meshes, provenance);
-    if (restart) fields->adopt_written_steps(static_cast<int>(restart->data.step));
-  }
+  FieldOutput fields(simulation, ranks, std::move(meshes), provenance, out, restart, writes_files);
 
   CouplingDiagnostics coupling_diagnostics;
   const FluidDiagnostics fluid_diagnostics(config, simulation.mesh());
@@ -207,43 +186,6 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
     if (table) table->add_row(row);
   };
 
-  std::vector<double> velocity, pressure;
-  CellPopulation::HostFields cell_fields;
-  // The interaction forces per cell node (a node-major host copy for output).
-  Kokkos::View<double* [3], Kokkos::LayoutRight, Kokkos::HostSpace> host_interaction_forces;
-  if (cells.interaction)
-    host_interaction_forces = decltype(host_interaction_forces)("rouleau::run::interaction_forces_host",
-                                                                cells.population->num_nodes());
-  // Every rank takes part (the fluid's fields are gathered); the first writes them.
-  auto write_fields = [&] {
-    if (!config.output.write_fields) return;
-    times.time("output", [&] {
-      solver.velocity_and_pressure(velocity, pressure);
-      std::vector<std::vector<FieldView>> nodal{
-          {FieldView{"velocity_um_s", 3, velocity.data()}, FieldView{"pressure_Pa", 1, pressure.data()}}};
-      std::vector<const double*> moved{nullptr};
-      if (cells.population) {
-        // The forces the step computed at these positions (internal_force is CellForces' elastic).
-        const CellForceState& forces = simulation.cell_forces(false);
-        cells.population->copy_fields_to_host(cell_fields);
-        // Each rank's share of the cells' forces: the fields are their sums.
-        const bool shared = cells.population->work_is_shared();
-        if (shared) ranks.sum(cell_fields.internal_force.data(), static_cast<int>(cell_fields.internal_force.size()));
-        nodal.push_back({FieldView{"displacement_um", 3, cell_fields.displacement.data()},
-                         FieldView{"velocity_um_s", 3, cell_fields.velocity.data()},
-                         FieldView{"internal_force_pN", 3, cell_fields.internal_force.data()},
-                         FieldView{"cell_id", 1, cell_fields.cell_id.data()}});
-        if (cells.interaction) {
-          Kokkos::deep_copy(host_interaction_forces, forces.interaction);
-          if (shared) ranks.sum(host_interaction_forces.data(), static_cast<int>(host_interaction_forces.size()));
-          nodal.back().push_back(FieldView{"interaction_force_pN", 3, host_interaction_forces.data()});
-        }
-        moved.push_back(cell_fields.positions.data());
-      }
-      if (fields) fields->write_step(simulation.steps(), simulation.time(), nodal, {}, moved);
-    });
-  };
-
   // Checkpoints (transient runs): at the start, every N steps or M minutes, on request
   // (SIGUSR1), on a stop signal and at the end.
   const bool transient = config.time.mode == TimeMode::transient;
@@ -278,17 +220,17 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
   StopSignals signals;
   try {
     if (!transient) {
-      write_fields();
+      fields.write(simulation);
       const FluidSolveReport& report = simulation.solve_steady().fluid;
       add_diagnostics_row();
-      write_fields();
+      fields.write(simulation);
       std::cerr << "steady solve: " << report.newton_iterations << " Newton, " << report.gmres_iterations
                 << " GMRES iterations; residual momentum " << report.momentum_residual << ", continuity "
                 << report.continuity_residual << "\n";
     } else {
       if (!restart) {
         add_diagnostics_row();  // the state as placed, at t = 0
-        write_fields();
+        fields.write(simulation);
         write_checkpoint();
       }
       // The run ends at the time time.end, whatever step a restart continues with: the
@@ -308,7 +250,7 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
         const bool diagnostics_row = step % config.output.diagnostics_every_steps == 0 || step == steps;
         const FluidSolveReport& report = simulation.advance(diagnostics_row).fluid;
         if (diagnostics_row) add_diagnostics_row();
-        if (step % config.output.fields_every_steps == 0 || step == steps) write_fields();
+        if (step % config.output.fields_every_steps == 0 || step == steps) fields.write(simulation);
         if (options.progress)
           progress.update(step, simulation.time(), report.newton_iterations, report.gmres_iterations);
         if (logged_progress)
@@ -348,10 +290,7 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
   }
   flush_table();
   ranks.barrier();  // the files are complete before any rank returns (case drivers read them)
-  std::vector<std::string> field_xdmf_paths;
-  if (fields)
-    for (const MeshDescription& mesh : output_meshes) field_xdmf_paths.push_back(fields->mesh_xdmf_path(mesh.name));
-  report_run_end(simulation, ranks, wall_seconds(), memory, out, field_xdmf_paths);
+  report_run_end(simulation, ranks, wall_seconds(), memory, out, fields.mesh_xdmf_paths());
   return static_cast<int>(ExitCode::done);
 }
 

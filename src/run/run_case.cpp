@@ -23,14 +23,13 @@
 #include "fluid/fluid_solver.hpp"
 #include "geometry/cell_mesh.hpp"
 #include "io/atomic_file.hpp"
-#include "io/diagnostics_reader.hpp"
-#include "io/diagnostics_table.hpp"
 #include "io/provenance.hpp"
 #include "io/run_folder.hpp"
 #include "io/run_log.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/mpi_session.hpp"
 #include "coupling/immersed_coupling.hpp"
+#include "run/diagnostics_output.hpp"
 #include "run/field_output.hpp"
 #include "run/run_diagnostics.hpp"
 #include "run/run_report.hpp"
@@ -68,17 +67,6 @@ void check_checkpoint_meshes(const FoundCheckpoint& checkpoint,
       throw InputError(checkpoint.path, key, "the checkpoint has this mesh; the case builds none like it");
 }
 
-// The rows of an earlier segment's diagnostics.csv; none when it cannot be read (it holds
-// only its header, or was damaged by hand: said on stderr).
-std::vector<std::map<std::string, double>> read_diagnostics_rows(const std::string& path) {
-  try {
-    return read_diagnostics(path);
-  } catch (const std::runtime_error& error) {
-    std::cerr << "rouleau: the earlier diagnostics are not carried over: " << error.what() << "\n";
-    return {};
-  }
-}
-
 // The log of a run on several ranks is the first rank's: the others' std::cerr says
 // nothing while this lives (an error they throw is reported after it, by the caller).
 class QuietOtherRanks {
@@ -103,7 +91,6 @@ class QuietOtherRanks {
 // writes the outputs into options.output_dir (`log` is the first rank's, null on the others).
 int run_in_folder(const CaseConfig& config, const RunOptions& options, const DerivedQuantities& derived,
                   const Communicator& ranks, const std::string& run_id, RunLog* log, Clock::time_point run_start) {
-  namespace fs = std::filesystem;
   const bool writes_files = ranks.rank() == 0;
   const std::string out = options.output_dir;
   const FoundCheckpoint* restart = options.restart.get();
@@ -112,9 +99,7 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
 
   Simulation simulation(config, default_mesh_cache_dir(), &ranks);
   StageTimes& times = simulation.times();
-  FluidSolver& solver = simulation.fluid();
   const CaseCells& cells = simulation.cells();
-  ImmersedCoupling* coupling = simulation.coupling();
   const MemoryEstimate memory = estimate_memory(config, Kokkos::DefaultHostExecutionSpace().concurrency());
   report_run_setup(simulation, derived, ranks, memory);
 
@@ -131,7 +116,7 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
   for (const auto& [kind, cell_mesh] : cells.meshes) provenance_entries.emplace_back("cell_mesh_hash_" + kind, cell_mesh.hash);
   const Provenance provenance = build_provenance(provenance_entries);
   // The volume drift is measured from the cells as placed: before a restart moves them.
-  const CellDiagnostics cell_diagnostics(cells, config, &ranks);
+  CellDiagnostics cell_diagnostics(cells, config, &ranks);
   if (restart) {
     check_checkpoint_meshes(*restart, provenance_entries);
     simulation.restore_state(restart->data);
@@ -144,47 +129,13 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
   }
   // What a run that ran this far wrote after the checkpoint is dropped: the diagnostics
   // rows and the field steps of later steps.
-  std::vector<std::map<std::string, double>> earlier_rows;
-  if (writes_files && restart && fs::exists(out + "/diagnostics.csv"))
-    for (auto& row : read_diagnostics_rows(out + "/diagnostics.csv"))
-      if (row.count("step") && row["step"] <= restart->data.step) earlier_rows.push_back(std::move(row));
+  const auto earlier_rows = earlier_diagnostics_rows(out, restart, writes_files);
   FieldOutput fields(simulation, ranks, std::move(meshes), provenance, out, restart, writes_files);
 
-  CouplingDiagnostics coupling_diagnostics;
-  const FluidDiagnostics fluid_diagnostics(config, simulation.mesh());
-  std::vector<std::string> columns = fluid_diagnostics.columns();
-  if (cells.population) {
-    const auto cell_columns = cell_diagnostics.columns();
-    columns.insert(columns.end(), cell_columns.begin(), cell_columns.end());
-  }
-  if (coupling) {
-    const auto coupling_columns = coupling_diagnostics.columns();
-    columns.insert(columns.end(), coupling_columns.begin(), coupling_columns.end());
-  }
-  std::unique_ptr<DiagnosticsTable> table;  // the first rank's
-  if (writes_files) table = std::make_unique<DiagnosticsTable>(out + "/diagnostics.csv", columns, earlier_rows);
-  auto flush_table = [&] {
-    if (table) table->flush();
-  };
+  DiagnosticsOutput diagnostics(simulation, std::move(cell_diagnostics), out, earlier_rows, writes_files);
   // Wall time of the whole run, over the segments a restart joins.
   const double earlier_wall_seconds = restart ? restart->data.wall_seconds : 0.0;
   auto wall_seconds = [&] { return earlier_wall_seconds + std::chrono::duration<double>(Clock::now() - run_start).count(); };
-  auto add_diagnostics_row = [&] {
-    std::vector<double> row =
-        fluid_diagnostics.row(solver, simulation.steps(), simulation.last_report().fluid, wall_seconds(),
-                              coupling ? coupling->state().felt_terms : ImmersedTerms{});
-    if (cells.population) {
-      const CellForceState& forces = simulation.cell_forces(true);
-      const std::vector<double> cell_row =
-          times.time("cell diagnostics", [&] { return cell_diagnostics.row(cells, forces); });
-      row.insert(row.end(), cell_row.begin(), cell_row.end());
-    }
-    if (coupling) {
-      const std::vector<double> coupling_row = coupling_diagnostics.row(simulation.last_report(), times);
-      row.insert(row.end(), coupling_row.begin(), coupling_row.end());
-    }
-    if (table) table->add_row(row);
-  };
 
   // Checkpoints (transient runs): at the start, every N steps or M minutes, on request
   // (SIGUSR1), on a stop signal and at the end.
@@ -196,7 +147,7 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
   // The diagnostics on disk go first: a run killed after the checkpoint then has every
   // row up to it (the restart keeps those and drops later ones).
   auto write_checkpoint = [&] {
-    flush_table();
+    diagnostics.flush();
     times.time("checkpoint", [&] {
       CheckpointData data;
       data.resolved_case = resolved_case_toml(config, derived);
@@ -222,14 +173,14 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
     if (!transient) {
       fields.write(simulation);
       const FluidSolveReport& report = simulation.solve_steady().fluid;
-      add_diagnostics_row();
+      diagnostics.add_row(simulation, wall_seconds());
       fields.write(simulation);
       std::cerr << "steady solve: " << report.newton_iterations << " Newton, " << report.gmres_iterations
                 << " GMRES iterations; residual momentum " << report.momentum_residual << ", continuity "
                 << report.continuity_residual << "\n";
     } else {
       if (!restart) {
-        add_diagnostics_row();  // the state as placed, at t = 0
+        diagnostics.add_row(simulation, wall_seconds());  // the state as placed, at t = 0
         fields.write(simulation);
         write_checkpoint();
       }
@@ -249,7 +200,7 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
         // A diagnostics row reads the energies the step computes with its forces.
         const bool diagnostics_row = step % config.output.diagnostics_every_steps == 0 || step == steps;
         const FluidSolveReport& report = simulation.advance(diagnostics_row).fluid;
-        if (diagnostics_row) add_diagnostics_row();
+        if (diagnostics_row) diagnostics.add_row(simulation, wall_seconds());
         if (step % config.output.fields_every_steps == 0 || step == steps) fields.write(simulation);
         if (options.progress)
           progress.update(step, simulation.time(), report.newton_iterations, report.gmres_iterations);
@@ -272,7 +223,7 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
         if (signal_number != 0 && step < steps) {
           if (options.progress) progress.finish();
           if (logged_progress) logged_progress->finish();
-          flush_table();
+          diagnostics.flush();
           std::cerr << "stopped by signal " << signal_number << " after step " << step << " (t = " << simulation.time()
                     << " s); checkpoint " << checkpoints.last_path() << "\ncontinue with: " << options.continue_command << " "
                     << out << "\n";
@@ -284,11 +235,11 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
       if (last_checkpoint_step != simulation.steps()) write_checkpoint();
     }
   } catch (const DivergenceError& error) {
-    flush_table();
+    diagnostics.flush();
     throw DivergenceError(std::string(error.what()) + "; last good checkpoint: " + last_good() +
                           "; fields and diagnostics up to the last good step are in " + out);
   }
-  flush_table();
+  diagnostics.flush();
   ranks.barrier();  // the files are complete before any rank returns (case drivers read them)
   report_run_end(simulation, ranks, wall_seconds(), memory, out, fields.mesh_xdmf_paths());
   return static_cast<int>(ExitCode::done);

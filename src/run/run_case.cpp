@@ -31,6 +31,8 @@
 #include "coupling/immersed_coupling.hpp"
 #include "run/diagnostics_output.hpp"
 #include "run/field_output.hpp"
+#include "run/run_checkpoints.hpp"
+#include "run/run_clock.hpp"
 #include "run/run_diagnostics.hpp"
 #include "run/run_report.hpp"
 #include "config/scene_plan.hpp"
@@ -43,29 +45,6 @@ namespace rouleau {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// A checkpoint restarts only on the meshes it was made on: its mesh hashes must be those
-// of the meshes this case builds (a changed mesher or cell kind would move every node).
-void check_checkpoint_meshes(const FoundCheckpoint& checkpoint,
-                             const std::vector<std::pair<std::string, std::string>>& provenance_entries) {
-  std::map<std::string, std::string> built;
-  for (const auto& [key, value] : provenance_entries)
-    if (key.find("mesh_hash") != std::string::npos) built[key] = value;
-  std::map<std::string, std::string> stored;
-  for (const auto& [key, value] : checkpoint.data.labels)
-    if (key.find("mesh_hash") != std::string::npos) stored[key] = value;
-  for (const auto& [key, value] : built) {
-    const auto found = stored.find(key);
-    if (found == stored.end() || found->second != value)
-      throw InputError(checkpoint.path, key,
-                       "the checkpoint was made on " +
-                           (found == stored.end() ? std::string("no such mesh") : "a mesh of hash " + found->second) +
-                           "; this case builds one of hash " + value + " (another case, or another mesher version)");
-  }
-  for (const auto& [key, value] : stored)
-    if (!built.count(key))
-      throw InputError(checkpoint.path, key, "the checkpoint has this mesh; the case builds none like it");
-}
 
 // The log of a run on several ranks is the first rank's: the others' std::cerr says
 // nothing while this lives (an error they throw is reported after it, by the caller).
@@ -98,7 +77,6 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
   report_run_opening(config, out);
 
   Simulation simulation(config, default_mesh_cache_dir(), &ranks);
-  StageTimes& times = simulation.times();
   const CaseCells& cells = simulation.cells();
   const MemoryEstimate memory = estimate_memory(config, Kokkos::DefaultHostExecutionSpace().concurrency());
   report_run_setup(simulation, derived, ranks, memory);
@@ -115,57 +93,27 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
                                     fluid_mesh.connectivity.data(), fluid_mesh.connectivity.size())}};
   for (const auto& [kind, cell_mesh] : cells.meshes) provenance_entries.emplace_back("cell_mesh_hash_" + kind, cell_mesh.hash);
   const Provenance provenance = build_provenance(provenance_entries);
+  const std::map<std::string, std::string> mesh_hashes = mesh_hash_labels(provenance_entries);
   // The volume drift is measured from the cells as placed: before a restart moves them.
   CellDiagnostics cell_diagnostics(cells, config, &ranks);
-  if (restart) {
-    check_checkpoint_meshes(*restart, provenance_entries);
-    simulation.restore_state(restart->data);
-    std::cerr << "restarted from " << restart->path << ": step " << restart->data.step << ", t = " << restart->data.time
-              << " s\n";
-    const int leftovers =
-        writes_files ? remove_leftover_temporary_files(out) + remove_leftover_temporary_files(out + "/checkpoints") : 0;
-    if (leftovers > 0)
-      std::cerr << "removed " << leftovers << " unfinished temporary file(s) of the stopped run\n";
-  }
+  if (restart) restart_simulation(simulation, *restart, mesh_hashes, out, writes_files);
   // What a run that ran this far wrote after the checkpoint is dropped: the diagnostics
   // rows and the field steps of later steps.
   const auto earlier_rows = earlier_diagnostics_rows(out, restart, writes_files);
   FieldOutput fields(simulation, ranks, std::move(meshes), provenance, out, restart, writes_files);
 
   DiagnosticsOutput diagnostics(simulation, std::move(cell_diagnostics), out, earlier_rows, writes_files);
-  // Wall time of the whole run, over the segments a restart joins.
-  const double earlier_wall_seconds = restart ? restart->data.wall_seconds : 0.0;
-  auto wall_seconds = [&] { return earlier_wall_seconds + std::chrono::duration<double>(Clock::now() - run_start).count(); };
+  const RunClock clock(run_start, restart ? restart->data.wall_seconds : 0.0);
 
   // Checkpoints (transient runs): at the start, every N steps or M minutes, on request
   // (SIGUSR1), on a stop signal and at the end.
   const bool transient = config.time.mode == TimeMode::transient;
-  CheckpointStore checkpoints(out, config.checkpoint.kept);
-  if (restart) checkpoints.set_last_path(restart->path);
-  auto last_checkpoint = Clock::now();
-  int last_checkpoint_step = restart ? static_cast<int>(restart->data.step) : -1;
+  RunCheckpoints checkpoints(config, derived, out, restart, provenance, mesh_hashes, run_id, writes_files);
   // The diagnostics on disk go first: a run killed after the checkpoint then has every
   // row up to it (the restart keeps those and drops later ones).
   auto write_checkpoint = [&] {
     diagnostics.flush();
-    times.time("checkpoint", [&] {
-      CheckpointData data;
-      data.resolved_case = resolved_case_toml(config, derived);
-      simulation.save_state(data);
-      data.wall_seconds = wall_seconds();
-      for (const auto& [key, value] : provenance_entries)
-        if (key.find("mesh_hash") != std::string::npos) data.labels[key] = value;
-      data.labels["run_id"] = run_id;
-      if (writes_files)
-        checkpoints.write(data, provenance);
-      else  // the first rank's file, for the messages
-        checkpoints.set_last_path(checkpoints.path_of(simulation.steps()));
-    });
-    last_checkpoint = Clock::now();
-    last_checkpoint_step = simulation.steps();
-  };
-  auto last_good = [&] {
-    return checkpoints.last_path().empty() ? std::string("none written") : checkpoints.last_path();
+    checkpoints.write(simulation, clock);
   };
 
   StopSignals signals;
@@ -173,14 +121,14 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
     if (!transient) {
       fields.write(simulation);
       const FluidSolveReport& report = simulation.solve_steady().fluid;
-      diagnostics.add_row(simulation, wall_seconds());
+      diagnostics.add_row(simulation, clock.seconds());
       fields.write(simulation);
       std::cerr << "steady solve: " << report.newton_iterations << " Newton, " << report.gmres_iterations
                 << " GMRES iterations; residual momentum " << report.momentum_residual << ", continuity "
                 << report.continuity_residual << "\n";
     } else {
       if (!restart) {
-        diagnostics.add_row(simulation, wall_seconds());  // the state as placed, at t = 0
+        diagnostics.add_row(simulation, clock.seconds());  // the state as placed, at t = 0
         fields.write(simulation);
         write_checkpoint();
       }
@@ -200,14 +148,14 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
         // A diagnostics row reads the energies the step computes with its forces.
         const bool diagnostics_row = step % config.output.diagnostics_every_steps == 0 || step == steps;
         const FluidSolveReport& report = simulation.advance(diagnostics_row).fluid;
-        if (diagnostics_row) diagnostics.add_row(simulation, wall_seconds());
+        if (diagnostics_row) diagnostics.add_row(simulation, clock.seconds());
         if (step % config.output.fields_every_steps == 0 || step == steps) fields.write(simulation);
         if (options.progress)
           progress.update(step, simulation.time(), report.newton_iterations, report.gmres_iterations);
         if (logged_progress)
           logged_progress->update(step, simulation.time(), report.newton_iterations, report.gmres_iterations);
         const CheckpointConfig& every = config.checkpoint;
-        const double minutes = std::chrono::duration<double>(Clock::now() - last_checkpoint).count() / 60.0;
+        const double minutes = checkpoints.minutes_since_last();
         // Signals and clocks are each rank's: on several ranks the decisions are taken
         // together (any rank's request counts), since every rank takes part in a checkpoint.
         int signal_number = StopSignals::stop_requested();
@@ -232,16 +180,16 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
       }
       if (options.progress) progress.finish();
       if (logged_progress) logged_progress->finish();
-      if (last_checkpoint_step != simulation.steps()) write_checkpoint();
+      if (checkpoints.last_step() != simulation.steps()) write_checkpoint();
     }
   } catch (const DivergenceError& error) {
     diagnostics.flush();
-    throw DivergenceError(std::string(error.what()) + "; last good checkpoint: " + last_good() +
+    throw DivergenceError(std::string(error.what()) + "; last good checkpoint: " + checkpoints.last_good() +
                           "; fields and diagnostics up to the last good step are in " + out);
   }
   diagnostics.flush();
   ranks.barrier();  // the files are complete before any rank returns (case drivers read them)
-  report_run_end(simulation, ranks, wall_seconds(), memory, out, fields.mesh_xdmf_paths());
+  report_run_end(simulation, ranks, clock.seconds(), memory, out, fields.mesh_xdmf_paths());
   return static_cast<int>(ExitCode::done);
 }
 

@@ -169,54 +169,6 @@ FluidSolver::FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid,
   set_uniform_body_force(fluid.body_force);
 }
 
-void FluidSolver::set_body_force(const std::vector<double>& force_density) {
-  const int nodes = mesh_.num_dof_nodes;
-  Vector global("rouleau::FluidSolver::body_force_global", num_global_unknowns_);
-  auto host = Kokkos::create_mirror_view(global);
-  const double scale = 1.0 / scales_.body_force();
-  for (int i = 0; i < nodes; ++i)
-    for (int d = 0; d < 3; ++d) host(4 * i + d) = force_density[3 * i + d] * scale;
-  Kokkos::deep_copy(global, host);
-  exchange_->localize(global, body_force_);
-}
-
-void FluidSolver::set_uniform_body_force(const std::array<double, 3>& force_density) {
-  std::vector<double> field(3 * mesh_.num_dof_nodes);
-  for (size_t i = 0; i < field.size(); ++i) field[i] = force_density[i % 3];
-  set_body_force(field);
-}
-
-void FluidSolver::set_velocity(
-    const std::function<std::array<double, 3>(const std::array<double, 3>&)>& velocity) {
-  const FluidMesh& mesh = operator_.mesh();
-  auto coordinates = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
-  auto state = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), state_);
-  for (int n = 0; n < mesh.num_nodes; ++n) {
-    const auto v = velocity({coordinates(n, 0), coordinates(n, 1), coordinates(n, 2)});
-    for (int c = 0; c < 3; ++c) state(4 * mesh.dof_node_of_node[n] + c) = v[c] / scales_.velocity;
-  }
-  Kokkos::deep_copy(state_, state);
-  operator_.impose_dirichlet(state_);
-}
-
-void FluidSolver::prescribe_boundary_velocity(
-    const std::function<std::array<double, 3>(const std::array<double, 3>&)>& velocity) {
-  const FluidMesh& mesh = operator_.mesh();
-  auto coordinates = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
-  std::vector<int> node_of_dof_node(mesh.num_dof_nodes, -1);
-  for (int n = 0; n < mesh.num_nodes; ++n)
-    if (node_of_dof_node[mesh.dof_node_of_node[n]] < 0) node_of_dof_node[mesh.dof_node_of_node[n]] = n;
-  for (size_t k = 0; k < boundary_.dirichlet_dofs.size(); ++k) {
-    const int dof = boundary_.dirichlet_dofs[k], component = dof % 4;
-    if (component == 3) continue;
-    const int node = node_of_dof_node[dof / 4];
-    const auto v = velocity({coordinates(node, 0), coordinates(node, 1), coordinates(node, 2)});
-    boundary_.dirichlet_values[k] = v[component] / scales_.velocity;
-  }
-  operator_.set_dirichlet(boundary_.dirichlet_dofs, boundary_.dirichlet_values);
-  operator_.impose_dirichlet(state_);
-}
-
 void FluidSolver::rebuild_preconditioner() {
   ProfilingRegion region("rouleau::FluidSolver::preconditioner");
   preconditioner_->factor(operator_, state_);
@@ -365,26 +317,6 @@ FluidSolveReport FluidSolver::advance(double dt, TimeScheme scheme, const Immers
     ++steps_;
   }
   return report;
-}
-
-void FluidSolver::save_state(CheckpointData& data) const {
-  // In the global numbering: a checkpoint written on P ranks restarts on Q.
-  data.reals["fluid/state"] = global_values(state_);
-  data.reals["fluid/previous_state"] = global_values(previous_state_);
-  data.reals["fluid/time"] = {time_};
-  data.integers["fluid/steps"] = {steps_};
-}
-
-void FluidSolver::restore_state(const CheckpointData& data) {
-  const long long n = num_global_unknowns_;
-  Vector global("rouleau::FluidSolver::restored", n);
-  const std::pair<const char*, Vector> entries[] = {{"fluid/state", state_}, {"fluid/previous_state", previous_state_}};
-  for (const auto& [name, local] : entries) {
-    from_flat_vector(data.real(name, n), global, name);
-    exchange_->localize(global, local);
-  }
-  time_ = data.real("fluid/time", 1).front();
-  steps_ = static_cast<int>(data.integer("fluid/steps", 1).front());
 }
 
 }  // namespace rouleau

@@ -29,8 +29,7 @@ std::vector<std::array<double, 3>> FluidSolver::boundary_forces(const std::vecto
   const FluidMesh& mesh = mesh_;
   // One residual without constraint rows and one host copy for all the sides asked.
   load_immersed_forces(immersed);
-  operator_.residual(state_, state_, residual_, false);
-  add_immersed_stiffness(immersed, state_, residual_, false, StiffnessArgument::state);
+  residual_at_state(immersed, false);
   auto r = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), residual_);
   std::vector<std::array<double, 3>> forces;
   for (const std::string& side : sides) {

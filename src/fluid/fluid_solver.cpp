@@ -1,21 +1,19 @@
+// The fluid solver's construction and its solves: Newton–Raphson on the scaled residual,
+// each step's J δ = −R solved by right-preconditioned GMRES with J applied element by
+// element, and the time stepping around it (fluid/fluid_solver.hpp).
 #include "fluid/fluid_solver.hpp"
 
 #include <spdlog/spdlog.h>
 
 #include <KokkosBlas1_axpby.hpp>
-#include <KokkosBlas1_nrm2.hpp>
 #include <KokkosBlas1_update.hpp>
-#include <cmath>
-#include <sstream>
-#include <stdexcept>
-
-#include "fluid/fluid_element_types.hpp"
-#include "util/profiling_region.hpp"
-#include "util/view_transfer.hpp"
-
 #include <algorithm>
+#include <cmath>
 #include <functional>
+#include <sstream>
 #include <utility>
+
+#include "util/profiling_region.hpp"
 
 namespace rouleau {
 
@@ -128,6 +126,21 @@ GmresSettings gmres_settings(const SolverConfig& s) {
   g.max_iterations = s.gmres_max_iterations;
   return g;
 }
+
+// J δ = −R, solved to the Eisenstat–Walker forcing term η_k (choice 2, γ = 0.9, α = 2):
+// η_k = γ (‖R_k‖/‖R_{k−1}‖)², safeguarded by γ η_{k−1}² when that exceeds 0.1, capped at
+// 0.1, and no tighter than needed to reach the Newton target. `iteration`: k;
+// `previous_forcing`: η_{k−1} in, η_k out.
+double newton_forcing(const int iteration, const double residual_norm, const double previous_norm, const double target,
+                      const double gmres_rtol, double& previous_forcing) {
+  double forcing = iteration == 0 ? 0.1 : 0.9 * (residual_norm / previous_norm) * (residual_norm / previous_norm);
+  const double safeguard = 0.9 * previous_forcing * previous_forcing;
+  if (iteration > 0 && safeguard > 0.1) forcing = std::fmax(forcing, safeguard);
+  forcing = std::fmin(forcing, 0.1);
+  forcing = std::fmax(forcing, std::fmax(gmres_rtol, 0.5 * target / residual_norm));
+  previous_forcing = forcing;
+  return forcing;
+}
 }  // namespace
 
 FluidSolver::FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid,
@@ -191,8 +204,7 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history, const ImmersedTe
     operator_.residual(correction_, correction_, residual_);
     rhs_norm = exchange_->norm(residual_);
   }
-  operator_.residual(state_, state_, residual_);
-  add_immersed_stiffness(immersed, state_, residual_, true, StiffnessArgument::state);
+  residual_at_state(immersed, true);
   double residual_norm = exchange_->norm(residual_);
   report.initial_residual = residual_norm;
   const double target = linear ? std::fmax(settings_.newton_atol, settings_.gmres_rtol * rhs_norm)
@@ -206,54 +218,22 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history, const ImmersedTe
       rebuild_preconditioner();
       preconditioner_current_ = true;
     }
-    const Preconditioner& M = *preconditioner_;
-    // J δ = −R, solved to the Eisenstat–Walker forcing term η_k (choice 2, γ = 0.9, α = 2):
-    // η_k = γ (‖R_k‖/‖R_{k−1}‖)², safeguarded by γ η_{k−1}² when that exceeds 0.1, capped at
-    // 0.1, and no tighter than needed to reach the Newton target. An affine (Stokes)
-    // residual is solved once, down to its target (gmres_rtol ‖b‖).
-    double forcing = std::fmin(0.5, target / residual_norm);
-    if (!linear) {
-      forcing = report.newton_iterations == 0 ? 0.1 : 0.9 * (residual_norm / previous_norm) * (residual_norm / previous_norm);
-      const double safeguard = 0.9 * previous_forcing * previous_forcing;
-      if (report.newton_iterations > 0 && safeguard > 0.1) forcing = std::fmax(forcing, safeguard);
-      forcing = std::fmin(forcing, 0.1);
-      forcing = std::fmax(forcing, std::fmax(settings_.gmres_rtol, 0.5 * target / residual_norm));
-      previous_forcing = forcing;
-    }
+    // An affine (Stokes) residual is solved once, down to its target (gmres_rtol ‖b‖); a
+    // nonlinear one to the Eisenstat–Walker forcing term.
+    const double forcing = linear ? std::fmin(0.5, target / residual_norm)
+                                  : newton_forcing(report.newton_iterations, residual_norm, previous_norm, target,
+                                                   settings_.gmres_rtol, previous_forcing);
     previous_norm = residual_norm;
-    KokkosBlas::axpby(-1.0, residual_, 0.0, residual_);
-    Kokkos::deep_copy(correction_, 0.0);
-    FluidJacobian::AddStiffness add_stiffness;
-    if (immersed.stiffness)
-      add_stiffness = [this, &immersed](const ConstVector& x, const Vector& y) {
-        add_immersed_stiffness(immersed, x, y, true, StiffnessArgument::direction);
-      };
-    FluidJacobian J(operator_, state_, state_gradient_, linear, add_stiffness,
-                    {exchange_->spans_ranks() ? exchange_ : nullptr, lifted_direction_, lifted_action_});
-    // GMRES on the owned unknowns (all of them on one rank); the copies follow.
-    const auto owned = std::make_pair(0, exchange_->num_owned_unknowns());
-    const GmresResult g =
-        gmres_.solve(J, M, Kokkos::subview(residual_, owned), Kokkos::subview(correction_, owned), forcing);
-    exchange_->update_copies(correction_);
+    const GmresResult g = newton_step(immersed, linear, forcing);
     report.gmres_iterations += g.iterations;
     ++report.newton_iterations;
-    KokkosBlas::axpby(1.0, correction_, 1.0, state_);
-    operator_.residual(state_, state_, residual_);
-    add_immersed_stiffness(immersed, state_, residual_, true, StiffnessArgument::state);
     residual_norm = exchange_->norm(residual_);
     // ‖δ‖ ≤ newton_step_rtol ‖U‖: the update no longer changes the state, so the residual
     // is at its round-off floor (converged, even if above the residual target).
     if (!linear && settings_.newton_step_rtol > 0.0 &&
         exchange_->norm(correction_) <= settings_.newton_step_rtol * exchange_->norm(state_))
       report.stalled_at_round_off = true;
-    if (spdlog::should_log(spdlog::level::debug)) {
-      double momentum = 0.0, continuity = 0.0;
-      block_norms(residual_, exchange_->num_owned_unknowns(), *exchange_, momentum, continuity);
-      spdlog::debug("Newton {}: GMRES {} iterations to {:.1e} ({}), residual {:.3e} (momentum {:.3e}, continuity "
-                    "{:.3e}), target {:.3e}",
-                    report.newton_iterations, g.iterations, forcing, g.converged ? "converged" : "not converged",
-                    residual_norm, momentum, continuity, target);
-    }
+    if (spdlog::should_log(spdlog::level::debug)) log_newton_step(report, g, forcing, residual_norm, target);
     if (!std::isfinite(residual_norm)) {
       report.failure = "the residual is not finite after Newton step " + std::to_string(report.newton_iterations);
       break;
@@ -277,6 +257,42 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history, const ImmersedTe
     report.failure = msg.str();
   }
   return report;
+}
+
+GmresResult FluidSolver::newton_step(const ImmersedTerms& immersed, const bool linear, const double forcing) {
+  const Preconditioner& M = *preconditioner_;
+  KokkosBlas::axpby(-1.0, residual_, 0.0, residual_);
+  Kokkos::deep_copy(correction_, 0.0);
+  FluidJacobian::AddStiffness add_stiffness;
+  if (immersed.stiffness)
+    add_stiffness = [this, &immersed](const ConstVector& x, const Vector& y) {
+      add_immersed_stiffness(immersed, x, y, true, StiffnessArgument::direction);
+    };
+  FluidJacobian J(operator_, state_, state_gradient_, linear, add_stiffness,
+                  {exchange_->spans_ranks() ? exchange_ : nullptr, lifted_direction_, lifted_action_});
+  // GMRES on the owned unknowns (all of them on one rank); the copies follow.
+  const auto owned = std::make_pair(0, exchange_->num_owned_unknowns());
+  const GmresResult g =
+      gmres_.solve(J, M, Kokkos::subview(residual_, owned), Kokkos::subview(correction_, owned), forcing);
+  exchange_->update_copies(correction_);
+  KokkosBlas::axpby(1.0, correction_, 1.0, state_);
+  residual_at_state(immersed, true);
+  return g;
+}
+
+void FluidSolver::residual_at_state(const ImmersedTerms& immersed, const bool constrained_rows) {
+  operator_.residual(state_, state_, residual_, constrained_rows);
+  add_immersed_stiffness(immersed, state_, residual_, constrained_rows, StiffnessArgument::state);
+}
+
+void FluidSolver::log_newton_step(const FluidSolveReport& report, const GmresResult& g, const double forcing,
+                                  const double residual_norm, const double target) const {
+  double momentum = 0.0, continuity = 0.0;
+  block_norms(residual_, exchange_->num_owned_unknowns(), *exchange_, momentum, continuity);
+  spdlog::debug("Newton {}: GMRES {} iterations to {:.1e} ({}), residual {:.3e} (momentum {:.3e}, continuity "
+                "{:.3e}), target {:.3e}",
+                report.newton_iterations, g.iterations, forcing, g.converged ? "converged" : "not converged",
+                residual_norm, momentum, continuity, target);
 }
 
 void FluidSolver::set_time_coefficients(double mass_coefficient, double inverse_dt) {

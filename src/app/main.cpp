@@ -8,6 +8,7 @@
 #include "config/derived.hpp"
 #include "config/load_case.hpp"
 #include "parallel/mpi_session.hpp"
+#include "run/kokkos_runtime_info.hpp"
 #include "run/kokkos_session.hpp"
 #include "run/run_case.hpp"
 #include "util/errors.hpp"

@@ -157,7 +157,7 @@ MemoryEstimate estimate_memory(const CaseConfig& config, int threads) {
       add("ILU(0) level-schedule scratch", ilu_scratch);
       break;
   }
-  // run/run_case.cpp, io/xdmf_writer.cpp: the host description of the fluid mesh, and with
+  // run/field_output.cpp, io/xdmf_writer.cpp: the host description of the fluid mesh, and with
   // fields a second one in the writer and the velocity and pressure gathered for output.
   add("output", 24.0 * Ng + 8.0 * f.nodes_per_element * E +
                     (config.output.write_fields ? 24.0 * Ng + 8.0 * f.nodes_per_element * E + 32.0 * Ng : 0.0));

@@ -1,21 +1,19 @@
+// The fluid solver's construction and its solves: Newton–Raphson on the scaled residual,
+// each step's J δ = −R solved by right-preconditioned GMRES with J applied element by
+// element, and the time stepping around it (fluid/fluid_solver.hpp).
 #include "fluid/fluid_solver.hpp"
 
 #include <spdlog/spdlog.h>
 
 #include <KokkosBlas1_axpby.hpp>
-#include <KokkosBlas1_nrm2.hpp>
 #include <KokkosBlas1_update.hpp>
-#include <cmath>
-#include <sstream>
-#include <stdexcept>
-
-#include "fluid/fluid_element_types.hpp"
-#include "util/profiling_region.hpp"
-#include "util/view_transfer.hpp"
-
 #include <algorithm>
+#include <cmath>
 #include <functional>
+#include <sstream>
 #include <utility>
+
+#include "util/profiling_region.hpp"
 
 namespace rouleau {
 
@@ -121,27 +119,27 @@ std::vector<int> owned_dirichlet(const std::vector<int>& dofs, const int owned) 
   return kept;
 }
 
-// v(rows(i)) = 0 (a free function: CUDA forbids extended lambdas in private member
-// functions).
-void zero_rows(const Kokkos::View<int*>& rows, const Vector& v) {
-  Kokkos::parallel_for(
-      "rouleau::FluidSolver::zero_rows", Kokkos::RangePolicy<ExecSpace>(0, rows.extent(0)),
-      KOKKOS_LAMBDA(const int i) { v(rows(i)) = 0.0; });
-}
-
-// v *= factor (a free function: CUDA forbids extended lambdas in private member functions).
-void scale(const Vector& v, const double factor) {
-  Kokkos::parallel_for(
-      "rouleau::FluidSolver::scale", Kokkos::RangePolicy<ExecSpace>(0, v.extent(0)),
-      KOKKOS_LAMBDA(const int i) { v(i) *= factor; });
-}
-
 GmresSettings gmres_settings(const SolverConfig& s) {
   GmresSettings g;
   g.restart = s.gmres_restart;
   g.relative_tolerance = s.gmres_rtol;
   g.max_iterations = s.gmres_max_iterations;
   return g;
+}
+
+// J δ = −R, solved to the Eisenstat–Walker forcing term η_k (choice 2, γ = 0.9, α = 2):
+// η_k = γ (‖R_k‖/‖R_{k−1}‖)², safeguarded by γ η_{k−1}² when that exceeds 0.1, capped at
+// 0.1, and no tighter than needed to reach the Newton target. `iteration`: k;
+// `previous_forcing`: η_{k−1} in, η_k out.
+double newton_forcing(const int iteration, const double residual_norm, const double previous_norm, const double target,
+                      const double gmres_rtol, double& previous_forcing) {
+  double forcing = iteration == 0 ? 0.1 : 0.9 * (residual_norm / previous_norm) * (residual_norm / previous_norm);
+  const double safeguard = 0.9 * previous_forcing * previous_forcing;
+  if (iteration > 0 && safeguard > 0.1) forcing = std::fmax(forcing, safeguard);
+  forcing = std::fmin(forcing, 0.1);
+  forcing = std::fmax(forcing, std::fmax(gmres_rtol, 0.5 * target / residual_norm));
+  previous_forcing = forcing;
+  return forcing;
 }
 }  // namespace
 
@@ -184,217 +182,6 @@ FluidSolver::FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid,
   set_uniform_body_force(fluid.body_force);
 }
 
-void FluidSolver::gather_global(const ConstVector& local, const Vector& global,
-                                const Kokkos::View<const int*>& nodes) const {
-  exchange_->replicate(local, global, nodes);
-}
-
-std::vector<double> FluidSolver::global_values(const ConstVector& local) const {
-  if (!exchange_->spans_ranks()) return to_flat_vector(local);
-  Vector global("rouleau::FluidSolver::global_values", num_global_unknowns_);
-  exchange_->replicate(local, global);
-  return to_flat_vector(global);
-}
-
-void FluidSolver::set_body_force(const std::vector<double>& force_density) {
-  const int nodes = mesh_.num_dof_nodes;
-  Vector global("rouleau::FluidSolver::body_force_global", num_global_unknowns_);
-  auto host = Kokkos::create_mirror_view(global);
-  const double scale = 1.0 / scales_.body_force();
-  for (int i = 0; i < nodes; ++i)
-    for (int d = 0; d < 3; ++d) host(4 * i + d) = force_density[3 * i + d] * scale;
-  Kokkos::deep_copy(global, host);
-  exchange_->localize(global, body_force_);
-}
-
-void FluidSolver::set_uniform_body_force(const std::array<double, 3>& force_density) {
-  std::vector<double> field(3 * mesh_.num_dof_nodes);
-  for (size_t i = 0; i < field.size(); ++i) field[i] = force_density[i % 3];
-  set_body_force(field);
-}
-
-void FluidSolver::set_velocity(
-    const std::function<std::array<double, 3>(const std::array<double, 3>&)>& velocity) {
-  const FluidMesh& mesh = operator_.mesh();
-  auto coordinates = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
-  auto state = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), state_);
-  for (int n = 0; n < mesh.num_nodes; ++n) {
-    const auto v = velocity({coordinates(n, 0), coordinates(n, 1), coordinates(n, 2)});
-    for (int c = 0; c < 3; ++c) state(4 * mesh.dof_node_of_node[n] + c) = v[c] / scales_.velocity;
-  }
-  Kokkos::deep_copy(state_, state);
-  operator_.impose_dirichlet(state_);
-}
-
-void FluidSolver::prescribe_boundary_velocity(
-    const std::function<std::array<double, 3>(const std::array<double, 3>&)>& velocity) {
-  const FluidMesh& mesh = operator_.mesh();
-  auto coordinates = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
-  std::vector<int> node_of_dof_node(mesh.num_dof_nodes, -1);
-  for (int n = 0; n < mesh.num_nodes; ++n)
-    if (node_of_dof_node[mesh.dof_node_of_node[n]] < 0) node_of_dof_node[mesh.dof_node_of_node[n]] = n;
-  for (size_t k = 0; k < boundary_.dirichlet_dofs.size(); ++k) {
-    const int dof = boundary_.dirichlet_dofs[k], component = dof % 4;
-    if (component == 3) continue;
-    const int node = node_of_dof_node[dof / 4];
-    const auto v = velocity({coordinates(node, 0), coordinates(node, 1), coordinates(node, 2)});
-    boundary_.dirichlet_values[k] = v[component] / scales_.velocity;
-  }
-  operator_.set_dirichlet(boundary_.dirichlet_dofs, boundary_.dirichlet_values);
-  operator_.impose_dirichlet(state_);
-}
-
-std::vector<std::array<double, 3>> FluidSolver::boundary_forces(const std::vector<std::string>& sides,
-                                                                const ImmersedTerms& immersed) {
-  const FluidMesh& mesh = mesh_;
-  // One residual without constraint rows and one host copy for all the sides asked.
-  load_immersed_forces(immersed);
-  operator_.residual(state_, state_, residual_, false);
-  add_immersed_stiffness(immersed, state_, residual_, false, StiffnessArgument::state);
-  auto r = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), residual_);
-  std::vector<std::array<double, 3>> forces;
-  for (const std::string& side : sides) {
-    std::vector<int> dof_nodes;
-    for (int node : mesh.boundary(side).nodes) dof_nodes.push_back(mesh.dof_node_of_node[node]);
-    std::sort(dof_nodes.begin(), dof_nodes.end());
-    dof_nodes.erase(std::unique(dof_nodes.begin(), dof_nodes.end()), dof_nodes.end());
-    // R_a = ∫ ∇N_a : σ − ... = the force the wall exerts on the fluid at node a; the fluid
-    // pushes back with −R_a. Scaled force → pN: × P L².
-    // Across ranks each node is counted by its owner (its residual is whole there).
-    std::array<double, 3> force{0.0, 0.0, 0.0};
-    for (int global_node : dof_nodes) {
-      const int n = exchange_->local_node(global_node);
-      if (n < 0 || n >= exchange_->num_owned_nodes()) continue;
-      for (int d = 0; d < 3; ++d) force[d] -= r(4 * n + d) * scales_.force();
-    }
-    exchange_->sum(force.data(), 3);
-    forces.push_back(force);
-  }
-  return forces;
-}
-
-namespace {
-// ∫ 1, ∫ u_x, ∫ u_y, ∫ u_z, ∫ |u|² over the mesh (scaled), by the element's quadrature
-// with u(ξ_q) = Σ_a N_a(ξ_q) u_a.
-template <class Element>
-std::array<double, 5> integrate_velocity(const FluidOperator& op, const ConstVector& state) {
-  const auto geometry = op.geometry();
-  const auto dof_nodes = op.mesh().element_dof_nodes;
-  double v = 0.0, ux = 0.0, uy = 0.0, uz = 0.0, uu = 0.0;
-  Kokkos::parallel_reduce(
-      "rouleau::FluidSolver::velocity_integrals", Kokkos::RangePolicy<ExecSpace>(0, op.mesh().num_elements),
-      KOKKOS_LAMBDA(const int e, double& volume, double& mx, double& my, double& mz, double& squared) {
-        for (int q = 0; q < Element::quadrature_points; ++q) {
-          double xi[3];
-          Element::quadrature_point(q, xi);
-          const double dv = geometry(e, q, 9);
-          double u[3] = {0.0, 0.0, 0.0};
-          for (int a = 0; a < Element::nodes; ++a) {
-            const double N = Element::shape(a, xi);
-            const int n = dof_nodes(e, a);
-            for (int c = 0; c < 3; ++c) u[c] += N * state(4 * n + c);
-          }
-          volume += dv;
-          mx += dv * u[0];
-          my += dv * u[1];
-          mz += dv * u[2];
-          squared += dv * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-        }
-      },
-      v, ux, uy, uz, uu);
-  return {v, ux, uy, uz, uu};
-}
-}  // namespace
-
-std::array<double, 5> FluidSolver::velocity_integrals() const {
-  // Across ranks: each rank integrates over the elements it owns.
-  std::array<double, 5> integrals = visit_fluid_element(operator_.mesh().element_type, [&](auto element) {
-    return integrate_velocity<decltype(element)>(operator_, state_);
-  });
-  exchange_->sum(integrals.data(), 5);
-  return integrals;
-}
-
-std::array<double, 3> FluidSolver::mean_velocity() const {
-  const auto integrals = velocity_integrals();
-  const double U = scales_.velocity;
-  return {integrals[1] / integrals[0] * U, integrals[2] / integrals[0] * U, integrals[3] / integrals[0] * U};
-}
-
-double FluidSolver::kinetic_energy() const {
-  // ½ ρ ∫ |u|² dV, the integral in scaled (x/L, u/U) variables: × U² L³
-  const double U = scales_.velocity, L = scales_.length;
-  return 0.5 * density_ * velocity_integrals()[4] * U * U * L * L * L;
-}
-
-void FluidSolver::load_immersed_forces(const ImmersedTerms& immersed) {
-  if (immersed.loads.extent(0) == 0) {
-    operator_.set_immersed_load(ConstVector());
-    return;
-  }
-  if (immersed_load_.extent(0) == 0)
-    immersed_load_ = Vector("rouleau::FluidSolver::immersed_load", state_.extent(0));
-  // b = F / (P L²), the forces in the residual's scale; across ranks, at the rank's nodes.
-  const auto load = immersed_load_;
-  const double inverse_force_scale = 1.0 / scales_.force();
-  exchange_->localize(immersed.loads, load);
-  scale(load, inverse_force_scale);
-  operator_.set_immersed_load(immersed_load_);
-  operator_.set_immersed_load_in_stabilization(immersed.loads_in_stabilization);
-}
-
-void FluidSolver::total_velocity(const Vector& out, const ImmersedTerms& immersed) {
-  load_immersed_forces(immersed);
-  operator_.subscale_velocity(state_, out);
-  KokkosBlas::axpy(1.0, state_, out);
-}
-
-void FluidSolver::add_immersed_stiffness(const ImmersedTerms& immersed, const ConstVector& x, const Vector& y,
-                                         bool skip_constrained, StiffnessArgument argument) const {
-  if (!immersed.stiffness) return;
-  ConstVector carrier = x;
-  if (immersed.stiffness_moves_with_subscale) {
-    // c = x + u'(x) for the state, x + u'_x (τ frozen at the state) for a direction.
-    if (argument == StiffnessArgument::state)
-      operator_.subscale_velocity(x, stiffness_carrier_);
-    else
-      operator_.subscale_velocity_action(state_, x, stiffness_carrier_);
-    KokkosBlas::axpy(1.0, x, stiffness_carrier_);
-    carrier = stiffness_carrier_;
-  }
-  // Ŝ acts on the whole mesh's vectors: across ranks, on the carrier replicated from
-  // every rank's owned entries, its action taken back at the rank's nodes.
-  if (exchange_->spans_ranks()) {
-    gather_global(carrier, global_carrier_, immersed.cell_support_nodes);
-    immersed.stiffness->apply(global_carrier_, global_action_);
-    if (immersed.stiffness_is_shared) exchange_->sum_at_nodes(global_action_, immersed.cell_support_nodes);
-    exchange_->localize(global_action_, stiffness_action_);
-  } else {
-    immersed.stiffness->apply(carrier, stiffness_action_);
-  }
-  // Ŝx is minus the change of the immersed loads; that change enters the stabilization's
-  // strong residual as the loads do: Ŝx − P(Ŝx), P = FluidOperator::load_stabilization.
-  if (operator_.immersed_load_in_stabilization()) {
-    operator_.load_stabilization(state_, stiffness_action_, stiffness_stabilization_);
-    KokkosBlas::axpy(-1.0, stiffness_stabilization_, stiffness_action_);
-  }
-  if (skip_constrained) zero_rows(operator_.dirichlet_dofs(), stiffness_action_);
-  KokkosBlas::axpy(1.0, stiffness_action_, y);
-}
-
-void FluidSolver::allocate_stiffness_scratch(const ImmersedTerms& immersed) {
-  if (stiffness_action_.extent(0) == 0) {
-    stiffness_action_ = Vector("rouleau::FluidSolver::stiffness_action", state_.extent(0));
-    stiffness_stabilization_ = Vector("rouleau::FluidSolver::stiffness_stabilization", state_.extent(0));
-    if (exchange_->spans_ranks()) {
-      global_carrier_ = Vector("rouleau::FluidSolver::global_carrier", num_global_unknowns_);
-      global_action_ = Vector("rouleau::FluidSolver::global_action", num_global_unknowns_);
-    }
-  }
-  if (immersed.stiffness_moves_with_subscale && stiffness_carrier_.extent(0) == 0)
-    stiffness_carrier_ = Vector("rouleau::FluidSolver::stiffness_carrier", state_.extent(0));
-}
-
 void FluidSolver::rebuild_preconditioner() {
   ProfilingRegion region("rouleau::FluidSolver::preconditioner");
   preconditioner_->factor(operator_, state_);
@@ -417,8 +204,7 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history, const ImmersedTe
     operator_.residual(correction_, correction_, residual_);
     rhs_norm = exchange_->norm(residual_);
   }
-  operator_.residual(state_, state_, residual_);
-  add_immersed_stiffness(immersed, state_, residual_, true, StiffnessArgument::state);
+  residual_at_state(immersed, true);
   double residual_norm = exchange_->norm(residual_);
   report.initial_residual = residual_norm;
   const double target = linear ? std::fmax(settings_.newton_atol, settings_.gmres_rtol * rhs_norm)
@@ -432,54 +218,22 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history, const ImmersedTe
       rebuild_preconditioner();
       preconditioner_current_ = true;
     }
-    const Preconditioner& M = *preconditioner_;
-    // J δ = −R, solved to the Eisenstat–Walker forcing term η_k (choice 2, γ = 0.9, α = 2):
-    // η_k = γ (‖R_k‖/‖R_{k−1}‖)², safeguarded by γ η_{k−1}² when that exceeds 0.1, capped at
-    // 0.1, and no tighter than needed to reach the Newton target. An affine (Stokes)
-    // residual is solved once, down to its target (gmres_rtol ‖b‖).
-    double forcing = std::fmin(0.5, target / residual_norm);
-    if (!linear) {
-      forcing = report.newton_iterations == 0 ? 0.1 : 0.9 * (residual_norm / previous_norm) * (residual_norm / previous_norm);
-      const double safeguard = 0.9 * previous_forcing * previous_forcing;
-      if (report.newton_iterations > 0 && safeguard > 0.1) forcing = std::fmax(forcing, safeguard);
-      forcing = std::fmin(forcing, 0.1);
-      forcing = std::fmax(forcing, std::fmax(settings_.gmres_rtol, 0.5 * target / residual_norm));
-      previous_forcing = forcing;
-    }
+    // An affine (Stokes) residual is solved once, down to its target (gmres_rtol ‖b‖); a
+    // nonlinear one to the Eisenstat–Walker forcing term.
+    const double forcing = linear ? std::fmin(0.5, target / residual_norm)
+                                  : newton_forcing(report.newton_iterations, residual_norm, previous_norm, target,
+                                                   settings_.gmres_rtol, previous_forcing);
     previous_norm = residual_norm;
-    KokkosBlas::axpby(-1.0, residual_, 0.0, residual_);
-    Kokkos::deep_copy(correction_, 0.0);
-    FluidJacobian::AddStiffness add_stiffness;
-    if (immersed.stiffness)
-      add_stiffness = [this, &immersed](const ConstVector& x, const Vector& y) {
-        add_immersed_stiffness(immersed, x, y, true, StiffnessArgument::direction);
-      };
-    FluidJacobian J(operator_, state_, state_gradient_, linear, add_stiffness,
-                    {exchange_->spans_ranks() ? exchange_ : nullptr, lifted_direction_, lifted_action_});
-    // GMRES on the owned unknowns (all of them on one rank); the copies follow.
-    const auto owned = std::make_pair(0, exchange_->num_owned_unknowns());
-    const GmresResult g =
-        gmres_.solve(J, M, Kokkos::subview(residual_, owned), Kokkos::subview(correction_, owned), forcing);
-    exchange_->update_copies(correction_);
+    const GmresResult g = newton_step(immersed, linear, forcing);
     report.gmres_iterations += g.iterations;
     ++report.newton_iterations;
-    KokkosBlas::axpby(1.0, correction_, 1.0, state_);
-    operator_.residual(state_, state_, residual_);
-    add_immersed_stiffness(immersed, state_, residual_, true, StiffnessArgument::state);
     residual_norm = exchange_->norm(residual_);
     // ‖δ‖ ≤ newton_step_rtol ‖U‖: the update no longer changes the state, so the residual
     // is at its round-off floor (converged, even if above the residual target).
     if (!linear && settings_.newton_step_rtol > 0.0 &&
         exchange_->norm(correction_) <= settings_.newton_step_rtol * exchange_->norm(state_))
       report.stalled_at_round_off = true;
-    if (spdlog::should_log(spdlog::level::debug)) {
-      double momentum = 0.0, continuity = 0.0;
-      block_norms(residual_, exchange_->num_owned_unknowns(), *exchange_, momentum, continuity);
-      spdlog::debug("Newton {}: GMRES {} iterations to {:.1e} ({}), residual {:.3e} (momentum {:.3e}, continuity "
-                    "{:.3e}), target {:.3e}",
-                    report.newton_iterations, g.iterations, forcing, g.converged ? "converged" : "not converged",
-                    residual_norm, momentum, continuity, target);
-    }
+    if (spdlog::should_log(spdlog::level::debug)) log_newton_step(report, g, forcing, residual_norm, target);
     if (!std::isfinite(residual_norm)) {
       report.failure = "the residual is not finite after Newton step " + std::to_string(report.newton_iterations);
       break;
@@ -503,6 +257,42 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history, const ImmersedTe
     report.failure = msg.str();
   }
   return report;
+}
+
+GmresResult FluidSolver::newton_step(const ImmersedTerms& immersed, const bool linear, const double forcing) {
+  const Preconditioner& M = *preconditioner_;
+  KokkosBlas::axpby(-1.0, residual_, 0.0, residual_);
+  Kokkos::deep_copy(correction_, 0.0);
+  FluidJacobian::AddStiffness add_stiffness;
+  if (immersed.stiffness)
+    add_stiffness = [this, &immersed](const ConstVector& x, const Vector& y) {
+      add_immersed_stiffness(immersed, x, y, true, StiffnessArgument::direction);
+    };
+  FluidJacobian J(operator_, state_, state_gradient_, linear, add_stiffness,
+                  {exchange_->spans_ranks() ? exchange_ : nullptr, lifted_direction_, lifted_action_});
+  // GMRES on the owned unknowns (all of them on one rank); the copies follow.
+  const auto owned = std::make_pair(0, exchange_->num_owned_unknowns());
+  const GmresResult g =
+      gmres_.solve(J, M, Kokkos::subview(residual_, owned), Kokkos::subview(correction_, owned), forcing);
+  exchange_->update_copies(correction_);
+  KokkosBlas::axpby(1.0, correction_, 1.0, state_);
+  residual_at_state(immersed, true);
+  return g;
+}
+
+void FluidSolver::residual_at_state(const ImmersedTerms& immersed, const bool constrained_rows) {
+  operator_.residual(state_, state_, residual_, constrained_rows);
+  add_immersed_stiffness(immersed, state_, residual_, constrained_rows, StiffnessArgument::state);
+}
+
+void FluidSolver::log_newton_step(const FluidSolveReport& report, const GmresResult& g, const double forcing,
+                                  const double residual_norm, const double target) const {
+  double momentum = 0.0, continuity = 0.0;
+  block_norms(residual_, exchange_->num_owned_unknowns(), *exchange_, momentum, continuity);
+  spdlog::debug("Newton {}: GMRES {} iterations to {:.1e} ({}), residual {:.3e} (momentum {:.3e}, continuity "
+                "{:.3e}), target {:.3e}",
+                report.newton_iterations, g.iterations, forcing, g.converged ? "converged" : "not converged",
+                residual_norm, momentum, continuity, target);
 }
 
 void FluidSolver::set_time_coefficients(double mass_coefficient, double inverse_dt) {
@@ -543,38 +333,6 @@ FluidSolveReport FluidSolver::advance(double dt, TimeScheme scheme, const Immers
     ++steps_;
   }
   return report;
-}
-
-void FluidSolver::save_state(CheckpointData& data) const {
-  // In the global numbering: a checkpoint written on P ranks restarts on Q.
-  data.reals["fluid/state"] = global_values(state_);
-  data.reals["fluid/previous_state"] = global_values(previous_state_);
-  data.reals["fluid/time"] = {time_};
-  data.integers["fluid/steps"] = {steps_};
-}
-
-void FluidSolver::restore_state(const CheckpointData& data) {
-  const long long n = num_global_unknowns_;
-  Vector global("rouleau::FluidSolver::restored", n);
-  const std::pair<const char*, Vector> entries[] = {{"fluid/state", state_}, {"fluid/previous_state", previous_state_}};
-  for (const auto& [name, local] : entries) {
-    from_flat_vector(data.real(name, n), global, name);
-    exchange_->localize(global, local);
-  }
-  time_ = data.real("fluid/time", 1).front();
-  steps_ = static_cast<int>(data.integer("fluid/steps", 1).front());
-}
-
-void FluidSolver::velocity_and_pressure(std::vector<double>& velocity, std::vector<double>& pressure) const {
-  const std::vector<double> host = global_values(state_);
-  const FluidMesh& mesh = mesh_;
-  velocity.resize(3 * mesh.num_nodes);
-  pressure.resize(mesh.num_nodes);
-  for (int n = 0; n < mesh.num_nodes; ++n) {
-    const int d = mesh.dof_node_of_node[n];
-    for (int c = 0; c < 3; ++c) velocity[3 * n + c] = host[4 * d + c] * scales_.velocity;
-    pressure[n] = host[4 * d + 3] * scales_.pressure;
-  }
 }
 
 }  // namespace rouleau

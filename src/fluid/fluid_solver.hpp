@@ -128,6 +128,17 @@ class FluidSolver {
 
  private:
   FluidSolveReport solve(const ConstVector& history, const ImmersedTerms& immersed);
+  // One Newton step from the residual R in residual_: J δ = −R solved by GMRES to `forcing`
+  // on the owned unknowns (the copies follow), U += δ, and R(U) at the new state in
+  // residual_.
+  GmresResult newton_step(const ImmersedTerms& immersed, bool linear, double forcing);
+  // R(U) at the current state into residual_, with the immersed stiffness's share.
+  // `constrained_rows`: the Dirichlet rows hold the constraints (the stiffness left out of
+  // them); false leaves the nodal reactions there (boundary_forces()).
+  void residual_at_state(const ImmersedTerms& immersed, bool constrained_rows);
+  // The debug log's line for a Newton step.
+  void log_newton_step(const FluidSolveReport& report, const GmresResult& g, double forcing, double residual_norm,
+                       double target) const;
   // The operator's immersed load b = F / (P L²) from `immersed.loads` (at the rank's
   // nodes), or none.
   void load_immersed_forces(const ImmersedTerms& immersed);

@@ -7,7 +7,7 @@
 // Without OMP_PROC_BIND in the environment, Kokkos's OpenMP back end prints four lines of
 // advice at every start. When neither OMP_PROC_BIND nor OMP_PLACES is set the OpenMP
 // runtime binds no thread, so the session sets OMP_PROC_BIND=false, which says what holds,
-// and a run says once, in its log, how to bind the threads (run_case.cpp, from the
+// and a run says once, in its log, how to bind the threads (run_report.cpp, from the
 // runtime's own omp_get_proc_bind()).
 #include <Kokkos_Core.hpp>
 #include <cstdlib>

@@ -1,148 +1,40 @@
+// Running a case: the run's folder and log, the pieces a run is made of (the simulation,
+// its outputs, its checkpoints) put together in order, the time loop run, and the report at
+// its end; and the same for a case driver's command line.
 #include "run/run_case.hpp"
 
-#include "run/kokkos_session.hpp"
+#include <chrono>
+#include <iostream>
+#include <optional>
 
 #include <Kokkos_Core.hpp>
-#include <chrono>
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
-#include <filesystem>
-#include <iostream>
-#include <map>
-#include <optional>
-#include <sstream>
-#include <sys/resource.h>
 
-#include "cells/cells_from_case.hpp"
-#include "cli/progress.hpp"
-#include "cli/stop_signals.hpp"
 #include "config/derived.hpp"
-#include "config/load_case.hpp"
 #include "config/memory_estimate.hpp"
 #include "config/resolved_case.hpp"
-#include "fluid/fluid_solver.hpp"
-#include "geometry/cell_mesh.hpp"
+#include "config/scene_plan.hpp"
+#include "geometry/mesh_cache.hpp"
 #include "io/atomic_file.hpp"
-#include "io/diagnostics_reader.hpp"
-#include "io/diagnostics_table.hpp"
 #include "io/provenance.hpp"
 #include "io/run_folder.hpp"
 #include "io/run_log.hpp"
-#include "io/xdmf_writer.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/mpi_session.hpp"
-#include "rouleau_version.hpp"
-#ifdef KOKKOS_ENABLE_OPENMP
-#include <omp.h>
-#endif
-#include "coupling/immersed_coupling.hpp"
-#include "run/run_diagnostics.hpp"
-#include "config/scene_plan.hpp"
+#include "run/diagnostics_output.hpp"
+#include "run/field_output.hpp"
+#include "run/kokkos_session.hpp"
+#include "run/run_checkpoints.hpp"
+#include "run/run_clock.hpp"
+#include "run/run_report.hpp"
 #include "run/simulation.hpp"
-#include "util/stage_times.hpp"
+#include "run/time_loop.hpp"
 #include "util/errors.hpp"
 
 namespace rouleau {
 
 namespace {
-// "2, 1, 0": how many cells each of `ranks` ranks computes.
-std::string cells_per_rank(const std::vector<int>& cell_ranks, const int ranks) {
-  std::vector<int> count(ranks, 0);
-  for (const int r : cell_ranks) ++count[r];
-  std::string text;
-  for (int r = 0; r < ranks; ++r) text += (r > 0 ? ", " : "") + std::to_string(count[r]);
-  return text;
-}
-}  // namespace
 
-std::vector<std::pair<std::string, std::string>> kokkos_runtime_info() {
-  std::vector<std::pair<std::string, std::string>> info;
-  info.emplace_back("kokkos", ROULEAU_KOKKOS_VERSION);
-  info.emplace_back("kokkos-kernels", ROULEAU_KOKKOSKERNELS_VERSION);
-  std::string backends;
-#ifdef KOKKOS_ENABLE_SERIAL
-  backends += "Serial ";
-#endif
-#ifdef KOKKOS_ENABLE_OPENMP
-  backends += "OpenMP ";
-#endif
-#ifdef KOKKOS_ENABLE_THREADS
-  backends += "Threads ";
-#endif
-#ifdef KOKKOS_ENABLE_CUDA
-  backends += "Cuda ";
-#endif
-#ifdef KOKKOS_ENABLE_HIP
-  backends += "HIP ";
-#endif
-  if (!backends.empty()) backends.pop_back();
-  info.emplace_back("kokkos backends", backends);
-  info.emplace_back("default execution space", Kokkos::DefaultExecutionSpace::name());
-  info.emplace_back("threads", std::to_string(Kokkos::DefaultHostExecutionSpace().concurrency()));
-  return info;
-}
-
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-// The process's peak resident memory so far (getrusage: kilobytes on Linux).
-double peak_resident_bytes() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return 1024.0 * static_cast<double>(usage.ru_maxrss);
-}
-
-// A checkpoint restarts only on the meshes it was made on: its mesh hashes must be those
-// of the meshes this case builds (a changed mesher or cell kind would move every node).
-void check_checkpoint_meshes(const FoundCheckpoint& checkpoint,
-                             const std::vector<std::pair<std::string, std::string>>& provenance_entries) {
-  std::map<std::string, std::string> built;
-  for (const auto& [key, value] : provenance_entries)
-    if (key.find("mesh_hash") != std::string::npos) built[key] = value;
-  std::map<std::string, std::string> stored;
-  for (const auto& [key, value] : checkpoint.data.labels)
-    if (key.find("mesh_hash") != std::string::npos) stored[key] = value;
-  for (const auto& [key, value] : built) {
-    const auto found = stored.find(key);
-    if (found == stored.end() || found->second != value)
-      throw InputError(checkpoint.path, key,
-                       "the checkpoint was made on " +
-                           (found == stored.end() ? std::string("no such mesh") : "a mesh of hash " + found->second) +
-                           "; this case builds one of hash " + value + " (another case, or another mesher version)");
-  }
-  for (const auto& [key, value] : stored)
-    if (!built.count(key))
-      throw InputError(checkpoint.path, key, "the checkpoint has this mesh; the case builds none like it");
-}
-
-// The rows of an earlier segment's diagnostics.csv; none when it cannot be read (it holds
-// only its header, or was damaged by hand: said on stderr).
-std::vector<std::map<std::string, double>> read_diagnostics_rows(const std::string& path) {
-  try {
-    return read_diagnostics(path);
-  } catch (const std::runtime_error& error) {
-    std::cerr << "rouleau: the earlier diagnostics are not carried over: " << error.what() << "\n";
-    return {};
-  }
-}
-
-// The fluid mesh as the XDMF writer wants it (host arrays).
-MeshDescription describe_fluid_mesh(const FluidMesh& mesh) {
-  MeshDescription d;
-  d.name = "fluid";
-  d.cell_type = mesh.element_type == FluidElementType::hexahedron8 ? CellType::hexahedron8 : CellType::tetrahedron4;
-  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
-  auto c = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.element_nodes);
-  d.coordinates.resize(3 * mesh.num_nodes);
-  for (int n = 0; n < mesh.num_nodes; ++n)
-    for (int k = 0; k < 3; ++k) d.coordinates[3 * n + k] = x(n, k);
-  d.connectivity.resize(static_cast<size_t>(mesh.num_elements) * mesh.nodes_per_element);
-  for (int e = 0; e < mesh.num_elements; ++e)
-    for (int a = 0; a < mesh.nodes_per_element; ++a) d.connectivity[e * mesh.nodes_per_element + a] = c(e, a);
-  return d;
-}
+using Clock = RunClock::Clock;
 
 // The log of a run on several ranks is the first rank's: the others' std::cerr says
 // nothing while this lives (an error they throw is reported after it, by the caller).
@@ -164,60 +56,14 @@ class QuietOtherRanks {
   std::streambuf* saved_ = nullptr;
 };
 
-// The run itself, once its folder is ready: builds the simulation, runs the time loop and
-// writes the outputs into options.output_dir (`log` is the first rank's, null on the others).
-int run_in_folder(const CaseConfig& config, const RunOptions& options, const DerivedQuantities& derived,
-                  const Communicator& ranks, const std::string& run_id, RunLog* log, Clock::time_point run_start) {
-  namespace fs = std::filesystem;
-  const bool writes_files = ranks.rank() == 0;
-  const std::string out = options.output_dir;
-  const FoundCheckpoint* restart = options.restart.get();
-  // The log's first lines: what ran, how, and where.
-  std::cerr << "rouleau " << ROULEAU_VERSION << " (" << ROULEAU_GIT_HASH << "): run of case " << config.name
-            << " into " << out << "\n";
-
-  Simulation simulation(config, default_mesh_cache_dir(), &ranks);
-  StageTimes& times = simulation.times();
-  FluidSolver& solver = simulation.fluid();
-  const CaseCells& cells = simulation.cells();
-  ImmersedCoupling* coupling = simulation.coupling();
-  std::cerr << "fluid mesh: " << simulation.mesh().num_nodes << " nodes, " << simulation.mesh().num_elements << " "
-            << (simulation.mesh().element_type == FluidElementType::tetrahedron4 ? "tetrahedra" : "hexahedra") << ", "
-            << solver.num_global_unknowns() << " unknowns; "
-            << Kokkos::DefaultExecutionSpace::name() << " on " << Kokkos::DefaultHostExecutionSpace().concurrency()
-            << " host threads" << (ranks.size() > 1 ? " per rank, " + std::to_string(ranks.size()) + " MPI ranks" : "")
-            << "\n";
-  const MemoryEstimate memory = estimate_memory(config, Kokkos::DefaultHostExecutionSpace().concurrency());
-  std::cerr << "memory: about " << format_bytes(memory.total_bytes) << " estimated (largest part: "
-            << memory.terms.front().first << ")\n";
-#ifdef KOKKOS_ENABLE_OPENMP
-  if (Kokkos::DefaultHostExecutionSpace().concurrency() > 1 && omp_get_proc_bind() == omp_proc_bind_false)
-    std::cerr << "threads not bound to cores (to bind them, as for timings: OMP_PROC_BIND=spread OMP_PLACES=threads)\n";
-#endif
-  if (const FluidDistribution* distribution = simulation.distribution())
-    std::cerr << "fluid split across " << ranks.size() << " ranks: rank 0 owns "
-              << distribution->partition().elements.size() << " elements and "
-              << distribution->partition().num_owned_nodes << " of its " << distribution->partition().num_local_nodes()
-              << " nodes" << (cells.population ? "; every rank holds every cell" : "") << "\n";
-  if (!simulation.cell_ranks().empty())
-    std::cerr << "cells computed by the rank holding their centroid; per rank: "
-              << cells_per_rank(simulation.cell_ranks(), ranks.size()) << "\n";
-  const int cell_count = static_cast<int>(config.cells.size());
-  if (cell_count > config.output.cell_gaps_max_cells && cell_count > 1)
-    std::cerr << "cell gaps: not in the diagnostics (" << cell_count << " cells, more than output.cell_gaps_max_cells = "
-              << config.output.cell_gaps_max_cells << ")\n";
-  if (coupling && coupling->semi_implicit())
-    std::cerr << "semi-implicit coupling: dt = " << config.time.dt << " s (the explicit stable step estimate, "
-              << derived.stable_dt << " s, does not bind it)\n";
-  else if (coupling)
-    std::cerr << "explicit coupling: dt = " << config.time.dt << " s, stable step estimate " << derived.stable_dt
-              << " s (" << derived.stable_dt_reason << ")"
-              << (config.time.dt > derived.stable_dt ? "; ABOVE IT (coupling.allow_unstable_step = true)" : "")
-              << "\n";
-
-  std::vector<MeshDescription> output_meshes{describe_fluid_mesh(simulation.mesh())};
-  const MeshDescription& fluid_mesh = output_meshes.front();
-  std::vector<std::pair<std::string, std::string>> provenance_entries{
+// What every file of the run carries besides the build's provenance: the case, the run id,
+// how it runs, and the hashes of its meshes (`fluid_mesh`: the fluid's output mesh).
+std::vector<std::pair<std::string, std::string>> run_provenance_entries(const CaseConfig& config,
+                                                                        const std::string& run_id,
+                                                                        const Communicator& ranks,
+                                                                        const MeshDescription& fluid_mesh,
+                                                                        const CaseCells& cells) {
+  std::vector<std::pair<std::string, std::string>> entries{
       {"case", config.name},
       {"run_id", run_id},
       {"execution_space", Kokkos::DefaultExecutionSpace::name()},
@@ -225,224 +71,41 @@ int run_in_folder(const CaseConfig& config, const RunOptions& options, const Der
       {"ranks", std::to_string(ranks.size())},
       {"fluid_mesh_hash", hash_mesh(fluid_mesh.coordinates.data(), fluid_mesh.coordinates.size(),
                                     fluid_mesh.connectivity.data(), fluid_mesh.connectivity.size())}};
-  for (const auto& [kind, cell_mesh] : cells.meshes) provenance_entries.emplace_back("cell_mesh_hash_" + kind, cell_mesh.hash);
-  if (cells.population) output_meshes.push_back(cells.population->mesh_description());
+  for (const auto& [kind, cell_mesh] : cells.meshes) entries.emplace_back("cell_mesh_hash_" + kind, cell_mesh.hash);
+  return entries;
+}
+
+// The run itself, once its folder is ready: builds the simulation and its outputs, runs the
+// time loop, and reports (`log` is the first rank's, null on the others).
+int run_in_folder(const CaseConfig& config, const RunOptions& options, const DerivedQuantities& derived,
+                  const Communicator& ranks, const std::string& run_id, RunLog* log, Clock::time_point run_start) {
+  const bool writes_files = ranks.rank() == 0;
+  const std::string out = options.output_dir;
+  const FoundCheckpoint* restart = options.restart.get();
+  report_run_opening(config, out);
+  Simulation simulation(config, default_mesh_cache_dir(), &ranks);
+  const MemoryEstimate memory = estimate_memory(config, Kokkos::DefaultHostExecutionSpace().concurrency());
+  report_run_setup(simulation, derived, ranks, memory);
+
+  std::vector<MeshDescription> meshes = output_meshes(simulation);
+  const auto provenance_entries = run_provenance_entries(config, run_id, ranks, meshes.front(), simulation.cells());
   const Provenance provenance = build_provenance(provenance_entries);
+  const std::map<std::string, std::string> mesh_hashes = mesh_hash_labels(provenance_entries);
   // The volume drift is measured from the cells as placed: before a restart moves them.
-  const CellDiagnostics cell_diagnostics(cells, config, &ranks);
-  if (restart) {
-    check_checkpoint_meshes(*restart, provenance_entries);
-    simulation.restore_state(restart->data);
-    std::cerr << "restarted from " << restart->path << ": step " << restart->data.step << ", t = " << restart->data.time
-              << " s\n";
-    const int leftovers =
-        writes_files ? remove_leftover_temporary_files(out) + remove_leftover_temporary_files(out + "/checkpoints") : 0;
-    if (leftovers > 0)
-      std::cerr << "removed " << leftovers << " unfinished temporary file(s) of the stopped run\n";
-  }
-  // What a run that ran this far wrote after the checkpoint is dropped: the diagnostics
-  // rows and the field steps of later steps.
-  std::vector<std::map<std::string, double>> earlier_rows;
-  if (writes_files && restart && fs::exists(out + "/diagnostics.csv"))
-    for (auto& row : read_diagnostics_rows(out + "/diagnostics.csv"))
-      if (row.count("step") && row["step"] <= restart->data.step) earlier_rows.push_back(std::move(row));
-  std::unique_ptr<XdmfTimeSeries> fields;
-  if (config.output.write_fields && writes_files) {
-    fields = std::make_unique<XdmfTimeSeries>(out, "fields", output_meshes, provenance);
-    if (restart) fields->adopt_written_steps(static_cast<int>(restart->data.step));
-  }
+  CellDiagnostics cell_diagnostics(simulation.cells(), config, &ranks);
+  if (restart) restart_simulation(simulation, *restart, mesh_hashes, out, writes_files);
+  const auto earlier_rows = earlier_diagnostics_rows(out, restart, writes_files);
+  FieldOutput fields(simulation, ranks, std::move(meshes), provenance, out, restart, writes_files);
+  DiagnosticsOutput diagnostics(simulation, std::move(cell_diagnostics), out, earlier_rows, writes_files);
+  const RunClock clock(run_start, restart ? restart->data.wall_seconds : 0.0);
+  RunCheckpoints checkpoints(config, derived, out, restart, provenance, mesh_hashes, run_id, writes_files);
 
-  CouplingDiagnostics coupling_diagnostics;
-  const FluidDiagnostics fluid_diagnostics(config, simulation.mesh());
-  std::vector<std::string> columns = fluid_diagnostics.columns();
-  if (cells.population) {
-    const auto cell_columns = cell_diagnostics.columns();
-    columns.insert(columns.end(), cell_columns.begin(), cell_columns.end());
-  }
-  if (coupling) {
-    const auto coupling_columns = coupling_diagnostics.columns();
-    columns.insert(columns.end(), coupling_columns.begin(), coupling_columns.end());
-  }
-  std::unique_ptr<DiagnosticsTable> table;  // the first rank's
-  if (writes_files) table = std::make_unique<DiagnosticsTable>(out + "/diagnostics.csv", columns, earlier_rows);
-  auto flush_table = [&] {
-    if (table) table->flush();
-  };
-  // Wall time of the whole run, over the segments a restart joins.
-  const double earlier_wall_seconds = restart ? restart->data.wall_seconds : 0.0;
-  auto wall_seconds = [&] { return earlier_wall_seconds + std::chrono::duration<double>(Clock::now() - run_start).count(); };
-  auto add_diagnostics_row = [&] {
-    std::vector<double> row =
-        fluid_diagnostics.row(solver, simulation.steps(), simulation.last_report().fluid, wall_seconds(),
-                              coupling ? coupling->state().felt_terms : ImmersedTerms{});
-    if (cells.population) {
-      const CellForceState& forces = simulation.cell_forces(true);
-      const std::vector<double> cell_row =
-          times.time("cell diagnostics", [&] { return cell_diagnostics.row(cells, forces); });
-      row.insert(row.end(), cell_row.begin(), cell_row.end());
-    }
-    if (coupling) {
-      const std::vector<double> coupling_row = coupling_diagnostics.row(simulation.last_report(), times);
-      row.insert(row.end(), coupling_row.begin(), coupling_row.end());
-    }
-    if (table) table->add_row(row);
-  };
-
-  std::vector<double> velocity, pressure;
-  CellPopulation::HostFields cell_fields;
-  // The interaction forces per cell node (a node-major host copy for output).
-  Kokkos::View<double* [3], Kokkos::LayoutRight, Kokkos::HostSpace> host_interaction_forces;
-  if (cells.interaction)
-    host_interaction_forces = decltype(host_interaction_forces)("rouleau::run::interaction_forces_host",
-                                                                cells.population->num_nodes());
-  // Every rank takes part (the fluid's fields are gathered); the first writes them.
-  auto write_fields = [&] {
-    if (!config.output.write_fields) return;
-    times.time("output", [&] {
-      solver.velocity_and_pressure(velocity, pressure);
-      std::vector<std::vector<FieldView>> nodal{
-          {FieldView{"velocity_um_s", 3, velocity.data()}, FieldView{"pressure_Pa", 1, pressure.data()}}};
-      std::vector<const double*> moved{nullptr};
-      if (cells.population) {
-        // The forces the step computed at these positions (internal_force is CellForces' elastic).
-        const CellForceState& forces = simulation.cell_forces(false);
-        cells.population->copy_fields_to_host(cell_fields);
-        // Each rank's share of the cells' forces: the fields are their sums.
-        const bool shared = cells.population->work_is_shared();
-        if (shared) ranks.sum(cell_fields.internal_force.data(), static_cast<int>(cell_fields.internal_force.size()));
-        nodal.push_back({FieldView{"displacement_um", 3, cell_fields.displacement.data()},
-                         FieldView{"velocity_um_s", 3, cell_fields.velocity.data()},
-                         FieldView{"internal_force_pN", 3, cell_fields.internal_force.data()},
-                         FieldView{"cell_id", 1, cell_fields.cell_id.data()}});
-        if (cells.interaction) {
-          Kokkos::deep_copy(host_interaction_forces, forces.interaction);
-          if (shared) ranks.sum(host_interaction_forces.data(), static_cast<int>(host_interaction_forces.size()));
-          nodal.back().push_back(FieldView{"interaction_force_pN", 3, host_interaction_forces.data()});
-        }
-        moved.push_back(cell_fields.positions.data());
-      }
-      if (fields) fields->write_step(simulation.steps(), simulation.time(), nodal, {}, moved);
-    });
-  };
-
-  // Checkpoints (transient runs): at the start, every N steps or M minutes, on request
-  // (SIGUSR1), on a stop signal and at the end.
-  const bool transient = config.time.mode == TimeMode::transient;
-  CheckpointStore checkpoints(out, config.checkpoint.kept);
-  if (restart) checkpoints.set_last_path(restart->path);
-  auto last_checkpoint = Clock::now();
-  int last_checkpoint_step = restart ? static_cast<int>(restart->data.step) : -1;
-  // The diagnostics on disk go first: a run killed after the checkpoint then has every
-  // row up to it (the restart keeps those and drops later ones).
-  auto write_checkpoint = [&] {
-    flush_table();
-    times.time("checkpoint", [&] {
-      CheckpointData data;
-      data.resolved_case = resolved_case_toml(config, derived);
-      simulation.save_state(data);
-      data.wall_seconds = wall_seconds();
-      for (const auto& [key, value] : provenance_entries)
-        if (key.find("mesh_hash") != std::string::npos) data.labels[key] = value;
-      data.labels["run_id"] = run_id;
-      if (writes_files)
-        checkpoints.write(data, provenance);
-      else  // the first rank's file, for the messages
-        checkpoints.set_last_path(checkpoints.path_of(simulation.steps()));
-    });
-    last_checkpoint = Clock::now();
-    last_checkpoint_step = simulation.steps();
-  };
-  auto last_good = [&] {
-    return checkpoints.last_path().empty() ? std::string("none written") : checkpoints.last_path();
-  };
-
-  StopSignals signals;
-  try {
-    if (!transient) {
-      write_fields();
-      const FluidSolveReport& report = simulation.solve_steady().fluid;
-      add_diagnostics_row();
-      write_fields();
-      std::cerr << "steady solve: " << report.newton_iterations << " Newton, " << report.gmres_iterations
-                << " GMRES iterations; residual momentum " << report.momentum_residual << ", continuity "
-                << report.continuity_residual << "\n";
-    } else {
-      if (!restart) {
-        add_diagnostics_row();  // the state as placed, at t = 0
-        write_fields();
-        write_checkpoint();
-      }
-      // The run ends at the time time.end, whatever step a restart continues with: the
-      // steps left are (end − t) / Δt from where it starts.
-      const int first_step = simulation.steps() + 1;
-      const int steps = simulation.steps() + static_cast<int>(std::max<long long>(
-                                                 0, std::llround((config.time.end - simulation.time()) / config.time.dt)));
-      // On a terminal the line is redrawn in place there, and the log gets a line every
-      // half minute; otherwise (stderr to a file) the lines go to both.
-      const bool terminal = stderr_is_terminal();
-      ProgressReporter progress(steps, config.time.end, terminal, log && terminal ? log->terminal() : std::cerr);
-      std::optional<ProgressReporter> logged_progress;
-      if (log && terminal && options.progress)
-        logged_progress.emplace(steps, config.time.end, false, log->file(), ProgressReporter::Settings{0.1, 30.0});
-      for (int step = first_step; step <= steps; ++step) {
-        // A diagnostics row reads the energies the step computes with its forces.
-        const bool diagnostics_row = step % config.output.diagnostics_every_steps == 0 || step == steps;
-        const FluidSolveReport& report = simulation.advance(diagnostics_row).fluid;
-        if (diagnostics_row) add_diagnostics_row();
-        if (step % config.output.fields_every_steps == 0 || step == steps) write_fields();
-        if (options.progress)
-          progress.update(step, simulation.time(), report.newton_iterations, report.gmres_iterations);
-        if (logged_progress)
-          logged_progress->update(step, simulation.time(), report.newton_iterations, report.gmres_iterations);
-        const CheckpointConfig& every = config.checkpoint;
-        const double minutes = std::chrono::duration<double>(Clock::now() - last_checkpoint).count() / 60.0;
-        // Signals and clocks are each rank's: on several ranks the decisions are taken
-        // together (any rank's request counts), since every rank takes part in a checkpoint.
-        int signal_number = StopSignals::stop_requested();
-        bool checkpoint_now = StopSignals::take_checkpoint_request() ||
-                              (every.every_minutes > 0.0 && minutes >= every.every_minutes);
-        if (ranks.size() > 1) {
-          signal_number = static_cast<int>(ranks.max(static_cast<double>(signal_number)));
-          checkpoint_now = ranks.max(checkpoint_now ? 1.0 : 0.0) > 0.0;
-        }
-        if (checkpoint_now || (every.every_steps > 0 && step % every.every_steps == 0) || signal_number != 0 ||
-            step == steps)
-          write_checkpoint();
-        if (signal_number != 0 && step < steps) {
-          if (options.progress) progress.finish();
-          if (logged_progress) logged_progress->finish();
-          flush_table();
-          std::cerr << "stopped by signal " << signal_number << " after step " << step << " (t = " << simulation.time()
-                    << " s); checkpoint " << checkpoints.last_path() << "\ncontinue with: " << options.continue_command << " "
-                    << out << "\n";
-          return static_cast<int>(ExitCode::interrupted);
-        }
-      }
-      if (options.progress) progress.finish();
-      if (logged_progress) logged_progress->finish();
-      if (last_checkpoint_step != simulation.steps()) write_checkpoint();
-    }
-  } catch (const DivergenceError& error) {
-    flush_table();
-    throw DivergenceError(std::string(error.what()) + "; last good checkpoint: " + last_good() +
-                          "; fields and diagnostics up to the last good step are in " + out);
-  }
-  flush_table();
+  TimeLoop loop(simulation, options, ranks, log, clock, {diagnostics, fields, checkpoints});
+  const int status = loop.run(restart != nullptr);
+  if (status != static_cast<int>(ExitCode::done)) return status;
+  diagnostics.flush();
   ranks.barrier();  // the files are complete before any rank returns (case drivers read them)
-  if (!simulation.cell_ranks().empty())
-    std::cerr << "cells changed rank " << simulation.cell_rank_changes() << " times in this run; per rank now: "
-              << cells_per_rank(simulation.cell_ranks(), ranks.size()) << "\n";
-  times.print(std::cerr, wall_seconds());
-  std::cerr << "peak memory: " << format_bytes(peak_resident_bytes()) << " (estimated " << format_bytes(memory.total_bytes)
-            << ")\n";
-  std::cerr << "wrote " << out << "/" << (fields ? "fields*.xdmf, " : "") << "diagnostics.csv, case.resolved.toml, "
-            << run_log_name << (transient ? ", checkpoints/" : "") << "\n";
-  if (fields) {
-    std::cerr << "ParaView: open";
-    for (const MeshDescription& mesh : output_meshes) std::cerr << " " << fields->mesh_xdmf_path(mesh.name);
-    std::cerr << " (reader Xdmf3ReaderT; docs/paraview.md)\n";
-  }
-  std::cerr << "figures: scripts/plot_diagnostics.py " << out << "\n";
+  report_run_end(simulation, ranks, clock.seconds(), memory, out, fields.mesh_xdmf_paths());
   return static_cast<int>(ExitCode::done);
 }
 

@@ -3,8 +3,6 @@
 // by the caller (src/app/main.cpp). This header includes no Kokkos header.
 #include <memory>
 #include <string>
-#include <utility>
-#include <vector>
 
 #include "cli/cli.hpp"
 #include "config/case_config.hpp"
@@ -62,9 +60,5 @@ struct CaseDriverRun {
 };
 CaseDriverRun run_case_driver(int argc, char** argv, const std::string& default_case,
                               const std::string& default_output_dir);
-
-// Name/value lines for `rouleau info`: Kokkos version and enabled backends, default
-// execution space and its concurrency (threads), KokkosKernels version.
-std::vector<std::pair<std::string, std::string>> kokkos_runtime_info();
 
 }  // namespace rouleau

@@ -8,6 +8,7 @@
 #include <Kokkos_Core.hpp>
 #include <Kokkos_ScatterView.hpp>
 #include <array>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,7 @@ template <class ExecSpace>
 class BasicCellPopulation {
  public:
   using NodeVectors = Kokkos::View<double* [3]>;
+  using ConstNodeVectors = Kokkos::View<const double* [3]>;
   using Scatter = Kokkos::Experimental::ScatterView<double* [3], typename NodeVectors::array_layout,
                                                     typename ExecSpace::device_type>;
   using CellSumsScatter = Kokkos::Experimental::ScatterView<double* [5], typename NodeVectors::array_layout,
@@ -66,6 +68,16 @@ class BasicCellPopulation {
   const NodeVectors& positions() const { return positions_; }
   const NodeVectors& velocities() const { return velocities_; }
   const NodeVectors& internal_forces() const { return internal_forces_; }
+
+  // Places the nodes at `positions` (node, 3) [μm]: any View that Kokkos::deep_copy copies
+  // into positions() (another device View, a host mirror). The velocities stay.
+  template <class Positions>
+  void set_positions(const Positions& positions) {
+    if (positions.extent(0) != positions_.extent(0))
+      throw std::invalid_argument("rouleau::CellPopulation::set_positions: " + std::to_string(positions.extent(0)) +
+                                  " positions for " + std::to_string(positions_.extent(0)) + " nodes");
+    Kokkos::deep_copy(positions_, positions);
+  }
 
   // Checkpoints: the nodes' positions and velocities ("cells/..." entries). The reference
   // configuration is rebuilt from the case (the run checks the meshes' hashes). Restoring
@@ -99,7 +111,7 @@ class BasicCellPopulation {
   // coupling's differences, coupling/cell_stiffness.hpp) into `forces`, leaving the
   // population's own state (internal_forces(), the constraints' tensions and pressures)
   // as it is.
-  void internal_forces_at(const NodeVectors& positions, const NodeVectors& forces) const;
+  void internal_forces_at(const ConstNodeVectors& positions, const NodeVectors& forces) const;
   // This rank's share of the elastic work when the cells are on every rank:
   // the two calls above then give the forces and energy of `cells` (ascending, each once)
   // alone (their elements and constraints; zero at the other cells' nodes), and the shares
@@ -121,7 +133,9 @@ class BasicCellPopulation {
   double constraint_energy() const { return constraint_energy_; }
 
   // Per-cell volume, area and centroid at the current positions (a small host copy).
-  std::vector<CellMeasures> measures() const;
+  std::vector<CellMeasures> measures() const { return measures_at(positions_); }
+  // The same at other `positions` (node, 3) [μm] (a trial configuration).
+  std::vector<CellMeasures> measures_at(const ConstNodeVectors& positions) const;
 
   // The element with the smallest volume ratio J = det F at the current positions
   // (kernels/state_checks.hpp): J ≤ 0 means it is inverted; a NaN position gives the
@@ -154,15 +168,15 @@ class BasicCellPopulation {
   // The force kernel at `positions` launched with tag ForcesOnly or ForcesAndEnergy; returns
   // the energy (0 for ForcesOnly).
   template <class Tag>
-  double run_force_kernel(const char* label, const NodeVectors& positions, const ForceOutputs& outputs) const;
+  double run_force_kernel(const char* label, const ConstNodeVectors& positions, const ForceOutputs& outputs) const;
   // Adds the global-constraint forces at `positions` into force_scatter_ (the multipliers
   // into `outputs`); returns E_A + E_V (0 for ForcesOnly).
   template <class Tag>
-  double add_global_constraint_forces(const NodeVectors& positions, const ForceOutputs& outputs) const;
+  double add_global_constraint_forces(const ConstNodeVectors& positions, const ForceOutputs& outputs) const;
   // computed_elements_, computed_triangles_ and computed_cells_ for `cells`.
   void list_computed_work(const std::vector<int>& cells);
   // The surface sums (CellSurfaceSum) of every cell at `positions` into cell_sums_.
-  void compute_surface_sums(const NodeVectors& positions) const;
+  void compute_surface_sums(const ConstNodeVectors& positions) const;
 
   int num_cells_ = 0;
   NodeVectors reference_positions_, positions_, velocities_, internal_forces_;

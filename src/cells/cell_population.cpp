@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "kernels/cell_motion.hpp"
 #include "kernels/cell_surface.hpp"
 #include "kernels/over_indices.hpp"
 #include "kernels/scatter_sum.hpp"
@@ -269,6 +270,17 @@ std::vector<CellMeasures> BasicCellPopulation<ExecSpace>::measures_at(const Cons
     for (int i = 0; i < 3; ++i) m.centroid[i] = o(c, i) + host_sums(c, first_moment_x + i) / m.volume;
   }
   return result;
+}
+
+template <class ExecSpace>
+double BasicCellPopulation<ExecSpace>::move(const ConstNodeVectors& scaled_velocities, const double velocity_scale,
+                                            const double dt, const NodeVectors& previous_velocities) {
+  double largest_speed2 = 0.0;
+  MoveCellsFunctor<NodeVectors> move{scaled_velocities, velocities_,    previous_velocities,
+                                     positions_,        velocity_scale, dt};
+  Kokkos::parallel_reduce("rouleau::CellPopulation::move", Kokkos::RangePolicy<ExecSpace>(0, num_nodes()), move,
+                          Kokkos::Max<double>(largest_speed2));
+  return largest_speed2;
 }
 
 template <class ExecSpace>

@@ -69,6 +69,12 @@ class BasicCellPopulation {
   const NodeVectors& velocities() const { return velocities_; }
   const NodeVectors& internal_forces() const { return internal_forces_; }
 
+  // The time step's move (kernels/cell_motion.hpp): v^{n+1} = U v̂ from the scaled velocities
+  // v̂ interpolated from the fluid, x^{n+1} = x^n + Δt v^{n+1}, and v^n into
+  // `previous_velocities`. Returns the largest speed² [μm²/s²]
+  // (MoveCellsFunctor::non_finite_speed2 when a velocity is NaN or Inf: that node stays).
+  double move(const ConstNodeVectors& scaled_velocities, double velocity_scale, double dt,
+              const NodeVectors& previous_velocities);
   // Places the nodes at `positions` (node, 3) [μm]: any View that Kokkos::deep_copy copies
   // into positions() (another device View, a host mirror). The velocities stay.
   template <class Positions>

@@ -244,18 +244,14 @@ ImmersedCoupling::ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, C
                        }
                        return true;
                      }});
-  // 5. Reads state_.interpolated; writes the cells' positions and velocities,
-  //    state_.previous_velocities, state_.previous_dt, and the step's powers and speeds (the
-  //    power of the forces the fluid felt, on the fluid's side and on the cells': they agree,
-  //    interpolation and spreading being transposes of each other).
+  // 5. Reads state_.interpolated; writes the cells' positions and velocities (their one
+  //    writer in the step: CellPopulation::move), state_.previous_velocities,
+  //    state_.previous_dt, and the step's powers and speeds (the power of the forces the
+  //    fluid felt, on the fluid's side and on the cells': they agree, interpolation and
+  //    spreading being transposes of each other).
   stages_.push_back({move_stage, [this] {
-                       double largest_speed2 = 0.0;
-                       MoveCellsFunctor<NodeVectors> move{state_.interpolated,      population_.velocities(),
-                                                          state_.previous_velocities, population_.positions(),
-                                                          fluid_.scales().velocity, state_.dt};
-                       Kokkos::parallel_reduce("rouleau::ImmersedCoupling::move",
-                                               Kokkos::RangePolicy<ExecSpace>(0, population_.num_nodes()), move,
-                                               Kokkos::Max<double>(largest_speed2));
+                       const double largest_speed2 = population_.move(state_.interpolated, fluid_.scales().velocity,
+                                                                      state_.dt, state_.previous_velocities);
                        state_.previous_dt = state_.dt;
                        state_.finite = largest_speed2 < MoveCellsFunctor<NodeVectors>::non_finite_speed2;
                        state_.largest_cell_speed = std::sqrt(largest_speed2);

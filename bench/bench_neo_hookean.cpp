@@ -95,7 +95,7 @@ struct CellsProblem {
         for (int i = 0; i < 3; ++i) x(node, i) = f[i][0] * p[0] + f[i][1] * p[1] + f[i][2] * p[2] + 0.1 * u(rng);
       }
     }
-    Kokkos::deep_copy(cells.positions(), x);
+    cells.set_positions(x);
   }
 };
 

@@ -63,11 +63,13 @@ class BasicCellPopulation {
   int num_elements() const { return static_cast<int>(element_nodes_.extent(0)); }
   int num_surface_triangles() const { return static_cast<int>(surface_triangles_.extent(0)); }
 
-  // The state. positions() may be changed in place (the time loop moves the nodes).
-  const NodeVectors& reference_positions() const { return reference_positions_; }
-  const NodeVectors& positions() const { return positions_; }
-  const NodeVectors& velocities() const { return velocities_; }
-  const NodeVectors& internal_forces() const { return internal_forces_; }
+  // The state, read-only. The positions and velocities have three named writers: move()
+  // (the time step), set_positions() (placing the nodes: a static solve's result, the
+  // run's set_cell_positions, tests) and restore_state() (a checkpoint).
+  ConstNodeVectors reference_positions() const { return reference_positions_; }
+  ConstNodeVectors positions() const { return positions_; }
+  ConstNodeVectors velocities() const { return velocities_; }
+  ConstNodeVectors internal_forces() const { return internal_forces_; }
 
   // The time step's move (kernels/cell_motion.hpp): v^{n+1} = U v̂ from the scaled velocities
   // v̂ interpolated from the fluid, x^{n+1} = x^n + Δt v^{n+1}, and v^n into
@@ -92,16 +94,16 @@ class BasicCellPopulation {
   void restore_state(const CheckpointData& data);
 
   // The mesh data.
-  const Kokkos::View<int* [4]>& element_nodes() const { return element_nodes_; }
-  const Kokkos::View<int*>& element_cell() const { return element_cell_; }
-  const Kokkos::View<int*>& node_cell() const { return node_cell_; }
-  const Kokkos::View<double* [3][3]>& inverse_edge_matrix() const { return inverse_edge_matrix_; }
-  const Kokkos::View<double*>& reference_volume() const { return reference_volume_; }
-  const Kokkos::View<int* [3]>& surface_triangles() const { return surface_triangles_; }
-  const Kokkos::View<int*>& triangle_cell() const { return triangle_cell_; }
+  Kokkos::View<const int* [4]> element_nodes() const { return element_nodes_; }
+  Kokkos::View<const int*> element_cell() const { return element_cell_; }
+  Kokkos::View<const int*> node_cell() const { return node_cell_; }
+  Kokkos::View<const double* [3][3]> inverse_edge_matrix() const { return inverse_edge_matrix_; }
+  Kokkos::View<const double*> reference_volume() const { return reference_volume_; }
+  Kokkos::View<const int* [3]> surface_triangles() const { return surface_triangles_; }
+  Kokkos::View<const int*> triangle_cell() const { return triangle_cell_; }
   // Nodal area weights of the outer surfaces in the reference configuration (zero off
   // the surface): w_n = Σ_{t ∋ n} A_t / 3 [μm²].
-  const Kokkos::View<double*>& surface_area_weights() const { return surface_area_weights_; }
+  Kokkos::View<const double*> surface_area_weights() const { return surface_area_weights_; }
   // First node and node count of each cell (host): cell c owns nodes
   // [cell_first_node[c], cell_first_node[c] + cell_node_count[c]).
   const std::vector<int>& cell_first_node() const { return cell_first_node_host_; }
@@ -132,10 +134,10 @@ class BasicCellPopulation {
   // the last force evaluation (zero where off), and E_A + E_V of the last
   // compute_internal_forces_and_energy() [pN·μm].
   bool has_global_constraints() const { return global_constraints_; }
-  const Kokkos::View<double*>& reference_areas() const { return reference_areas_; }
-  const Kokkos::View<double*>& reference_volumes() const { return reference_volumes_; }
-  const Kokkos::View<double*>& area_tensions() const { return area_tensions_; }
-  const Kokkos::View<double*>& volume_pressures() const { return volume_pressures_; }
+  Kokkos::View<const double*> reference_areas() const { return reference_areas_; }
+  Kokkos::View<const double*> reference_volumes() const { return reference_volumes_; }
+  Kokkos::View<const double*> area_tensions() const { return area_tensions_; }
+  Kokkos::View<const double*> volume_pressures() const { return volume_pressures_; }
   double constraint_energy() const { return constraint_energy_; }
 
   // Per-cell volume, area and centroid at the current positions (a small host copy).

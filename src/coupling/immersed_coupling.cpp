@@ -61,7 +61,7 @@ double dot(const View& a, const OtherView& b) {
 
 // "(x, y, z)" of node `node` of a (node, 3) View (for an error message: copies the View
 // to the host).
-std::string node_vector_text(const CellPopulation::NodeVectors& vectors, const int node) {
+std::string node_vector_text(const CellPopulation::ConstNodeVectors& vectors, const int node) {
   auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), vectors);
   std::ostringstream text;
   text << "(" << host(node, 0) << ", " << host(node, 1) << ", " << host(node, 2) << ")";
@@ -70,7 +70,7 @@ std::string node_vector_text(const CellPopulation::NodeVectors& vectors, const i
 
 // Throws std::runtime_error naming the first node whose force is NaN or Inf, with its
 // elastic part and position.
-void check_finite_forces(const CellPopulation::NodeVectors& forces, const CellPopulation::NodeVectors& elastic,
+void check_finite_forces(const CellPopulation::NodeVectors& forces, const CellPopulation::ConstNodeVectors& elastic,
                          const CellPopulation& population) {
   const int node = first_non_finite_row(ExecSpace(), forces, "rouleau::ImmersedCoupling::check_forces");
   if (node < 0) return;

@@ -87,7 +87,7 @@ BasicRkpmCoupler<ExecSpace>::BasicRkpmCoupler(const FluidMesh& mesh, double supp
 }
 
 template <class ExecSpace>
-void BasicRkpmCoupler<ExecSpace>::fill_rows(const PointVectors& points, bool count_only) {
+void BasicRkpmCoupler<ExecSpace>::fill_rows(const Kokkos::View<const double* [3]>& points, bool count_only) {
   const RkpmSupportSearch search = search_;
   auto node_position = node_position_;
   auto node_support = node_support_;
@@ -182,7 +182,7 @@ void BasicRkpmCoupler<ExecSpace>::fill_rows(const PointVectors& points, bool cou
 }
 
 template <class ExecSpace>
-void BasicRkpmCoupler<ExecSpace>::update(const PointVectors& points) {
+void BasicRkpmCoupler<ExecSpace>::update(const Kokkos::View<const double* [3]>& points) {
   ProfilingRegion region("rouleau::RkpmCoupler::update");
   num_points_ = static_cast<int>(points.extent(0));
   if (active_points_.extent(0) > 0 && static_cast<int>(active_points_.extent(0)) != num_points_)

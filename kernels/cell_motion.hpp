@@ -12,12 +12,12 @@ template <class NodeVectors>
 struct MoveCellsFunctor {
   static constexpr double non_finite_speed2 = 1.7e308;
 
-  NodeVectors scaled_velocity;    // v̂_I (in: interpolated from the scaled state)
-  NodeVectors velocity;           // v_I [μm/s] (in: v^n, out: v^{n+1})
-  NodeVectors previous_velocity;  // out: v_I^n [μm/s]
-  NodeVectors position;           // x_I [μm] (in/out)
-  double velocity_scale;          // U [μm/s]
-  double dt;                      // [s]
+  typename NodeVectors::const_type scaled_velocity;  // v̂_I (in: interpolated from the scaled state)
+  NodeVectors velocity;                              // v_I [μm/s] (in: v^n, out: v^{n+1})
+  NodeVectors previous_velocity;                     // out: v_I^n [μm/s]
+  NodeVectors position;                              // x_I [μm] (in/out)
+  double velocity_scale;                             // U [μm/s]
+  double dt;                                         // [s]
 
   KOKKOS_INLINE_FUNCTION void operator()(const int node, double& largest_speed2) const {
     double v[3], speed2 = 0.0;

@@ -10,14 +10,15 @@ namespace rouleau {
 
 template <class NodeVectors, class Scalars>
 struct FsiForceFunctor {
-  NodeVectors elastic;              // f^elastic [pN]
-  NodeVectors interaction;          // f^Morse [pN], or empty
-  NodeVectors wall;                 // f^wall, the vessel wall's repulsion [pN], or empty
-  Scalars excess_mass;              // m_I [pN·s²/μm], or empty
-  NodeVectors velocity, previous_velocity;  // v^n, v^{n−1} [μm/s]
-  double gravity[3];                // [μm/s²]
-  double inverse_dt;                // 1/Δt of the last step [1/s], 0 before the first
-  NodeVectors force;                // F [pN]
+  using Inputs = typename NodeVectors::const_type;
+  Inputs elastic;                      // f^elastic [pN]
+  Inputs interaction;                  // f^Morse [pN], or empty
+  Inputs wall;                         // f^wall, the vessel wall's repulsion [pN], or empty
+  Scalars excess_mass;                 // m_I [pN·s²/μm], or empty
+  Inputs velocity, previous_velocity;  // v^n, v^{n−1} [μm/s]
+  double gravity[3];                   // [μm/s²]
+  double inverse_dt;                   // 1/Δt of the last step [1/s], 0 before the first
+  NodeVectors force;                   // F [pN]
 
   KOKKOS_INLINE_FUNCTION void operator()(const int node) const {
     const bool with_interaction = interaction.extent(0) > 0;

@@ -85,9 +85,9 @@ struct VesselWallRepulsion {
 template <class NodeVectors, class Weights>
 struct WallRepulsionFunctor {
   VesselWallRepulsion wall;
-  NodeVectors positions;  // [μm]
-  Weights area_weights;   // reference outer-surface area weight per node [μm²], 0 inside
-  NodeVectors force;      // [pN]
+  typename NodeVectors::const_type positions;  // [μm]
+  Weights area_weights;                        // reference outer-surface area weight per node [μm²], 0 inside
+  NodeVectors force;                           // [pN]
 
   KOKKOS_INLINE_FUNCTION double node(const int n) const {
     const double p[3] = {positions(n, 0), positions(n, 1), positions(n, 2)};

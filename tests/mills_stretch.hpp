@@ -18,6 +18,7 @@
 #include "cells/cell_population.hpp"
 #include "cells/cells_from_case.hpp"
 #include "cells/static_equilibrium.hpp"
+#include "cells/stretch_patches.hpp"
 #include "config/cell_kinds.hpp"
 #include "geometry/cell_mesh.hpp"
 

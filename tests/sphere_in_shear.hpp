@@ -33,7 +33,7 @@ inline std::string shear_box(double side, int n, double wall_speed) {
 
 // Host copies of a (node, 3) View.
 using HostVectors = Kokkos::View<double* [3], Kokkos::HostSpace>;
-inline HostVectors host(const CellPopulation::NodeVectors& v) {
+inline HostVectors host(const CellPopulation::ConstNodeVectors& v) {
   HostVectors h("host", v.extent(0));
   Kokkos::deep_copy(h, v);
   return h;

@@ -97,7 +97,7 @@ TEST(Coupling, TaylorDeformationIsMeasuredOnTheMembraneMidSurface) {
                            mid_radius * n[2]};
     for (int k = 0; k < 3; ++k) x(node, k) = mid[k] + (r - mid_radius) * n[k];
   }
-  Kokkos::deep_copy(cells.population->positions(), x);
+  cells.population->set_positions(x);
   const auto measures = cells.population->measures();
   const auto shape = rouleau::shear_plane_shapes(*cells.population, measures, cells.membrane_depth).at(0);
   const auto outer = rouleau::shear_plane_shapes(*cells.population, measures).at(0);
@@ -228,7 +228,7 @@ TEST(Coupling, SemiImplicitStiffnessIsTheSymmetricHessianOfTheCellsEnergy) {
     auto x = host(population.positions());
     for (int n = 0; n < nodes; ++n)
       for (int c = 0; c < 3; ++c) x(n, c) += 0.02 * unit(random);
-    Kokkos::deep_copy(population.positions(), x);
+    population.set_positions(x);
   }
   rouleau::RkpmCoupler rkpm(simulation.mesh());
   rkpm.update(population.positions());
@@ -298,9 +298,9 @@ TEST(Coupling, SemiImplicitStiffnessIsTheSymmetricHessianOfTheCellsEnergy) {
     auto x = host(population.positions());
     for (int n = 0; n < nodes; ++n)
       for (int c = 0; c < 3; ++c) x(n, c) = base(n, c) + s * delta(n, c);
-    Kokkos::deep_copy(population.positions(), x);
+    population.set_positions(x);
     const double energy = population.compute_internal_forces_and_energy() + interaction.compute_forces_and_energy();
-    Kokkos::deep_copy(population.positions(), base);
+    population.set_positions(base);
     return energy;
   };
   const double epsilon = 1e-2 / largest;

@@ -69,6 +69,7 @@
 #include "cells/cell_population.hpp"
 #include "cells/cells_from_case.hpp"
 #include "cells/static_equilibrium.hpp"
+#include "cells/stretch_patches.hpp"
 #include "config/cell_kinds.hpp"
 #include "config/load_case.hpp"
 #include "geometry/cell_mesh.hpp"
@@ -98,7 +99,7 @@ void print(const StretchResult& r) {
 }
 
 // Host copy of a View (node, 3) as Eigen points.
-std::vector<Eigen::Vector3d> host_points(const Kokkos::View<double* [3]>& view) {
+std::vector<Eigen::Vector3d> host_points(const Kokkos::View<const double* [3]>& view) {
   auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), view);
   std::vector<Eigen::Vector3d> points(h.extent(0));
   for (std::size_t a = 0; a < h.extent(0); ++a) points[a] = Eigen::Vector3d(h(a, 0), h(a, 1), h(a, 2));
@@ -187,7 +188,7 @@ TEST(MillsStretch, ZeroForceKeepsTheReferenceShape) {
       start(a, 1) = 0.95 * x0[a].y() + jitter(rng);
       start(a, 2) = x0[a].z() + jitter(rng);
     }
-    Kokkos::deep_copy(setup.cells->positions(), start);
+    setup.cells->set_positions(start);
     auto mass = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), setup.solver->fictitious_masses());
     auto centroid = [&](const std::vector<Eigen::Vector3d>& x) {
       Eigen::Vector3d c = Eigen::Vector3d::Zero();
@@ -345,7 +346,7 @@ TEST(MillsStretch, MillsMembraneKindFromACaseFile) {
     const double s[3] = {1.6, 0.7, 1.0};
     for (std::size_t a = 0; a < x.extent(0); ++a)
       for (int i = 0; i < 3; ++i) x(a, i) = center[i] + s[i] * (x(a, i) - center[i]);
-    Kokkos::deep_copy(cells.positions(), x);
+    cells.set_positions(x);
     return cells.compute_internal_forces_and_energy();
   };
   const double energy = stretched_energy(*from_case.population, config.cells[0].center);

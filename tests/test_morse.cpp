@@ -122,7 +122,7 @@ struct Scene {
     auto x = host_copy(cells->positions());
     for (std::size_t n = 0; n < x.extent(0); ++n)
       for (int i = 0; i < 3; ++i) x(n, i) += u(rng);
-    Kokkos::deep_copy(cells->positions(), x);
+    cells->set_positions(x);
   }
 };
 
@@ -259,7 +259,7 @@ TEST(SurfaceInteraction, SharesOfTheRowsSumToTheWhole) {
     }
     return gap / largest;
   };
-  auto to_vectors = [&](const CellPopulation::NodeVectors& v) {
+  auto to_vectors = [&](const CellPopulation::ConstNodeVectors& v) {
     const auto h = host_copy(v);
     std::vector<Eigen::Vector3d> result(nodes);
     for (int n = 0; n < nodes; ++n) result[n] = Eigen::Vector3d(h(n, 0), h(n, 1), h(n, 2));
@@ -313,7 +313,7 @@ TEST(SurfaceInteraction, SharesOfTheRowsSumToTheWhole) {
     std::uniform_real_distribution<double> u(-0.05, 0.05);
     for (std::size_t n = 0; n < x.extent(0); ++n)
       for (int i = 0; i < 3; ++i) x(n, i) += u(rng);
-    Kokkos::deep_copy(elastic.positions(), x);
+    elastic.set_positions(x);
   }
   const double whole_energy = elastic.compute_internal_forces_and_energy();
   const std::vector<Eigen::Vector3d> whole_forces = to_vectors(elastic.internal_forces());
@@ -372,14 +372,14 @@ TEST(SurfaceInteraction, ForcesAreMinusTheGradientOfTheEnergy) {
         for (int side = 0; side < 2; ++side) {
           auto shifted = host_copy(x);
           shifted(n, c) += side == 0 ? step : -step;
-          Kokkos::deep_copy(scene.cells->positions(), shifted);
+          scene.cells->set_positions(shifted);
           energy[side] = interaction.compute_forces_and_energy();
         }
         const double derivative = -(energy[0] - energy[1]) / (2 * step);
         error += std::pow(derivative - f[n][c], 2);
         norm += f[n][c] * f[n][c];
       }
-    Kokkos::deep_copy(scene.cells->positions(), x);
+    scene.cells->set_positions(x);
     std::cout << "  " << (quadrature == SurfaceQuadrature::nodes ? "nodal quadrature" : "3 Gauss points")
               << ": nodal force vs −∂E/∂x (central differences): relative error " << std::sqrt(error / norm) << "\n";
     EXPECT_LT(std::sqrt(error / norm), 1e-6);
@@ -480,11 +480,11 @@ TEST(SurfaceInteraction, ForceChangeIsTheExactLinearizationOfTheForces) {
         auto moved = host_copy(x0);
         for (int n = 0; n < nodes; ++n)
           for (int c = 0; c < 3; ++c) moved(n, c) += (s == 0 ? epsilon : -epsilon) * move_x[n][c];
-        Kokkos::deep_copy(scene.cells->positions(), moved);
+        scene.cells->set_positions(moved);
         interaction.compute_forces();
         side[s] = node_forces(*scene.cells, interaction);
       }
-      Kokkos::deep_copy(scene.cells->positions(), x0);
+      scene.cells->set_positions(x0);
       std::vector<Eigen::Vector3d> difference(nodes);
       for (int n = 0; n < nodes; ++n) difference[n] = (side[0][n] - side[1][n]) / (2 * epsilon);
       const double against_difference = relative(Kx, difference);
@@ -610,7 +610,7 @@ TEST(SurfaceInteraction, TwoRigidCellsSettleAtTheMorseMinimum) {
     auto x = host_copy(reference);
     for (std::size_t n = 0; n < x.extent(0); ++n)
       if (cell(n) == 1) x(n, 2) += gap - start_gap;
-    Kokkos::deep_copy(cells.positions(), x);
+    cells.set_positions(x);
     const double energy = interaction.compute_forces_and_energy();
     const auto f = host_copy(interaction.forces());
     force_on_upper = 0.0;

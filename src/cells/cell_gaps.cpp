@@ -33,8 +33,8 @@ CellGaps::CellGaps(const CellPopulation& population, double contact_distance)
 }
 
 void CellGaps::node_distances(int a, int b) const {
-  using Functor = NodeToSurfaceDistanceFunctor<CellPopulation::NodeVectors, Kokkos::View<double*>,
-                                               Kokkos::View<int* [3]>, Kokkos::View<double*>>;
+  using Functor = NodeToSurfaceDistanceFunctor<CellPopulation::ConstNodeVectors, Kokkos::View<const double*>,
+                                               Kokkos::View<const int* [3]>, Kokkos::View<double*>>;
   Functor f{population_.positions(), population_.surface_area_weights(), population_.surface_triangles(),
             population_.cell_first_node()[a], first_triangle_[b], triangle_count_[b], distance_};
   Kokkos::parallel_for("rouleau::CellGaps::node_distances",

@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "kernels/cell_motion.hpp"
 #include "kernels/cell_surface.hpp"
 #include "kernels/over_indices.hpp"
 #include "kernels/scatter_sum.hpp"
@@ -146,7 +147,7 @@ BasicCellPopulation<ExecSpace>::BasicCellPopulation(const std::vector<PlacedCell
 }
 
 template <class ExecSpace>
-void BasicCellPopulation<ExecSpace>::compute_surface_sums(const NodeVectors& positions) const {
+void BasicCellPopulation<ExecSpace>::compute_surface_sums(const ConstNodeVectors& positions) const {
   cell_sums_scatter_.reset();
   CellSurfaceSumsFunctor<CellSumsScatter> sums{positions, surface_triangles_, triangle_cell_, cell_first_node_,
                                                cell_sums_scatter_};
@@ -157,7 +158,7 @@ void BasicCellPopulation<ExecSpace>::compute_surface_sums(const NodeVectors& pos
 
 template <class ExecSpace>
 template <class Tag>
-double BasicCellPopulation<ExecSpace>::run_force_kernel(const char* label, const NodeVectors& positions,
+double BasicCellPopulation<ExecSpace>::run_force_kernel(const char* label, const ConstNodeVectors& positions,
                                                         const ForceOutputs& outputs) const {
   ProfilingRegion region("rouleau::CellPopulation::internal_forces");
   force_scatter_.reset();
@@ -178,7 +179,7 @@ double BasicCellPopulation<ExecSpace>::run_force_kernel(const char* label, const
 
 template <class ExecSpace>
 template <class Tag>
-double BasicCellPopulation<ExecSpace>::add_global_constraint_forces(const NodeVectors& positions,
+double BasicCellPopulation<ExecSpace>::add_global_constraint_forces(const ConstNodeVectors& positions,
                                                                     const ForceOutputs& outputs) const {
   ProfilingRegion region("rouleau::CellPopulation::global_constraints");
   // A_c and V_c, then T_c, P_c (and E_A + E_V), then f_a −= T_c ∂A_c/∂x_a + P_c ∂V_c/∂x_a.
@@ -241,17 +242,17 @@ double BasicCellPopulation<ExecSpace>::compute_internal_forces_and_energy() {
 }
 
 template <class ExecSpace>
-void BasicCellPopulation<ExecSpace>::internal_forces_at(const NodeVectors& positions, const NodeVectors& forces) const {
+void BasicCellPopulation<ExecSpace>::internal_forces_at(const ConstNodeVectors& positions,
+                                                        const NodeVectors& forces) const {
   run_force_kernel<ForcesOnly>("rouleau::CellPopulation::internal_forces_at", positions,
                                {forces, trial_area_tensions_, trial_volume_pressures_});
 }
 
 template <class ExecSpace>
-std::vector<CellMeasures> BasicCellPopulation<ExecSpace>::measures() const {
+std::vector<CellMeasures> BasicCellPopulation<ExecSpace>::measures_at(const ConstNodeVectors& positions) const {
   ProfilingRegion region("rouleau::CellPopulation::measures");
-  compute_surface_sums(positions_);
+  compute_surface_sums(positions);
   // The origins o of the sums (each cell's first node), gathered on the device.
-  auto positions = positions_;
   auto first_node = cell_first_node_;
   auto origins = cell_origins_;
   Kokkos::parallel_for(
@@ -269,6 +270,17 @@ std::vector<CellMeasures> BasicCellPopulation<ExecSpace>::measures() const {
     for (int i = 0; i < 3; ++i) m.centroid[i] = o(c, i) + host_sums(c, first_moment_x + i) / m.volume;
   }
   return result;
+}
+
+template <class ExecSpace>
+double BasicCellPopulation<ExecSpace>::move(const ConstNodeVectors& scaled_velocities, const double velocity_scale,
+                                            const double dt, const NodeVectors& previous_velocities) {
+  double largest_speed2 = 0.0;
+  MoveCellsFunctor<NodeVectors> move{scaled_velocities, velocities_,    previous_velocities,
+                                     positions_,        velocity_scale, dt};
+  Kokkos::parallel_reduce("rouleau::CellPopulation::move", Kokkos::RangePolicy<ExecSpace>(0, num_nodes()), move,
+                          Kokkos::Max<double>(largest_speed2));
+  return largest_speed2;
 }
 
 template <class ExecSpace>

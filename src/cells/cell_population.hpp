@@ -8,6 +8,7 @@
 #include <Kokkos_Core.hpp>
 #include <Kokkos_ScatterView.hpp>
 #include <array>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,7 @@ template <class ExecSpace>
 class BasicCellPopulation {
  public:
   using NodeVectors = Kokkos::View<double* [3]>;
+  using ConstNodeVectors = Kokkos::View<const double* [3]>;
   using Scatter = Kokkos::Experimental::ScatterView<double* [3], typename NodeVectors::array_layout,
                                                     typename ExecSpace::device_type>;
   using CellSumsScatter = Kokkos::Experimental::ScatterView<double* [5], typename NodeVectors::array_layout,
@@ -61,11 +63,29 @@ class BasicCellPopulation {
   int num_elements() const { return static_cast<int>(element_nodes_.extent(0)); }
   int num_surface_triangles() const { return static_cast<int>(surface_triangles_.extent(0)); }
 
-  // The state. positions() may be changed in place (the time loop moves the nodes).
-  const NodeVectors& reference_positions() const { return reference_positions_; }
-  const NodeVectors& positions() const { return positions_; }
-  const NodeVectors& velocities() const { return velocities_; }
-  const NodeVectors& internal_forces() const { return internal_forces_; }
+  // The state, read-only. The positions and velocities have three named writers: move()
+  // (the time step), set_positions() (placing the nodes: a static solve's result, the
+  // run's set_cell_positions, tests) and restore_state() (a checkpoint).
+  ConstNodeVectors reference_positions() const { return reference_positions_; }
+  ConstNodeVectors positions() const { return positions_; }
+  ConstNodeVectors velocities() const { return velocities_; }
+  ConstNodeVectors internal_forces() const { return internal_forces_; }
+
+  // The time step's move (kernels/cell_motion.hpp): v^{n+1} = U v̂ from the scaled velocities
+  // v̂ interpolated from the fluid, x^{n+1} = x^n + Δt v^{n+1}, and v^n into
+  // `previous_velocities`. Returns the largest speed² [μm²/s²]
+  // (MoveCellsFunctor::non_finite_speed2 when a velocity is NaN or Inf: that node stays).
+  double move(const ConstNodeVectors& scaled_velocities, double velocity_scale, double dt,
+              const NodeVectors& previous_velocities);
+  // Places the nodes at `positions` (node, 3) [μm]: any View that Kokkos::deep_copy copies
+  // into positions() (another device View, a host mirror). The velocities stay.
+  template <class Positions>
+  void set_positions(const Positions& positions) {
+    if (positions.extent(0) != positions_.extent(0))
+      throw std::invalid_argument("rouleau::CellPopulation::set_positions: " + std::to_string(positions.extent(0)) +
+                                  " positions for " + std::to_string(positions_.extent(0)) + " nodes");
+    Kokkos::deep_copy(positions_, positions);
+  }
 
   // Checkpoints: the nodes' positions and velocities ("cells/..." entries). The reference
   // configuration is rebuilt from the case (the run checks the meshes' hashes). Restoring
@@ -74,16 +94,16 @@ class BasicCellPopulation {
   void restore_state(const CheckpointData& data);
 
   // The mesh data.
-  const Kokkos::View<int* [4]>& element_nodes() const { return element_nodes_; }
-  const Kokkos::View<int*>& element_cell() const { return element_cell_; }
-  const Kokkos::View<int*>& node_cell() const { return node_cell_; }
-  const Kokkos::View<double* [3][3]>& inverse_edge_matrix() const { return inverse_edge_matrix_; }
-  const Kokkos::View<double*>& reference_volume() const { return reference_volume_; }
-  const Kokkos::View<int* [3]>& surface_triangles() const { return surface_triangles_; }
-  const Kokkos::View<int*>& triangle_cell() const { return triangle_cell_; }
+  Kokkos::View<const int* [4]> element_nodes() const { return element_nodes_; }
+  Kokkos::View<const int*> element_cell() const { return element_cell_; }
+  Kokkos::View<const int*> node_cell() const { return node_cell_; }
+  Kokkos::View<const double* [3][3]> inverse_edge_matrix() const { return inverse_edge_matrix_; }
+  Kokkos::View<const double*> reference_volume() const { return reference_volume_; }
+  Kokkos::View<const int* [3]> surface_triangles() const { return surface_triangles_; }
+  Kokkos::View<const int*> triangle_cell() const { return triangle_cell_; }
   // Nodal area weights of the outer surfaces in the reference configuration (zero off
   // the surface): w_n = Σ_{t ∋ n} A_t / 3 [μm²].
-  const Kokkos::View<double*>& surface_area_weights() const { return surface_area_weights_; }
+  Kokkos::View<const double*> surface_area_weights() const { return surface_area_weights_; }
   // First node and node count of each cell (host): cell c owns nodes
   // [cell_first_node[c], cell_first_node[c] + cell_node_count[c]).
   const std::vector<int>& cell_first_node() const { return cell_first_node_host_; }
@@ -99,7 +119,7 @@ class BasicCellPopulation {
   // coupling's differences, coupling/cell_stiffness.hpp) into `forces`, leaving the
   // population's own state (internal_forces(), the constraints' tensions and pressures)
   // as it is.
-  void internal_forces_at(const NodeVectors& positions, const NodeVectors& forces) const;
+  void internal_forces_at(const ConstNodeVectors& positions, const NodeVectors& forces) const;
   // This rank's share of the elastic work when the cells are on every rank:
   // the two calls above then give the forces and energy of `cells` (ascending, each once)
   // alone (their elements and constraints; zero at the other cells' nodes), and the shares
@@ -114,14 +134,16 @@ class BasicCellPopulation {
   // the last force evaluation (zero where off), and E_A + E_V of the last
   // compute_internal_forces_and_energy() [pN·μm].
   bool has_global_constraints() const { return global_constraints_; }
-  const Kokkos::View<double*>& reference_areas() const { return reference_areas_; }
-  const Kokkos::View<double*>& reference_volumes() const { return reference_volumes_; }
-  const Kokkos::View<double*>& area_tensions() const { return area_tensions_; }
-  const Kokkos::View<double*>& volume_pressures() const { return volume_pressures_; }
+  Kokkos::View<const double*> reference_areas() const { return reference_areas_; }
+  Kokkos::View<const double*> reference_volumes() const { return reference_volumes_; }
+  Kokkos::View<const double*> area_tensions() const { return area_tensions_; }
+  Kokkos::View<const double*> volume_pressures() const { return volume_pressures_; }
   double constraint_energy() const { return constraint_energy_; }
 
   // Per-cell volume, area and centroid at the current positions (a small host copy).
-  std::vector<CellMeasures> measures() const;
+  std::vector<CellMeasures> measures() const { return measures_at(positions_); }
+  // The same at other `positions` (node, 3) [μm] (a trial configuration).
+  std::vector<CellMeasures> measures_at(const ConstNodeVectors& positions) const;
 
   // The element with the smallest volume ratio J = det F at the current positions
   // (kernels/state_checks.hpp): J ≤ 0 means it is inverted; a NaN position gives the
@@ -154,15 +176,15 @@ class BasicCellPopulation {
   // The force kernel at `positions` launched with tag ForcesOnly or ForcesAndEnergy; returns
   // the energy (0 for ForcesOnly).
   template <class Tag>
-  double run_force_kernel(const char* label, const NodeVectors& positions, const ForceOutputs& outputs) const;
+  double run_force_kernel(const char* label, const ConstNodeVectors& positions, const ForceOutputs& outputs) const;
   // Adds the global-constraint forces at `positions` into force_scatter_ (the multipliers
   // into `outputs`); returns E_A + E_V (0 for ForcesOnly).
   template <class Tag>
-  double add_global_constraint_forces(const NodeVectors& positions, const ForceOutputs& outputs) const;
+  double add_global_constraint_forces(const ConstNodeVectors& positions, const ForceOutputs& outputs) const;
   // computed_elements_, computed_triangles_ and computed_cells_ for `cells`.
   void list_computed_work(const std::vector<int>& cells);
   // The surface sums (CellSurfaceSum) of every cell at `positions` into cell_sums_.
-  void compute_surface_sums(const NodeVectors& positions) const;
+  void compute_surface_sums(const ConstNodeVectors& positions) const;
 
   int num_cells_ = 0;
   NodeVectors reference_positions_, positions_, velocities_, internal_forces_;

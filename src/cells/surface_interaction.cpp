@@ -20,8 +20,8 @@ namespace rouleau {
 
 namespace {
 // points(p) = Σ_k s_pk nodes(n_pk): node vectors at the surface points
-template <class ExecSpace, class PointVectors>
-void nodes_to_points(const PointVectors& nodes, const Kokkos::View<int* [3]>& point_nodes,
+template <class ExecSpace, class NodeVectors, class PointVectors>
+void nodes_to_points(const NodeVectors& nodes, const Kokkos::View<int* [3]>& point_nodes,
                      const Kokkos::View<double* [3]>& point_shape, const PointVectors& points) {
   Kokkos::parallel_for(
       "rouleau::SurfaceInteraction::nodes_to_points", Kokkos::RangePolicy<ExecSpace>(0, points.extent(0)),

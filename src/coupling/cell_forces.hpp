@@ -22,9 +22,9 @@ namespace rouleau {
 // What the force stages write; each field names its one writer.
 struct CellForceState {
   using NodeVectors = CellPopulation::NodeVectors;
-  NodeVectors elastic;      // "neo-Hookean forces": CellPopulation::internal_forces() [pN]
-  NodeVectors interaction;  // "Morse forces" [pN]; empty without the interaction
-  NodeVectors wall;         // "wall repulsion" [pN]; empty without it
+  CellPopulation::ConstNodeVectors elastic;  // "neo-Hookean forces": CellPopulation::internal_forces() [pN]
+  NodeVectors interaction;                   // "Morse forces" [pN]; empty without the interaction
+  NodeVectors wall;                          // "wall repulsion" [pN]; empty without it
   // With energies asked: Σ_e V0 W(F_e) + E_A + E_V ("neo-Hookean forces") and the Morse
   // energy ("Morse forces"; 0 without the interaction) [pN·μm], this rank's share.
   bool has_energies = false;

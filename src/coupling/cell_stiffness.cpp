@@ -21,8 +21,9 @@ void displace(const NodeVectors& positions, const NodeVectors& base, const NodeV
 }
 }  // namespace
 
-void differenced_forces(const CellPopulation& population, const WallRepulsion* wall, const NodeVectors& positions,
-                        const NodeVectors& scratch, const NodeVectors& out, const Kokkos::View<const int*>& computed_nodes) {
+void differenced_forces(const CellPopulation& population, const WallRepulsion* wall,
+                        const CellStiffness::ConstNodeVectors& positions, const NodeVectors& scratch,
+                        const NodeVectors& out, const Kokkos::View<const int*>& computed_nodes) {
   population.internal_forces_at(positions, out);
   if (wall) {
     wall->compute_forces(positions, population.surface_area_weights(), scratch);
@@ -43,7 +44,7 @@ CellStiffness::CellStiffness(const int nodes, const RkpmCoupler& rkpm, ForceEval
   if (interaction_) interaction_change_ = NodeVectors("rouleau::CellStiffness::interaction_change", nodes);
 }
 
-void CellStiffness::linearize(const NodeVectors& positions, double dt) {
+void CellStiffness::linearize(const ConstNodeVectors& positions, double dt) {
   dt_ = dt;
   Kokkos::deep_copy(base_positions_, positions);
   forces_(base_positions_, base_forces_);

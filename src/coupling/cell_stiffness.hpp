@@ -44,12 +44,13 @@ namespace rouleau {
 // (CellPopulation::share_work), the share's: the wall's forces at the nodes n with
 // computed_nodes(n) = 1 alone (every node when `computed_nodes` is empty).
 void differenced_forces(const CellPopulation& population, const WallRepulsion* wall,
-                        const CellPopulation::NodeVectors& positions, const CellPopulation::NodeVectors& scratch,
+                        const CellPopulation::ConstNodeVectors& positions, const CellPopulation::NodeVectors& scratch,
                         const CellPopulation::NodeVectors& out, const Kokkos::View<const int*>& computed_nodes = {});
 
 class CellStiffness final : public LinearOperator {
  public:
   using NodeVectors = Kokkos::View<double* [3]>;
+  using ConstNodeVectors = Kokkos::View<const double* [3]>;
   // forces(positions, out): the position-dependent forces on the cell nodes [pN] at
   // `positions` that the operator differences (elastic, wall; not the interaction's),
   // written to out; it must not change the cells' state.
@@ -63,7 +64,7 @@ class CellStiffness final : public LinearOperator {
   // Linearizes about the positions x^n (copies them, evaluates the differenced forces there
   // and the interaction's pair stiffness) for a fluid solve over the step Δt [s]. The
   // differences displace the operator's own copy of the positions, never the cells'.
-  void linearize(const NodeVectors& positions, double dt);
+  void linearize(const ConstNodeVectors& positions, double dt);
   // The difference step h [μm] (the largest node displacement of a difference).
   static constexpr double difference_step = 1e-6;
 

@@ -61,7 +61,7 @@ double dot(const View& a, const OtherView& b) {
 
 // "(x, y, z)" of node `node` of a (node, 3) View (for an error message: copies the View
 // to the host).
-std::string node_vector_text(const CellPopulation::NodeVectors& vectors, const int node) {
+std::string node_vector_text(const CellPopulation::ConstNodeVectors& vectors, const int node) {
   auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), vectors);
   std::ostringstream text;
   text << "(" << host(node, 0) << ", " << host(node, 1) << ", " << host(node, 2) << ")";
@@ -70,7 +70,7 @@ std::string node_vector_text(const CellPopulation::NodeVectors& vectors, const i
 
 // Throws std::runtime_error naming the first node whose force is NaN or Inf, with its
 // elastic part and position.
-void check_finite_forces(const CellPopulation::NodeVectors& forces, const CellPopulation::NodeVectors& elastic,
+void check_finite_forces(const CellPopulation::NodeVectors& forces, const CellPopulation::ConstNodeVectors& elastic,
                          const CellPopulation& population) {
   const int node = first_non_finite_row(ExecSpace(), forces, "rouleau::ImmersedCoupling::check_forces");
   if (node < 0) return;
@@ -244,18 +244,14 @@ ImmersedCoupling::ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, C
                        }
                        return true;
                      }});
-  // 5. Reads state_.interpolated; writes the cells' positions and velocities,
-  //    state_.previous_velocities, state_.previous_dt, and the step's powers and speeds (the
-  //    power of the forces the fluid felt, on the fluid's side and on the cells': they agree,
-  //    interpolation and spreading being transposes of each other).
+  // 5. Reads state_.interpolated; writes the cells' positions and velocities (their one
+  //    writer in the step: CellPopulation::move), state_.previous_velocities,
+  //    state_.previous_dt, and the step's powers and speeds (the power of the forces the
+  //    fluid felt, on the fluid's side and on the cells': they agree, interpolation and
+  //    spreading being transposes of each other).
   stages_.push_back({move_stage, [this] {
-                       double largest_speed2 = 0.0;
-                       MoveCellsFunctor<NodeVectors> move{state_.interpolated,      population_.velocities(),
-                                                          state_.previous_velocities, population_.positions(),
-                                                          fluid_.scales().velocity, state_.dt};
-                       Kokkos::parallel_reduce("rouleau::ImmersedCoupling::move",
-                                               Kokkos::RangePolicy<ExecSpace>(0, population_.num_nodes()), move,
-                                               Kokkos::Max<double>(largest_speed2));
+                       const double largest_speed2 = population_.move(state_.interpolated, fluid_.scales().velocity,
+                                                                      state_.dt, state_.previous_velocities);
                        state_.previous_dt = state_.dt;
                        state_.finite = largest_speed2 < MoveCellsFunctor<NodeVectors>::non_finite_speed2;
                        state_.largest_cell_speed = std::sqrt(largest_speed2);

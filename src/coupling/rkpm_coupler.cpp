@@ -64,7 +64,7 @@ BasicRkpmCoupler<ExecSpace>::BasicRkpmCoupler(const FluidMesh& mesh, double supp
 }
 
 template <class ExecSpace>
-void BasicRkpmCoupler<ExecSpace>::fill_rows(const PointVectors& points, bool count_only) {
+void BasicRkpmCoupler<ExecSpace>::fill_rows(const Kokkos::View<const double* [3]>& points, bool count_only) {
   const RkpmSupports<typename ExecSpace::memory_space> supports{node_bins_, node_position_, node_support_};
   const int corrected = rkpm_shape_functions(ExecSpace(), supports, points, active_points_, counted_points_,
                                              always_correct_, count_only, offsets_, nodes_, shape_functions_);
@@ -72,7 +72,7 @@ void BasicRkpmCoupler<ExecSpace>::fill_rows(const PointVectors& points, bool cou
 }
 
 template <class ExecSpace>
-void BasicRkpmCoupler<ExecSpace>::update(const PointVectors& points) {
+void BasicRkpmCoupler<ExecSpace>::update(const Kokkos::View<const double* [3]>& points) {
   ProfilingRegion region("rouleau::RkpmCoupler::update");
   num_points_ = static_cast<int>(points.extent(0));
   if (active_points_.extent(0) > 0 && static_cast<int>(active_points_.extent(0)) != num_points_)

@@ -45,7 +45,7 @@ class BasicRkpmCoupler {
   // Finds the supports of `points` (point, 3) [μm] and computes their shape functions.
   // Throws PointsOutsideFluidError when a point has no fluid node in its support (it is
   // outside the fluid domain).
-  void update(const PointVectors& points);
+  void update(const Kokkos::View<const double* [3]>& points);
   // From the next update() on, rows only for the points p with active(p) ≠ 0 (a rank's
   // cells and those its Morse pairs reach): the others get empty rows, so
   // interpolation gives them zero and spreading takes nothing from them, and only the
@@ -96,7 +96,7 @@ class BasicRkpmCoupler {
   mutable Scatter spread_scatter_;
 
   // The shape functions' rows (count_only: their lengths) at `points`.
-  void fill_rows(const PointVectors& points, bool count_only);
+  void fill_rows(const Kokkos::View<const double* [3]>& points, bool count_only);
 };
 
 using RkpmCoupler = BasicRkpmCoupler<Kokkos::DefaultExecutionSpace>;

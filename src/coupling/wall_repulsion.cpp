@@ -52,18 +52,19 @@ WallRepulsion::WallRepulsion(const VesselProfile& profile, double pressure, doub
   wall_.range = range;
 }
 
-void WallRepulsion::compute_forces(const NodeVectors& positions, const Kokkos::View<double*>& area_weights,
+void WallRepulsion::compute_forces(const ConstNodeVectors& positions, const Kokkos::View<const double*>& area_weights,
                                    const NodeVectors& force) const {
   ProfilingRegion region("rouleau::WallRepulsion::compute_forces");
-  WallRepulsionFunctor<NodeVectors, Kokkos::View<double*>> functor{wall_, positions, area_weights, force};
+  WallRepulsionFunctor<NodeVectors, Kokkos::View<const double*>> functor{wall_, positions, area_weights, force};
   Kokkos::parallel_for("rouleau::WallRepulsion::forces",
                        Kokkos::RangePolicy<Kokkos::DefaultExecutionSpace, ForcesOnly>(0, positions.extent(0)), functor);
 }
 
-double WallRepulsion::compute_forces_and_energy(const NodeVectors& positions, const Kokkos::View<double*>& area_weights,
+double WallRepulsion::compute_forces_and_energy(const ConstNodeVectors& positions,
+                                                const Kokkos::View<const double*>& area_weights,
                                                 const NodeVectors& force) const {
   ProfilingRegion region("rouleau::WallRepulsion::compute_forces_and_energy");
-  WallRepulsionFunctor<NodeVectors, Kokkos::View<double*>> functor{wall_, positions, area_weights, force};
+  WallRepulsionFunctor<NodeVectors, Kokkos::View<const double*>> functor{wall_, positions, area_weights, force};
   double energy = 0.0;
   Kokkos::parallel_reduce("rouleau::WallRepulsion::forces_and_energy",
                           Kokkos::RangePolicy<Kokkos::DefaultExecutionSpace, ForcesAndEnergy>(0, positions.extent(0)),

@@ -11,6 +11,7 @@ namespace rouleau {
 class WallRepulsion {
  public:
   using NodeVectors = Kokkos::View<double* [3]>;
+  using ConstNodeVectors = Kokkos::View<const double* [3]>;
 
   // R(x) and R'(x) tabulated at steps of about L/intervals, the parts' junctions knots;
   // p_w [Pa], d0 [μm].
@@ -18,10 +19,10 @@ class WallRepulsion {
 
   // force(a) = f_a of every node from its position and reference surface area weight (the
   // coupled step's call: no reduction, no fence).
-  void compute_forces(const NodeVectors& positions, const Kokkos::View<double*>& area_weights,
+  void compute_forces(const ConstNodeVectors& positions, const Kokkos::View<const double*>& area_weights,
                       const NodeVectors& force) const;
   // The same, returning Σ E_a [pN·μm].
-  double compute_forces_and_energy(const NodeVectors& positions, const Kokkos::View<double*>& area_weights,
+  double compute_forces_and_energy(const ConstNodeVectors& positions, const Kokkos::View<const double*>& area_weights,
                                    const NodeVectors& force) const;
 
   const VesselWallRepulsion& kernel() const { return wall_; }

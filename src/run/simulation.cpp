@@ -131,7 +131,7 @@ void Simulation::set_cell_positions(const Kokkos::View<const double* [3], Kokkos
   auto mirror = Kokkos::create_mirror_view(x);
   for (std::size_t n = 0; n < x.extent(0); ++n)
     for (int d = 0; d < 3; ++d) mirror(n, d) = positions(n, d);
-  Kokkos::deep_copy(x, mirror);
+  cells_.population->set_positions(mirror);
   cell_forces_->mark_stale();
 }
 

@@ -6,7 +6,8 @@
 #   2. the work–precision studies (scripts/work_precision.sh; bench/work_precision_cells);
 #   3. the stability map (bench/stability.py);
 #   4. the scaling study (bench/scaling.py);
-#   5. each paper scene with and without its skips (bench/scene_skips.py);
+#   5. each paper scene's time step against the previous commit's (bench/scene_steps.py),
+#      and with and without its skips (bench/scene_skips.py);
 #   6. MPI: the operator's scaling and model (bench/mpi_scaling.py), and whole
 #      scenes on 2 ranks against 1 (bench/scene_skips.py under mpiexec: bench/mpi_scenes_*.csv).
 # The CSVs and figures land under bench/, where the README reads them. Hours in all
@@ -41,7 +42,10 @@ for step in "${steps[@]}"; do
       ;;
     stability) /usr/bin/python3 bench/stability.py --rouleau "$build/rouleau" --out bench/stability.csv ;;
     scaling) /usr/bin/python3 bench/scaling.py --rouleau "$build/rouleau" --threads "$all_threads" --out bench/scaling.csv ;;
-    scenes) /usr/bin/python3 bench/scene_skips.py --rouleau "$build/rouleau" --threads "$all_threads" ;;
+    scenes)
+      /usr/bin/python3 bench/scene_steps.py --rouleau "$build/rouleau"
+      /usr/bin/python3 bench/scene_skips.py --rouleau "$build/rouleau" --threads "$all_threads"
+      ;;
     mpi)
       /usr/bin/python3 bench/mpi_scaling.py
       # One thread per rank against one rank on one thread; point-block Jacobi is the same

@@ -139,13 +139,20 @@ namespace {
 const std::vector<const char*> coupling_stages{
     ImmersedCoupling::elastic_stage, ImmersedCoupling::interaction_stage, ImmersedCoupling::wall_stage,
     ImmersedCoupling::inertia_stage,
-    ImmersedCoupling::spread_stage,  ImmersedCoupling::fluid_stage,       ImmersedCoupling::interpolate_stage,
-    ImmersedCoupling::move_stage};
+    ImmersedCoupling::spread_stage,  ImmersedCoupling::stiffness_stage,   ImmersedCoupling::fluid_stage,
+    ImmersedCoupling::interpolate_stage, ImmersedCoupling::move_stage};
 
-// "RKPM spread" → "time_rkpm_spread_s"
+// "RKPM spread" → "time_rkpm_spread_s", "cell stiffness (semi-implicit)" →
+// "time_cell_stiffness_semi_implicit_s": letters and digits, one '_' for each run of others.
 std::string time_column(const std::string& stage) {
   std::string name = "time_";
-  for (char c : stage) name += std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::tolower(c)) : '_';
+  for (char c : stage) {
+    if (std::isalnum(static_cast<unsigned char>(c)))
+      name += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    else if (name.back() != '_')
+      name += '_';
+  }
+  if (name.back() == '_') name.pop_back();
   return name + "_s";
 }
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include "util/profiling_region.hpp"
 #include "util/view_transfer.hpp"
+#include "solver/block_jacobi_smoother.hpp"
 #include "solver/ilu0_preconditioner.hpp"
 #include "host_algebra/sparse_direct_solver.hpp"
 
@@ -30,8 +31,8 @@ struct AggregationMultigrid::Level {
   BlockMatrixGraph graph;
   DoubleView values;
   IntView block_row;  // row node of each block (neighbour index)
-  std::unique_ptr<Ilu0Preconditioner> smoother;
-  DoubleView rhs, solution, residual;
+  std::unique_ptr<MatrixPreconditioner> smoother;
+  DoubleView rhs, solution, residual, correction;
   // Towards the next, coarser level (empty on the coarsest):
   IntView aggregate_of;                          // node -> coarse node
   IntView member_offsets, members;               // coarse node -> its nodes
@@ -78,6 +79,7 @@ AggregationMultigrid::AggregationMultigrid(const BlockMatrixGraph& fine_graph, c
     level->block_row = device_copy(block_rows(offsets), "rouleau::AggregationMultigrid::block_row");
     const std::size_t rows = 4 * static_cast<std::size_t>(nodes);
     level->residual = DoubleView("rouleau::AggregationMultigrid::residual", rows);
+    level->correction = DoubleView("rouleau::AggregationMultigrid::correction", rows);
     if (!levels_.empty()) {  // the finest level uses the fine values and apply()'s r and z
       level->rhs = DoubleView("rouleau::AggregationMultigrid::rhs", rows);
       level->solution = DoubleView("rouleau::AggregationMultigrid::solution", rows);
@@ -124,7 +126,11 @@ AggregationMultigrid::AggregationMultigrid(const BlockMatrixGraph& fine_graph, c
       level->members = device_copy(members, "rouleau::AggregationMultigrid::members");
       level->contribution_offsets = device_copy(count, "rouleau::AggregationMultigrid::contribution_offsets");
       level->contributions = device_copy(contributions, "rouleau::AggregationMultigrid::contributions");
-      level->smoother = std::make_unique<Ilu0Preconditioner>(graph.row_map, graph.entries);
+      if (settings_.smoother == MultigridSmoother::ilu0)
+        level->smoother = std::make_unique<Ilu0Preconditioner>(graph.row_map, graph.entries);
+      else
+        level->smoother =
+            std::make_unique<BlockJacobiSmoother>(graph, settings_.jacobi_sweeps, settings_.jacobi_damping);
       levels_.push_back(std::move(level));
 
       graph = make_block_matrix_graph(coarse_offsets, coarse_neighbors);
@@ -251,8 +257,8 @@ void AggregationMultigrid::cycle(int l, const Kokkos::View<const double*>& rhs,
   }
   // Post-smoothing: x += S⁻¹ (b − A x).
   crs_residual(level.graph, level.values, rhs, solution, level.residual);
-  level.smoother->apply(level.residual, level.residual);
-  add(level.residual, solution);
+  level.smoother->apply(level.residual, level.correction);
+  add(level.correction, solution);
 }
 
 void AggregationMultigrid::apply(const Kokkos::View<const double*>& r, const Kokkos::View<double*>& z) const {

@@ -34,11 +34,19 @@
 
 namespace rouleau {
 
+// The smoother S of every level but the coarsest: ILU(0) (level-scheduled triangular
+// solves) or damped point-block Jacobi sweeps (solver/block_jacobi_smoother.hpp: one
+// fully parallel pass per sweep).
+enum class MultigridSmoother { ilu0, block_jacobi };
+
 struct AggregationMultigridSettings {
   int pairwise_passes = 3;                // aggregates of up to 2³ nodes per level
   int coarsest_nodes = 200;               // solved by sparse LU
   int max_levels = 12;
   int cycle_index = 2;                    // coarse corrections per visit: 1 V-cycle, 2 W-cycle
+  MultigridSmoother smoother = MultigridSmoother::ilu0;
+  int jacobi_sweeps = 2;                  // block_jacobi: sweeps per smoothing
+  double jacobi_damping = 0.7;            // block_jacobi: ω
 };
 
 class AggregationMultigrid final : public Preconditioner {

@@ -14,6 +14,8 @@ class BlockJacobi final : public Preconditioner {
   // Returns the number of blocks that were singular (those are replaced by identity).
   int factor(const Kokkos::View<const double*>& blocks);
   void apply(const Kokkos::View<const double*>& r, const Kokkos::View<double*>& z) const override;
+  // inverse_blocks()(16·i + 4r + c) = D_i⁻¹(r, c), after factor().
+  const Kokkos::View<double*>& inverse_blocks() const { return inverse_blocks_; }
 
  private:
   int num_nodes_;

@@ -13,7 +13,7 @@
 
 namespace rouleau {
 
-class Ilu0Preconditioner final : public Preconditioner {
+class Ilu0Preconditioner final : public MatrixPreconditioner {
  public:
   using ExecSpace = Kokkos::DefaultExecutionSpace;
   using MemorySpace = ExecSpace::memory_space;
@@ -27,7 +27,7 @@ class Ilu0Preconditioner final : public Preconditioner {
   Ilu0Preconditioner& operator=(const Ilu0Preconditioner&) = delete;
 
   // The numeric factorization of the values on the graph.
-  void factor(const Kokkos::View<double*>& values);
+  void factor(const Kokkos::View<double*>& values) override;
   void apply(const Kokkos::View<const double*>& r, const Kokkos::View<double*>& z) const override;
   // Rows in the widest level of the factorization's level schedule: its numeric phase
   // holds a scratch array of that many rows times the matrix's rows (KokkosKernels' spiluk).

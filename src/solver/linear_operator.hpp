@@ -17,6 +17,13 @@ class Preconditioner {
   virtual void apply(const Kokkos::View<const double*>& r, const Kokkos::View<double*>& z) const = 0;
 };
 
+// A preconditioner made from an assembled matrix's values (on a graph it was built for):
+// factor() once per matrix, then apply() any number of times. The multigrid's smoothers.
+class MatrixPreconditioner : public Preconditioner {
+ public:
+  virtual void factor(const Kokkos::View<double*>& values) = 0;
+};
+
 // M = I.
 class IdentityPreconditioner final : public Preconditioner {
  public:

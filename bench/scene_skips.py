@@ -36,18 +36,11 @@ import sys
 import tempfile
 import time
 
-from run_log import stage_times
+from run_log import case_time_step, stage_times
 
 CASES = ["aggregation", "stack_shear", "twelve_cells", "contraction", "capillary"]
-TIME_STEP = re.compile(r"^dt_s\s*=\s*([0-9.eE+-]+)", re.M)
 
 
-def case_time_step(case_file):
-    with open(case_file) as f:
-        match = TIME_STEP.search(f.read())
-    if not match:
-        sys.exit(f"scene_skips.py: {case_file}: no time.dt_s")
-    return float(match.group(1))
 
 
 def last_diagnostics(folder):

@@ -34,7 +34,7 @@ import subprocess
 import sys
 import tempfile
 
-from run_log import stage_times
+from run_log import case_time_step, stage_times
 
 CASES = ["aggregation", "stack_shear", "twelve_cells", "contraction", "capillary"]
 # Targets, 2 threads: seconds per step at the case's resolution and time step, one GMRES
@@ -45,7 +45,6 @@ TARGET_OVERHEAD_RATIO = 5.0
 TARGET_BYTES_PER_UNKNOWN = 1024.0
 # Stages that are not part of a time step.
 NOT_STEP_STAGES = {"mesh", "cell meshes", "fluid setup", "coupling setup", "cell diagnostics", "output", "checkpoint"}
-TIME_STEP = re.compile(r"^dt_s\s*=\s*([0-9.eE+-]+)", re.M)
 UNKNOWNS = re.compile(r"^fluid mesh: .*?(\d+) unknowns", re.M)
 PEAK_MEMORY = re.compile(r"^peak memory: ([0-9.]+) MiB", re.M)
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -61,12 +60,6 @@ def fail(message):
     sys.exit(f"scene_steps.py: {message}")
 
 
-def case_time_step(case_file):
-    with open(case_file) as f:
-        match = TIME_STEP.search(f.read())
-    if not match:
-        fail(f"{case_file}: no time.dt_s")
-    return float(match.group(1))
 
 
 def build_baseline(revision):

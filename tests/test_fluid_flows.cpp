@@ -308,9 +308,10 @@ TEST(FluidFlows, MultigridIterationsBarelyGrowWithTheMesh) {
   // The Stokes manufactured problem at 8³ and 16³ with the aggregation multigrid
   // (W-cycle): the GMRES iterations may grow by at most 1.5× per halving of h,
   // on hexahedra and on tetrahedra, and it reaches ILU(0)'s solution. ILU(0)
-  // alone nearly doubles its count (printed for comparison). Measured: hexahedra 12, 15
-  // (ILU(0) 22, 41), tetrahedra 15, 19 (ILU(0) 30, 63); at 24³ multigrid needs 19 and 25,
-  // ILU(0) 65 and 103 (2.5 min, so not in the quick tier).
+  // alone nearly doubles its count (printed for comparison). Measured with the default
+  // block-Jacobi smoothing: hexahedra 14, 17 (ILU(0) 22, 41), tetrahedra 16, 22 (ILU(0)
+  // 30, 63); with ILU(0) smoothing on aggregates of 8 the multigrid needed 12, 15 and 15,
+  // 19. At 24³ ILU(0) alone needs 65 and 103 (2.5 min, so not in the quick tier).
   for (const FluidElementType element : {FluidElementType::hexahedron8, FluidElementType::tetrahedron4}) {
     const char* name = element == FluidElementType::hexahedron8 ? "hexahedra" : "tetrahedra";
     int first = 0;

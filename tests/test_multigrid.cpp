@@ -19,6 +19,7 @@
 #include "host_algebra/sparse_direct_solver.hpp"
 #include "mesh/fluid_mesh.hpp"
 #include "solver/aggregation_multigrid.hpp"
+#include "solver/block_jacobi_smoother.hpp"
 
 namespace rouleau {
 namespace {
@@ -233,6 +234,7 @@ Vec dense_solve(Dense A, Vec b) {
 
 struct ReferenceLevel {
   Dense A{0, 0}, F{0, 0}, P{0, 0};  // P is empty on the coarsest level
+  double jacobi_damping = 0.0;      // the block-Jacobi smoother's ω
 };
 
 // S⁻¹ b of a level's smoother.
@@ -257,6 +259,34 @@ Vec block_jacobi_smoothing(const Dense& A, const Vec& b, int sweeps, double damp
     }
   }
   return x;
+}
+
+// D⁻¹ A x, D the 4×4 diagonal blocks of A.
+Vec block_diagonal_solve_of_product(const Dense& A, const Vec& x) {
+  const Vec product = multiply(A, x);
+  Vec result(x.size());
+  for (int node = 0; node < A.rows / 4; ++node) {
+    Dense block(4, 4);
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) block(i, j) = A(4 * node + i, 4 * node + j);
+    const Vec part = dense_solve(block, Vec(product.begin() + 4 * node, product.begin() + 4 * node + 4));
+    std::copy(part.begin(), part.end(), result.begin() + 4 * node);
+  }
+  return result;
+}
+
+// ρ(D⁻¹A) by power iteration from the smoother's start vector (entries 1/2 + hash/2¹⁶).
+double reference_spectral_radius(const Dense& A, int iterations) {
+  Vec x(A.rows);
+  for (int i = 0; i < A.rows; ++i) x[i] = 0.5 + static_cast<double>(((i + 1u) * 2654435761u) >> 16) / 65536.0;
+  double radius = 0.0;
+  for (int k = 0; k < iterations; ++k) {
+    const double length = norm(x);
+    for (double& entry : x) entry /= length;
+    x = block_diagonal_solve_of_product(A, x);
+    radius = norm(x);
+  }
+  return radius;
 }
 
 // x = S⁻¹ b; twice: x += P cycle(Pᵀ (b − A x)); x += S⁻¹ (b − A x). Coarsest: exact.
@@ -330,6 +360,14 @@ void expect_cycle_matches_the_dense_reference(AggregationMultigridSettings setti
     EXPECT_LT(difference, 1e-12 * largest) << "level " << l + 1;
     reference[l + 1].A = galerkin;
   }
+  // The block-Jacobi damping ω = c / ρ(D⁻¹A), ρ from the same power iteration in serial.
+  for (int l = 0; l + 1 < multigrid.num_levels(); ++l) {
+    reference[l].jacobi_damping = multigrid.level_jacobi_damping(l);
+    if (settings.smoother != MultigridSmoother::block_jacobi) continue;
+    const double radius = reference_spectral_radius(reference[l].A, BlockJacobiSmoother::power_iterations);
+    std::printf("level %d: rho(D^-1 A) estimated %.4f, damping %.4f\n", l, radius, reference[l].jacobi_damping);
+    EXPECT_NEAR(reference[l].jacobi_damping, settings.jacobi_damping_times_radius / radius, 1e-10) << "level " << l;
+  }
 
   const int n = problem.graph.num_rows;
   Kokkos::View<double*> r("r", n), z("z", n);
@@ -344,21 +382,25 @@ void expect_cycle_matches_the_dense_reference(AggregationMultigridSettings setti
   EXPECT_LT(error, 1e-10);
 }
 
-TEST(AggregationMultigrid, GalerkinProductsAndWCycleMatchADenseReference) {
-  expect_cycle_matches_the_dense_reference({}, ilu0_smoothing);
+TEST(AggregationMultigrid, GalerkinProductsAndIlu0SmoothedWCycleMatchADenseReference) {
+  // ILU(0) smoothing on aggregates of up to 8 nodes (three pairwise passes).
+  AggregationMultigridSettings settings;
+  settings.smoother = MultigridSmoother::ilu0;
+  settings.pairwise_passes = 3;
+  expect_cycle_matches_the_dense_reference(settings, ilu0_smoothing);
 }
 
 TEST(AggregationMultigrid, BlockJacobiSmoothedWCycleMatchesADenseReference) {
-  // One, two and three sweeps: the sweeps alternate between two buffers, so odd and even
-  // counts take different paths to the result.
+  // The default hierarchy (aggregates of up to 4 nodes) with one, two and three sweeps:
+  // the sweeps alternate between two buffers, so odd and even counts take different paths
+  // to the result. Each level's damping is checked against a serial power iteration.
   for (int sweeps : {1, 2, 3}) {
     AggregationMultigridSettings settings;
     settings.smoother = MultigridSmoother::block_jacobi;
     settings.jacobi_sweeps = sweeps;
-    settings.jacobi_damping = 0.6;
     SCOPED_TRACE("sweeps " + std::to_string(sweeps));
     expect_cycle_matches_the_dense_reference(settings, [sweeps](const ReferenceLevel& level, const Vec& b) {
-      return block_jacobi_smoothing(level.A, b, sweeps, 0.6);
+      return block_jacobi_smoothing(level.A, b, sweeps, level.jacobi_damping);
     });
   }
 }

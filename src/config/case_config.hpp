@@ -10,6 +10,7 @@
 
 #include "geometry/cell_geometry.hpp"
 #include "geometry/vessel_mesh.hpp"
+#include "solver/multigrid_smoother.hpp"
 
 namespace rouleau {
 
@@ -104,6 +105,9 @@ struct SolverConfig {
   // Pareto front from about 2e4 unknowns on, where every paper scene lies, and its 2–5×
   // fewer GMRES iterations save the semi-implicit cells' force evaluation per iteration.
   PreconditionerType preconditioner = PreconditionerType::multigrid;
+  // The multigrid's smoother: block-Jacobi sweeps (fully parallel, 2.5–6.5× faster fluid
+  // solves than ILU(0) on the paper scenes) or ILU(0) (fewer GMRES iterations, launch-bound).
+  MultigridSmoother multigrid_smoother = MultigridSmoother::block_jacobi;
 };
 
 // Scales of the nondimensional solver variables; 0 = derive from the case.

@@ -34,6 +34,8 @@ inline constexpr std::array<NamedChoice<PreconditionerType>, 4> preconditioner_n
      {PreconditionerType::multigrid, "multigrid"},
      {PreconditionerType::block_jacobi, "block_jacobi"},
      {PreconditionerType::none, "none"}}};
+inline constexpr std::array<NamedChoice<MultigridSmoother>, 2> multigrid_smoother_names{
+    {{MultigridSmoother::block_jacobi, "block_jacobi"}, {MultigridSmoother::ilu0, "ilu0"}}};
 inline constexpr std::array<NamedChoice<InteractionQuadrature>, 4> interaction_quadrature_names{
     {{InteractionQuadrature::automatic, "auto"},
      {InteractionQuadrature::nodes, "nodes"},
@@ -49,6 +51,7 @@ constexpr const auto& named_choices(TimeMode) { return time_mode_names; }
 constexpr const auto& named_choices(TimeScheme) { return time_scheme_names; }
 constexpr const auto& named_choices(StokesChoice) { return stokes_choice_names; }
 constexpr const auto& named_choices(PreconditionerType) { return preconditioner_names; }
+constexpr const auto& named_choices(MultigridSmoother) { return multigrid_smoother_names; }
 constexpr const auto& named_choices(InteractionQuadrature) { return interaction_quadrature_names; }
 constexpr const auto& named_choices(CouplingScheme) { return coupling_scheme_names; }
 constexpr const auto& named_choices(CellShape) { return cell_shape_names; }

@@ -115,6 +115,8 @@ std::vector<CaseKey> make_case_keys() {
       {"solver", "gmres_max_iterations", Kind::integer, "", "3000", count, {}, "GMRES iterations per solve at most"},
       {"solver", "preconditioner", Kind::choice, "", "\"multigrid\"", any, spellings<PreconditionerType>(),
        "the fluid solve's preconditioner"},
+      {"solver", "multigrid_smoother", Kind::choice, "", "\"block_jacobi\"", any, spellings<MultigridSmoother>(),
+       "the multigrid's smoother: block_jacobi (fully parallel sweeps) or ilu0 (triangular solves)"},
 
       {"scales", "length_um", Kind::number, "μm", "0", non_negative, {},
        "the length scale of the nondimensional solve; 0 = derived from the case"},

@@ -59,6 +59,7 @@ void read_solver(const TableReader& root, SolverConfig& solver) {
   assign(solver.gmres_rtol, section.number("gmres_rtol"));
   assign(solver.gmres_max_iterations, section.integer("gmres_max_iterations"));
   assign(solver.preconditioner, section.choice<PreconditionerType>("preconditioner"));
+  assign(solver.multigrid_smoother, section.choice<MultigridSmoother>("multigrid_smoother"));
 }
 
 void read_scales(const TableReader& root, ScalesConfig& scales) {

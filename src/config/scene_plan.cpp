@@ -51,8 +51,11 @@ ScenePlan plan_scene(const CaseConfig& config, const DerivedQuantities& derived)
       preconditioner = std::string("ILU(0) of the assembled Jacobian (KokkosKernels spiluk/sptrsv), ") + when;
       break;
     case PreconditionerType::multigrid:
-      preconditioner = std::string("aggregation multigrid W-cycle (pairwise aggregates, ILU(0) smoothing, sparse LU "
-                                   "on the coarsest level) of the assembled Jacobian, ") + when;
+      preconditioner = std::string("aggregation multigrid W-cycle (pairwise aggregates of up to 4 nodes, ") +
+                       (config.solver.multigrid_smoother == MultigridSmoother::block_jacobi
+                            ? "3 damped block-Jacobi sweeps"
+                            : "ILU(0)") +
+                       " smoothing, sparse LU on the coarsest level) of the assembled Jacobian, " + when;
       break;
     case PreconditionerType::block_jacobi:
       preconditioner = std::string("point-block Jacobi (4x4 node blocks), ") + when;

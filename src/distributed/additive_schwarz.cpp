@@ -62,7 +62,7 @@ WeightedGraph owned_strength(const FluidMesh& local_mesh, const int owned_nodes)
 
 AdditiveSchwarz::AdditiveSchwarz(const Communicator& communicator, const ElementPartition& partition,
                                  const FluidMesh& local_mesh, const std::vector<int>& dirichlet,
-                                 const SubdomainSolver solver)
+                                 const SubdomainSolver solver, const AggregationMultigridSettings& multigrid)
     : owned_nodes_(partition.num_owned_nodes),
       local_graph_(build_fluid_matrix_graph(local_mesh)),
       block_halo_(communicator, partition, 16),
@@ -105,7 +105,8 @@ AdditiveSchwarz::AdditiveSchwarz(const Communicator& communicator, const Element
   if (solver == SubdomainSolver::ilu0)
     ilu_ = std::make_unique<Ilu0Preconditioner>(owned_graph_.row_map, owned_graph_.entries);
   else
-    multigrid_ = std::make_unique<AggregationMultigrid>(owned_graph_, owned_strength(local_mesh, owned_nodes_));
+    multigrid_ =
+        std::make_unique<AggregationMultigrid>(owned_graph_, owned_strength(local_mesh, owned_nodes_), multigrid);
 }
 
 AdditiveSchwarz::~AdditiveSchwarz() = default;

@@ -32,7 +32,8 @@ class AdditiveSchwarz final : public FluidPreconditioner {
   // unknowns (local indices, owned_local_unknowns). The multigrid aggregates the owned
   // nodes by their geometric strength within the rank (fluid_node_strength).
   AdditiveSchwarz(const Communicator& communicator, const ElementPartition& partition, const FluidMesh& local_mesh,
-                  const std::vector<int>& dirichlet, SubdomainSolver solver = SubdomainSolver::ilu0);
+                  const std::vector<int>& dirichlet, SubdomainSolver solver = SubdomainSolver::ilu0,
+                  const AggregationMultigridSettings& multigrid = {});
   ~AdditiveSchwarz() override;
   // The numeric factorization of the Jacobian of `local` (the rank's operator, without
   // Dirichlet rows, completing its element sums across ranks) at the rank's local `state`.

@@ -216,8 +216,8 @@ std::vector<int> FluidDistribution::rank_holding(const std::vector<std::array<do
 }
 
 std::unique_ptr<FluidPreconditioner> FluidDistribution::make_preconditioner(
-    const PreconditionerType type, const std::vector<int>& owned_dirichlet) const {
-  switch (type) {
+    const SolverConfig& solver, const std::vector<int>& owned_dirichlet) const {
+  switch (solver.preconditioner) {
     case PreconditionerType::block_jacobi:
       return std::make_unique<DistributedBlockJacobi>(communicator_, partition_, owned_dirichlet);
     case PreconditionerType::ilu0:
@@ -225,10 +225,12 @@ std::unique_ptr<FluidPreconditioner> FluidDistribution::make_preconditioner(
                                                SubdomainSolver::ilu0);
     case PreconditionerType::multigrid:
       return std::make_unique<AdditiveSchwarz>(communicator_, partition_, local_mesh_, owned_dirichlet,
-                                               SubdomainSolver::multigrid);
+                                               SubdomainSolver::multigrid, multigrid_settings(solver));
     case PreconditionerType::none: break;
   }
-  return make_fluid_preconditioner(PreconditionerType::none, local_mesh_);
+  SolverConfig none = solver;
+  none.preconditioner = PreconditionerType::none;
+  return make_fluid_preconditioner(none, local_mesh_);
 }
 
 }  // namespace rouleau

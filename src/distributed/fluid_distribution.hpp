@@ -81,7 +81,7 @@ class FluidDistribution final : public FluidExchange {
 
   // Point-block Jacobi across the ranks (the same iterates as one rank), or additive
   // Schwarz with ILU(0) or the multigrid per rank.
-  std::unique_ptr<FluidPreconditioner> make_preconditioner(PreconditionerType type,
+  std::unique_ptr<FluidPreconditioner> make_preconditioner(const SolverConfig& solver,
                                                            const std::vector<int>& owned_dirichlet) const override;
 
   // The rank holding each point [μm] (a cell's centroid): the owner of the fluid

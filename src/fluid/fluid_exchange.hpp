@@ -55,9 +55,9 @@ class FluidExchange {
   // The union of every rank's `nodes` (global dof nodes), ascending, the same on every rank.
   virtual Kokkos::View<const int*> nodes_of_any_rank(const Kokkos::View<const int*>& nodes) const = 0;
 
-  // The preconditioner of `type` for the rank's part of the mesh; `owned_dirichlet`: the
-  // constrained unknowns among the owned ones (local indices).
-  virtual std::unique_ptr<FluidPreconditioner> make_preconditioner(PreconditionerType type,
+  // The preconditioner that `solver` names for the rank's part of the mesh;
+  // `owned_dirichlet`: the constrained unknowns among the owned ones (local indices).
+  virtual std::unique_ptr<FluidPreconditioner> make_preconditioner(const SolverConfig& solver,
                                                                    const std::vector<int>& owned_dirichlet) const = 0;
 };
 
@@ -81,9 +81,9 @@ class SingleRankExchange final : public FluidExchange {
   }
   void sum_at_nodes(const Vector&, const Kokkos::View<const int*>&) const override {}
   Kokkos::View<const int*> nodes_of_any_rank(const Kokkos::View<const int*>& nodes) const override { return nodes; }
-  std::unique_ptr<FluidPreconditioner> make_preconditioner(PreconditionerType type,
+  std::unique_ptr<FluidPreconditioner> make_preconditioner(const SolverConfig& solver,
                                                            const std::vector<int>&) const override {
-    return make_fluid_preconditioner(type, mesh_);
+    return make_fluid_preconditioner(solver, mesh_);
   }
 
  private:

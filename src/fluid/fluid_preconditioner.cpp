@@ -62,8 +62,8 @@ class AssembledIlu0 final : public FluidPreconditioner, private AssembledJacobia
 // geometric strength (fluid_node_strength).
 class AssembledMultigrid final : public FluidPreconditioner, private AssembledJacobian {
  public:
-  explicit AssembledMultigrid(const FluidMesh& mesh)
-      : AssembledJacobian(mesh), multigrid_(graph_, fluid_node_strength(mesh)) {}
+  AssembledMultigrid(const FluidMesh& mesh, const AggregationMultigridSettings& settings)
+      : AssembledJacobian(mesh), multigrid_(graph_, fluid_node_strength(mesh), settings) {}
   void factor(const FluidOperator& op, const ConstVector& state) override {
     assemble(op, state);
     multigrid_.set_values(values_);
@@ -76,11 +76,17 @@ class AssembledMultigrid final : public FluidPreconditioner, private AssembledJa
 
 }  // namespace
 
-std::unique_ptr<FluidPreconditioner> make_fluid_preconditioner(PreconditionerType type, const FluidMesh& mesh) {
-  switch (type) {
+AggregationMultigridSettings multigrid_settings(const SolverConfig& solver) {
+  AggregationMultigridSettings settings;
+  settings.smoother = solver.multigrid_smoother;
+  return settings;
+}
+
+std::unique_ptr<FluidPreconditioner> make_fluid_preconditioner(const SolverConfig& solver, const FluidMesh& mesh) {
+  switch (solver.preconditioner) {
     case PreconditionerType::block_jacobi: return std::make_unique<PointBlockJacobi>(mesh);
     case PreconditionerType::ilu0: return std::make_unique<AssembledIlu0>(mesh);
-    case PreconditionerType::multigrid: return std::make_unique<AssembledMultigrid>(mesh);
+    case PreconditionerType::multigrid: return std::make_unique<AssembledMultigrid>(mesh, multigrid_settings(solver));
     case PreconditionerType::none: break;
   }
   return std::make_unique<NoPreconditioner>();

@@ -9,6 +9,7 @@
 
 #include "config/case_config.hpp"
 #include "fluid/fluid_operator.hpp"
+#include "solver/aggregation_multigrid.hpp"
 #include "solver/linear_operator.hpp"
 
 namespace rouleau {
@@ -19,7 +20,11 @@ class FluidPreconditioner : public Preconditioner {
   virtual void factor(const FluidOperator& op, const ConstVector& state) = 0;
 };
 
-// One rank's preconditioner of `type` for the fluid on `mesh`.
-std::unique_ptr<FluidPreconditioner> make_fluid_preconditioner(PreconditionerType type, const FluidMesh& mesh);
+// The aggregation multigrid's settings that `solver` chooses (its smoother).
+AggregationMultigridSettings multigrid_settings(const SolverConfig& solver);
+
+// One rank's preconditioner that `solver` names (solver.preconditioner, and the multigrid's
+// smoother) for the fluid on `mesh`.
+std::unique_ptr<FluidPreconditioner> make_fluid_preconditioner(const SolverConfig& solver, const FluidMesh& mesh);
 
 }  // namespace rouleau

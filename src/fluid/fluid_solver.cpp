@@ -177,7 +177,7 @@ FluidSolver::FluidSolver(const FluidMesh& mesh, const FluidConfig& fluid,
     lifted_action_ = Vector("rouleau::FluidSolver::lifted_action", n);
   }
   preconditioner_ = exchange_->make_preconditioner(
-      settings_.preconditioner, owned_dirichlet(boundary_.dirichlet_dofs, exchange_->num_owned_unknowns()));
+      settings_, owned_dirichlet(boundary_.dirichlet_dofs, exchange_->num_owned_unknowns()));
   operator_.impose_dirichlet(state_);
   set_uniform_body_force(fluid.body_force);
 }

@@ -130,7 +130,7 @@ AggregationMultigrid::AggregationMultigrid(const BlockMatrixGraph& fine_graph, c
         level->smoother = std::make_unique<Ilu0Preconditioner>(graph.row_map, graph.entries);
       else
         level->smoother =
-            std::make_unique<BlockJacobiSmoother>(graph, settings_.jacobi_sweeps, settings_.jacobi_damping);
+            std::make_unique<BlockJacobiSmoother>(graph, settings_.jacobi_sweeps, settings_.jacobi_damping_times_radius);
       levels_.push_back(std::move(level));
 
       graph = make_block_matrix_graph(coarse_offsets, coarse_neighbors);
@@ -287,6 +287,11 @@ std::vector<int> AggregationMultigrid::level_aggregates(int l) const {
   const IntView& aggregate_of = levels_.at(l)->aggregate_of;
   auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), aggregate_of);
   return std::vector<int>(host.data(), host.data() + host.extent(0));
+}
+
+double AggregationMultigrid::level_jacobi_damping(const int l) const {
+  const auto* jacobi = dynamic_cast<const BlockJacobiSmoother*>(levels_.at(l)->smoother.get());
+  return jacobi ? jacobi->damping() : 0.0;
 }
 
 std::string AggregationMultigrid::describe() const {

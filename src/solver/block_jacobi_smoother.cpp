@@ -1,5 +1,6 @@
 #include "solver/block_jacobi_smoother.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -34,19 +35,20 @@ void gather_diagonal_blocks(const BlockMatrixGraph& graph, const DoubleView& val
       });
 }
 
-// next = z + ω D⁻¹ (r − A z), node by node (z empty: the first sweep from z = 0).
+// next = z + ω D⁻¹ (r − A z), node by node (z empty: the first sweep from z = 0; r empty:
+// r = 0, for the power iteration).
 void sweep(const BlockMatrixGraph& graph, const DoubleView& values, const DoubleView& inverse, const double damping,
            const ConstView& r, const ConstView& z, const DoubleView& next) {
   const auto row_map = graph.row_map;
   const auto entries = graph.entries;
-  const bool from_zero = z.extent(0) == 0;
+  const bool from_zero = z.extent(0) == 0, no_rhs = r.extent(0) == 0;
   Kokkos::parallel_for(
       "rouleau::BlockJacobiSmoother::sweep", Kokkos::RangePolicy<ExecSpace>(0, graph.num_rows / 4),
       KOKKOS_LAMBDA(const int A) {
         double residual[4];
         for (int i = 0; i < 4; ++i) {
           const int row = 4 * A + i;
-          double sum = r(row);
+          double sum = no_rhs ? 0.0 : r(row);
           if (!from_zero)
             for (std::size_t k = row_map(row); k < row_map(row + 1); ++k) sum -= values(k) * z(entries(k));
           residual[i] = sum;
@@ -58,24 +60,65 @@ void sweep(const BlockMatrixGraph& graph, const DoubleView& values, const Double
         }
       });
 }
+
+// ρ(D⁻¹A) by power iteration: x_0 a fixed vector of entries in [1/2, 3/2],
+//   x_{k+1} = D⁻¹A x_k / |D⁻¹A x_k|,   ρ ≈ |D⁻¹A x_k| (|x_k| = 1),
+// with D⁻¹A x = x − y for the sweep y = x + D⁻¹(0 − A x) (ω = 1, r = 0).
+double estimate_spectral_radius(const BlockMatrixGraph& graph, const DoubleView& values, const DoubleView& inverse,
+                                const DoubleView& x, const DoubleView& y, const int iterations) {
+  const int n = graph.num_rows;
+  Kokkos::parallel_for(
+      "rouleau::BlockJacobiSmoother::power_start", Kokkos::RangePolicy<ExecSpace>(0, n), KOKKOS_LAMBDA(const int i) {
+        const unsigned hash = (static_cast<unsigned>(i) + 1u) * 2654435761u;
+        x(i) = 0.5 + static_cast<double>(hash >> 16) / 65536.0;
+      });
+  double squared = 0.0;
+  Kokkos::parallel_reduce(
+      "rouleau::BlockJacobiSmoother::power_norm", Kokkos::RangePolicy<ExecSpace>(0, n),
+      KOKKOS_LAMBDA(const int i, double& sum) { sum += x(i) * x(i); }, squared);
+  double radius = 0.0;
+  for (int k = 0; k < iterations && squared > 0.0; ++k) {
+    const double scale = 1.0 / std::sqrt(squared);
+    Kokkos::parallel_for(
+        "rouleau::BlockJacobiSmoother::power_scale", Kokkos::RangePolicy<ExecSpace>(0, n),
+        KOKKOS_LAMBDA(const int i) { x(i) *= scale; });
+    sweep(graph, values, inverse, 1.0, ConstView(), x, y);
+    // x ← D⁻¹A x = x − y, and its squared norm.
+    Kokkos::parallel_reduce(
+        "rouleau::BlockJacobiSmoother::power_step", Kokkos::RangePolicy<ExecSpace>(0, n),
+        KOKKOS_LAMBDA(const int i, double& sum) {
+          x(i) -= y(i);
+          sum += x(i) * x(i);
+        },
+        squared);
+    radius = std::sqrt(squared);
+  }
+  return radius;
+}
 }  // namespace
 
-BlockJacobiSmoother::BlockJacobiSmoother(const BlockMatrixGraph& graph, const int sweeps, const double damping)
+BlockJacobiSmoother::BlockJacobiSmoother(const BlockMatrixGraph& graph, const int sweeps,
+                                         const double damping_times_radius)
     : graph_(graph),
       sweeps_(sweeps),
-      damping_(damping),
+      damping_times_radius_(damping_times_radius),
       diagonal_blocks_("rouleau::BlockJacobiSmoother::diagonal_blocks", 4 * static_cast<std::size_t>(graph.num_rows)),
-      other_("rouleau::BlockJacobiSmoother::other", sweeps > 1 ? graph.num_rows : 0),
+      other_("rouleau::BlockJacobiSmoother::other", graph.num_rows),
+      power_vector_("rouleau::BlockJacobiSmoother::power_vector", graph.num_rows),
       inverse_(graph.num_rows / 4) {
-  if (sweeps < 1 || !(damping > 0.0))
-    throw std::invalid_argument("rouleau::BlockJacobiSmoother: sweeps must be >= 1 and damping > 0, got " +
-                                std::to_string(sweeps) + " and " + std::to_string(damping));
+  if (sweeps < 1 || !(damping_times_radius > 0.0 && damping_times_radius < 2.0))
+    throw std::invalid_argument(
+        "rouleau::BlockJacobiSmoother: sweeps must be >= 1 and the damping times the spectral radius in (0, 2), got " +
+        std::to_string(sweeps) + " and " + std::to_string(damping_times_radius));
 }
 
 void BlockJacobiSmoother::factor(const Kokkos::View<double*>& values) {
   values_ = values;
   gather_diagonal_blocks(graph_, values_, diagonal_blocks_);
   inverse_.factor(diagonal_blocks_);
+  spectral_radius_ =
+      estimate_spectral_radius(graph_, values_, inverse_.inverse_blocks(), power_vector_, other_, power_iterations);
+  damping_ = spectral_radius_ > 0.0 ? damping_times_radius_ / spectral_radius_ : 1.0;
 }
 
 void BlockJacobiSmoother::apply(const Kokkos::View<const double*>& r, const Kokkos::View<double*>& z) const {

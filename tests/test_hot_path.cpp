@@ -1,7 +1,7 @@
 // What the time loop allocates and moves between memory spaces, counted through Kokkos'
-// profiling hooks: after warm-up, a time step allocates nothing, and may copy whole fields
-// between device Views (BDF history, preconditioner input), but nothing through a host
-// mirror. On a GPU build a
+// profiling hooks: after warm-up, a time step (of the fluid alone, and coupled with cells)
+// allocates nothing, and may copy whole fields between device Views (BDF history,
+// preconditioner input), but nothing through a host mirror. On a GPU build a
 // host mirror is the only way a field reaches the host, so this guards the hot path
 // against per-step host-device copies (docs/design.md: the host only reads scalars).
 #include <gtest/gtest.h>
@@ -11,7 +11,10 @@
 #include <cstring>
 #include <string>
 
+#include "config/load_case.hpp"
 #include "fluid/fluid_solver.hpp"
+#include "run/simulation.hpp"
+#include "temporary_folder.hpp"
 
 namespace rouleau {
 namespace {
@@ -49,6 +52,17 @@ void count_allocation(Kokkos_Profiling_SpaceHandle, const char* label, const voi
   if (counted.allocations++ == 0) counted.first_allocation = label;
 }
 
+// Counts from start_counting() to stop_counting() into `counted`.
+void start_counting() {
+  counted = CopyCount{};
+  Kokkos::Tools::Experimental::set_begin_deep_copy_callback(count_deep_copy);
+  Kokkos::Tools::Experimental::set_allocate_data_callback(count_allocation);
+}
+void stop_counting() {
+  Kokkos::Tools::Experimental::set_begin_deep_copy_callback(nullptr);
+  Kokkos::Tools::Experimental::set_allocate_data_callback(nullptr);
+}
+
 TEST(HotPath, TimeStepsAllocateNothingAndCopyNothingThroughAHostMirror) {
   const FluidMesh mesh = make_box_mesh({0, 0, 0}, {2, 1, 1}, {8, 8, 4}, {1, 1, 1}, {true, false, true});
   std::array<BoundaryConfig, 6> sides{};
@@ -63,9 +77,7 @@ TEST(HotPath, TimeStepsAllocateNothingAndCopyNothingThroughAHostMirror) {
   FluidSolver solver(mesh, fluid, sides, SolverConfig{}, scales, true);
   for (int step = 0; step < 2; ++step) ASSERT_TRUE(solver.advance(0.01, TimeScheme::bdf2).converged);
 
-  counted = CopyCount{};
-  Kokkos::Tools::Experimental::set_begin_deep_copy_callback(count_deep_copy);
-  Kokkos::Tools::Experimental::set_allocate_data_callback(count_allocation);
+  start_counting();
   const int steps = 3;
   int gmres_iterations = 0;
   for (int step = 0; step < steps; ++step) {
@@ -73,8 +85,7 @@ TEST(HotPath, TimeStepsAllocateNothingAndCopyNothingThroughAHostMirror) {
     ASSERT_TRUE(report.converged) << report.failure;
     gmres_iterations += report.gmres_iterations;
   }
-  Kokkos::Tools::Experimental::set_begin_deep_copy_callback(nullptr);
-  Kokkos::Tools::Experimental::set_allocate_data_callback(nullptr);
+  stop_counting();
 
   const double field_bytes = 8.0 * mesh.num_unknowns();
   std::printf("per step: %.1f copies (%.1f whole fields), %.1f fills, %d through a host mirror, %.1f allocations "
@@ -83,6 +94,34 @@ TEST(HotPath, TimeStepsAllocateNothingAndCopyNothingThroughAHostMirror) {
               counted.through_mirror, double(counted.allocations) / steps, counted.first_allocation.c_str(),
               double(gmres_iterations) / steps);
   EXPECT_GT(counted.copies, 0);  // the hook is live: BDF shifts its history every step
+  EXPECT_EQ(counted.through_mirror, 0);
+  EXPECT_EQ(counted.allocations, 0) << "first: " << counted.first_allocation;
+}
+
+TEST(HotPath, CoupledStepsWithCellsAllocateNothingAndCopyNothingThroughAHostMirror) {
+  // The aggregation scene (two red cells face to face, the Morse interaction on, the
+  // semi-implicit coupling) at h_f = 1 μm: after warm-up (the interaction's neighbour list
+  // and the RKPM supports built), a coupled step, with its cell forces, spreading, the cells'
+  // stiffness inside GMRES, interpolation and move, allocates nothing and copies nothing
+  // through a host mirror.
+  const CaseConfig config = load_case(std::string(ROULEAU_SOURCE_DIR) + "/cases/aggregation/case.toml",
+                                      {"domain.elements=[12, 12, 10]"});
+  Simulation simulation(config, (testing::temporary_folder("hot_path_cells") / "meshes").string());
+  ASSERT_NE(simulation.coupling(), nullptr);
+  for (int step = 0; step < 3; ++step) simulation.advance();
+
+  start_counting();
+  const int steps = 3;
+  int gmres_iterations = 0;
+  for (int step = 0; step < steps; ++step) gmres_iterations += simulation.advance().fluid.gmres_iterations;
+  stop_counting();
+
+  std::printf("per coupled step: %.1f copies (%.2f MB), %.1f fills, %d through a host mirror, %.1f allocations "
+              "(first: %s); %.1f GMRES iterations\n",
+              double(counted.copies) / steps, counted.bytes / 1e6 / steps, double(counted.fills) / steps,
+              counted.through_mirror, double(counted.allocations) / steps, counted.first_allocation.c_str(),
+              double(gmres_iterations) / steps);
+  EXPECT_GT(gmres_iterations, 0);
   EXPECT_EQ(counted.through_mirror, 0);
   EXPECT_EQ(counted.allocations, 0) << "first: " << counted.first_allocation;
 }

@@ -192,16 +192,15 @@ void AggregationMultigrid::set_values(const Kokkos::View<double*>& fine_values) 
 
 namespace {
 
-// residual = rhs − A x on a level's CRS matrix.
-void crs_residual(const BlockMatrixGraph& graph, const DoubleView& values, const ConstView& rhs, const DoubleView& x,
-                  const DoubleView& residual) {
-  const auto row_map = graph.row_map;
-  const auto entries = graph.entries;
+// residual = rhs − A x on a level's matrix, node block by node block.
+void block_residual(const BlockMatrixGraph& graph, const DoubleView& values, const ConstView& rhs, const DoubleView& x,
+                    const DoubleView& residual) {
+  const IntView offsets = graph.node_offsets, neighbors = graph.node_neighbors;
   Kokkos::parallel_for(
-      "rouleau::AggregationMultigrid::residual", graph.num_rows, KOKKOS_LAMBDA(const int row) {
-        double sum = rhs(row);
-        for (std::size_t k = row_map(row); k < row_map(row + 1); ++k) sum -= values(k) * x(entries(k));
-        residual(row) = sum;
+      "rouleau::AggregationMultigrid::residual", graph.num_rows / 4, KOKKOS_LAMBDA(const int A) {
+        double node_residual[4];
+        node_block_residual(offsets, neighbors, values, rhs, false, x, false, A, node_residual);
+        for (int i = 0; i < 4; ++i) residual(4 * A + i) = node_residual[i];
       });
 }
 
@@ -250,13 +249,13 @@ void AggregationMultigrid::cycle(int l, const Kokkos::View<const double*>& rhs,
   level.smoother->apply(rhs, solution);
   // The coarse-grid correction, `cycle_index` times (1: V-cycle, 2: W-cycle).
   for (int visit = 0; visit < settings_.cycle_index; ++visit) {
-    crs_residual(level.graph, level.values, rhs, solution, level.residual);
+    block_residual(level.graph, level.values, rhs, solution, level.residual);
     restrict_to_coarse(level.member_offsets, level.members, level.residual, coarse.rhs);
     cycle(l + 1, coarse.rhs, coarse.solution);
     prolong_and_add(level.aggregate_of, coarse.solution, solution);
   }
   // Post-smoothing: x += S⁻¹ (b − A x).
-  crs_residual(level.graph, level.values, rhs, solution, level.residual);
+  block_residual(level.graph, level.values, rhs, solution, level.residual);
   level.smoother->apply(level.residual, level.correction);
   add(level.correction, solution);
 }

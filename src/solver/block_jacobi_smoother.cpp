@@ -39,20 +39,13 @@ void gather_diagonal_blocks(const BlockMatrixGraph& graph, const DoubleView& val
 // r = 0, for the power iteration).
 void sweep(const BlockMatrixGraph& graph, const DoubleView& values, const DoubleView& inverse, const double damping,
            const ConstView& r, const ConstView& z, const DoubleView& next) {
-  const auto row_map = graph.row_map;
-  const auto entries = graph.entries;
+  const IntView offsets = graph.node_offsets, neighbors = graph.node_neighbors;
   const bool from_zero = z.extent(0) == 0, no_rhs = r.extent(0) == 0;
   Kokkos::parallel_for(
       "rouleau::BlockJacobiSmoother::sweep", Kokkos::RangePolicy<ExecSpace>(0, graph.num_rows / 4),
       KOKKOS_LAMBDA(const int A) {
         double residual[4];
-        for (int i = 0; i < 4; ++i) {
-          const int row = 4 * A + i;
-          double sum = no_rhs ? 0.0 : r(row);
-          if (!from_zero)
-            for (std::size_t k = row_map(row); k < row_map(row + 1); ++k) sum -= values(k) * z(entries(k));
-          residual[i] = sum;
-        }
+        node_block_residual(offsets, neighbors, values, r, no_rhs, z, from_zero, A, residual);
         for (int i = 0; i < 4; ++i) {
           double update = 0.0;
           for (int j = 0; j < 4; ++j) update += inverse(16 * A + 4 * i + j) * residual[j];

@@ -20,6 +20,7 @@
 #include "io/provenance.hpp"
 #include "rouleau_version.hpp"
 #include "util/errors.hpp"
+#include "run/thread_binding.hpp"
 #include "run_rouleau.hpp"
 #include "bad_case_files.hpp"
 
@@ -171,6 +172,28 @@ TEST(CliParse, CaseDriverTakesTheRunOptionsWithItsOwnDefaults) {
 TEST(CliParse, KokkosThreadsFlagDependsOnTheKokkosVersion) {
   EXPECT_EQ(rouleau::kokkos_threads_flag(4, 30401), "--kokkos-threads=4");
   EXPECT_EQ(rouleau::kokkos_threads_flag(4, 40600), "--kokkos-num-threads=4");
+}
+
+// The CPUs a run binds its threads to (run/thread_binding.hpp): distinct cores first, spread.
+TEST(ThreadBinding, ThreadsGoToDistinctCoresFirstAndSpreadOverThem) {
+  using rouleau::spread_threads_over_cores;
+  // Two cores, no SMT: one thread per core.
+  EXPECT_EQ(spread_threads_over_cores(2, {0, 1}, {0, 1}), (std::vector<int>{0, 1}));
+  // Eight cores, two threads: spread, not packed on cores 0 and 1.
+  EXPECT_EQ(spread_threads_over_cores(2, {0, 1, 2, 3, 4, 5, 6, 7}, {0, 1, 2, 3, 4, 5, 6, 7}),
+            (std::vector<int>{0, 4}));
+  // SMT with siblings numbered next to each other (CPUs 0, 1 on core 0; 2, 3 on core 1):
+  // two threads go to two cores, never to the two hardware threads of one core.
+  EXPECT_EQ(spread_threads_over_cores(2, {0, 1, 2, 3}, {0, 0, 2, 2}), (std::vector<int>{0, 2}));
+  // SMT with siblings numbered half the machine apart (0 and 2 on core 0): the same.
+  EXPECT_EQ(spread_threads_over_cores(2, {0, 1, 2, 3}, {0, 1, 0, 1}), (std::vector<int>{0, 1}));
+  // More threads than cores: every core's first CPU, then the siblings.
+  EXPECT_EQ(spread_threads_over_cores(4, {0, 1, 2, 3}, {0, 0, 2, 2}), (std::vector<int>{0, 2, 1, 3}));
+  // A process confined to some CPUs binds within them.
+  EXPECT_EQ(spread_threads_over_cores(2, {4, 5, 6, 7}, {4, 5, 6, 7}), (std::vector<int>{4, 6}));
+  // Nothing to bind: one thread, or more threads than CPUs.
+  EXPECT_TRUE(spread_threads_over_cores(1, {0, 1}, {0, 1}).empty());
+  EXPECT_TRUE(spread_threads_over_cores(3, {0, 1}, {0, 1}).empty());
 }
 
 TEST(CliErrors, ExceptionsBecomeOneLineAndAnExitCode) {

@@ -3,13 +3,12 @@
 
 #include <Kokkos_Core.hpp>
 #include <iostream>
+#include <string>
 #include <sys/resource.h>
-#ifdef KOKKOS_ENABLE_OPENMP
-#include <omp.h>
-#endif
 
 #include "io/run_folder.hpp"
 #include "rouleau_version.hpp"
+#include "run/thread_binding.hpp"
 
 namespace rouleau {
 
@@ -49,10 +48,9 @@ void report_run_setup(const Simulation& simulation, const DerivedQuantities& der
             << "\n";
   std::cerr << "memory: about " << format_bytes(memory.total_bytes) << " estimated (largest part: "
             << memory.terms.front().first << ")\n";
-#ifdef KOKKOS_ENABLE_OPENMP
-  if (Kokkos::DefaultHostExecutionSpace().concurrency() > 1 && omp_get_proc_bind() == omp_proc_bind_false)
-    std::cerr << "threads not bound to cores (to bind them, as for timings: OMP_PROC_BIND=spread OMP_PLACES=threads)\n";
-#endif
+  if (const std::string threads = describe_host_thread_binding(Kokkos::DefaultHostExecutionSpace().concurrency());
+      !threads.empty())
+    std::cerr << threads << "\n";
   if (const FluidDistribution* distribution = simulation.distribution())
     std::cerr << "fluid split across " << ranks.size() << " ranks: rank 0 owns "
               << distribution->partition().elements.size() << " elements and "

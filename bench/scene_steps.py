@@ -50,10 +50,18 @@ PEAK_MEMORY = re.compile(r"^peak memory: ([0-9.]+) MiB", re.M)
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
-def thread_environment(threads):
-    """OpenMP on `threads` threads, pinned one per core unless the caller says otherwise."""
-    return dict(os.environ, OMP_NUM_THREADS=str(threads), OMP_PROC_BIND=os.environ.get("OMP_PROC_BIND", "spread"),
-                OMP_PLACES=os.environ.get("OMP_PLACES", "threads"))
+def thread_environment(threads, binding=None):
+    """OpenMP on `threads` threads, pinned one per core unless the caller says otherwise;
+    `binding` given: exactly these OMP_PROC_BIND/OMP_PLACES settings ({} = rouleau's own
+    default)."""
+    environment = dict(os.environ, OMP_NUM_THREADS=str(threads))
+    if binding is None:
+        binding = {"OMP_PROC_BIND": os.environ.get("OMP_PROC_BIND", "spread"),
+                   "OMP_PLACES": os.environ.get("OMP_PLACES", "threads")}
+    for variable in ("OMP_PROC_BIND", "OMP_PLACES"):
+        environment.pop(variable, None)
+    environment.update(binding)
+    return environment
 
 
 def fail(message):
@@ -91,14 +99,14 @@ def build_baseline(revision):
     return binary, sha[:12]
 
 
-def run(binary, case_file, folder, steps, threads):
+def run(binary, case_file, folder, steps, threads, binding=None):
     """One run of `steps` steps: (the step stages' seconds, the fluid solve's seconds, the
     GMRES iterations of each step, the fluid unknowns, the peak memory in MiB)."""
     dt = case_time_step(case_file)
     command = [binary, "run", case_file, "--out", folder, "--overwrite", "--no-progress", "--threads", str(threads),
                "--set", f"time.end_s={steps * dt!r}", "--set", "output.fields=false",
                "--set", "output.diagnostics_every_steps=1", "--set", "checkpoint.every_minutes=0"]
-    done = subprocess.run(command, capture_output=True, text=True, env=thread_environment(threads))
+    done = subprocess.run(command, capture_output=True, text=True, env=thread_environment(threads, binding))
     if done.returncode != 0:
         fail(f"{' '.join(command)} failed ({done.returncode}):\n{done.stderr[-2000:]}")
     log = done.stdout + done.stderr
@@ -112,11 +120,11 @@ def run(binary, case_file, folder, steps, threads):
     return step_seconds, stages.get("fluid solve", 0.0), gmres, int(unknowns.group(1)), float(peak.group(1))
 
 
-def measure(binary, case_file, scratch, threads, warmup, steps):
+def measure(binary, case_file, scratch, threads, warmup, steps, binding=None):
     """Seconds per step, fluid solve seconds per step, GMRES iterations per step, unknowns and
     peak MiB over steps warmup+1 … warmup+steps."""
-    short = run(binary, case_file, os.path.join(scratch, "short"), warmup, threads)
-    long = run(binary, case_file, os.path.join(scratch, "long"), warmup + steps, threads)
+    short = run(binary, case_file, os.path.join(scratch, "short"), warmup, threads, binding)
+    long = run(binary, case_file, os.path.join(scratch, "long"), warmup + steps, threads, binding)
     iterations = [long[2][s] for s in range(warmup + 1, warmup + steps + 1) if s in long[2]]
     return {"seconds_per_step": (long[0] - short[0]) / steps, "fluid_seconds_per_step": (long[1] - short[1]) / steps,
             "gmres_per_step": sum(iterations) / max(len(iterations), 1), "unknowns": long[3], "peak_mib": long[4]}

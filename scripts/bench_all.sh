@@ -45,6 +45,8 @@ for step in "${steps[@]}"; do
     scenes)
       /usr/bin/python3 bench/scene_steps.py --rouleau "$build/rouleau"
       /usr/bin/python3 bench/scene_skips.py --rouleau "$build/rouleau" --threads "$all_threads"
+      /usr/bin/python3 bench/gmres_growth.py --rouleau "$build/rouleau"
+      /usr/bin/python3 bench/under_load.py --rouleau "$build/rouleau"
       ;;
     mpi)
       /usr/bin/python3 bench/mpi_scaling.py

@@ -50,16 +50,68 @@ KOKKOS_INLINE_FUNCTION double point_triangle_distance_squared(const double p[3],
   return distance_squared_to(vb * inverse, vc * inverse);
 }
 
+// The surface triangles in patches of nearby triangles (a cell's triangles only; a patch q
+// holds triangles patch_triangles(s), s in [patch_offsets(q), patch_offsets(q + 1))), each
+// bounded by a sphere: centre c = the mean of its triangles' corners, radius ρ = the largest
+// corner distance from c. Every point of a patch's triangles lies within ρ of c (a
+// triangle lies in the convex hull of its corners), so for a point p the patch's nearest
+// point is at least |p − c| − ρ away and its nearest corner at most |p − c| + ρ.
+inline constexpr int surface_gap_patch_triangles = 16;  // at most, per patch
+
+template <class NodeVectors, class Triangles>
+struct TrianglePatchBoundsFunctor {
+  NodeVectors positions;
+  Triangles triangles;
+  Kokkos::View<const int*> patch_offsets;
+  Kokkos::View<const int*> patch_triangles;
+  Kokkos::View<double* [4]> patch_bounds;  // (patch, [c_x, c_y, c_z, ρ]), written
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int q) const {
+    double centre[3] = {0.0, 0.0, 0.0};
+    const int first = patch_offsets(q), last = patch_offsets(q + 1);
+    for (int s = first; s < last; ++s)
+      for (int v = 0; v < 3; ++v)
+        for (int i = 0; i < 3; ++i) centre[i] += positions(triangles(patch_triangles(s), v), i);
+    for (int i = 0; i < 3; ++i) centre[i] /= 3.0 * (last - first);
+    double radius_squared = 0.0;
+    for (int s = first; s < last; ++s)
+      for (int v = 0; v < 3; ++v) {
+        double r2 = 0.0;
+        for (int i = 0; i < 3; ++i) {
+          const double d = positions(triangles(patch_triangles(s), v), i) - centre[i];
+          r2 += d * d;
+        }
+        radius_squared = r2 > radius_squared ? r2 : radius_squared;
+      }
+    for (int i = 0; i < 3; ++i) patch_bounds(q, i) = centre[i];
+    patch_bounds(q, 3) = sqrt(radius_squared);
+  }
+};
+
 // distance(k) = the distance from node first_node + k (a surface node: area weight > 0)
-// to the nearest of the triangles [first_triangle, first_triangle + triangle_count); +∞
-// for nodes off the surface.
+// to the nearest triangle of the patches [first_patch, first_patch + patch_count); +∞ for
+// nodes off the surface. Exact, as a loop over every triangle would give, but pruned:
+// U = min over patches of (|p − c| + ρ) bounds the answer from above, and only the
+// triangles of patches with |p − c| − ρ ≤ min(U, the nearest so far) are visited.
 template <class NodeVectors, class Weights, class Triangles, class Distances>
 struct NodeToSurfaceDistanceFunctor {
   NodeVectors positions;
   Weights area_weights;
   Triangles triangles;
-  int first_node, first_triangle, triangle_count;
+  Kokkos::View<const int*> patch_offsets;
+  Kokkos::View<const int*> patch_triangles;
+  Kokkos::View<const double* [4]> patch_bounds;
+  int first_node, first_patch, patch_count;
   Distances distance;
+
+  KOKKOS_INLINE_FUNCTION double centre_distance(const double p[3], const int q) const {
+    double d2 = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      const double d = p[i] - patch_bounds(q, i);
+      d2 += d * d;
+    }
+    return sqrt(d2);
+  }
 
   KOKKOS_INLINE_FUNCTION void operator()(const int k) const {
     const int node = first_node + k;
@@ -68,13 +120,25 @@ struct NodeToSurfaceDistanceFunctor {
       return;
     }
     const double p[3] = {positions(node, 0), positions(node, 1), positions(node, 2)};
-    double nearest = INFINITY;
-    for (int t = first_triangle; t < first_triangle + triangle_count; ++t) {
-      double corner[3][3];
-      for (int v = 0; v < 3; ++v)
-        for (int i = 0; i < 3; ++i) corner[v][i] = positions(triangles(t, v), i);
-      const double d2 = point_triangle_distance_squared(p, corner[0], corner[1], corner[2]);
-      nearest = d2 < nearest ? d2 : nearest;
+    double upper = INFINITY;
+    for (int q = first_patch; q < first_patch + patch_count; ++q) {
+      const double u = centre_distance(p, q) + patch_bounds(q, 3);
+      upper = u < upper ? u : upper;
+    }
+    // A margin of round-off on the lower bound keeps the pruning exact in floating point.
+    const double margin = 1e-12 * (1.0 + upper);
+    double nearest = INFINITY;  // squared
+    for (int q = first_patch; q < first_patch + patch_count; ++q) {
+      const double lower = centre_distance(p, q) - patch_bounds(q, 3) - margin;
+      if (lower > upper || (lower > 0.0 && lower * lower > nearest)) continue;
+      for (int s = patch_offsets(q); s < patch_offsets(q + 1); ++s) {
+        const int t = patch_triangles(s);
+        double corner[3][3];
+        for (int v = 0; v < 3; ++v)
+          for (int i = 0; i < 3; ++i) corner[v][i] = positions(triangles(t, v), i);
+        const double d2 = point_triangle_distance_squared(p, corner[0], corner[1], corner[2]);
+        nearest = d2 < nearest ? d2 : nearest;
+      }
     }
     distance(k) = sqrt(nearest);
   }

@@ -21,8 +21,9 @@ class CellGaps {
 
   // Every pair (a < b), at the population's current positions. Distances are node to
   // triangle (a node of each cell to the nearest outer-surface triangle of the other,
-  // both ways), so the gap is exact for the meshes' piecewise-flat surfaces. Brute force
-  // over the two cells' surfaces: O(nodes × triangles) per pair.
+  // both ways), so the gap is exact for the meshes' piecewise-flat surfaces. Each node
+  // visits only the patches of 8 to 16 nearby triangles that may hold its nearest point
+  // (kernels/surface_gap.hpp), with the same result as a loop over every triangle.
   std::vector<CellPairGap> measure() const;
 
  private:
@@ -32,6 +33,10 @@ class CellGaps {
   const CellPopulation& population_;
   double contact_distance_;
   std::vector<int> first_triangle_, triangle_count_;  // per cell
+  std::vector<int> first_patch_, patch_count_;        // per cell: its triangles' patches
+  Kokkos::View<int*> patch_offsets_;                  // patch q: patch_triangles_[offsets(q), offsets(q + 1))
+  Kokkos::View<int*> patch_triangles_;                // the triangles, patch by patch
+  Kokkos::View<double* [4]> patch_bounds_;            // bounding sphere per patch, at measure()
   Kokkos::View<double*> distance_;                    // scratch, the largest cell's node count
 };
 

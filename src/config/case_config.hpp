@@ -247,8 +247,8 @@ struct OutputConfig {
   int fields_every_steps = 1;     // key fields_every_steps
   int diagnostics_every_steps = 1;
   // The gap and contact area of every pair of cells go into the diagnostics while the scene
-  // has at most this many cells: their cost (brute force over both surfaces) and their
-  // columns grow with the square of the cell count (at 512 cells, an hour per row).
+  // has at most this many cells: their cost (every pair's two surfaces, cells/cell_gaps.hpp)
+  // and their columns grow with the square of the cell count.
   int cell_gaps_max_cells = 32;
 };
 

@@ -108,6 +108,9 @@ struct SolverConfig {
   // The multigrid's smoother: block-Jacobi sweeps (fully parallel, 2.5–6.5× faster fluid
   // solves than ILU(0) on the paper scenes) or ILU(0) (fewer GMRES iterations, launch-bound).
   MultigridSmoother multigrid_smoother = MultigridSmoother::block_jacobi;
+  // A Stokes step's starting guess: the combination of the last this many solutions with the
+  // least residual (fluid/fluid_solver.hpp); 0: 2 U^n − U^{n−1}.
+  int starting_guess_solutions = 4;
 };
 
 // Scales of the nondimensional solver variables; 0 = derive from the case.

@@ -117,6 +117,9 @@ std::vector<CaseKey> make_case_keys() {
        "the fluid solve's preconditioner"},
       {"solver", "multigrid_smoother", Kind::choice, "", "\"block_jacobi\"", any, spellings<MultigridSmoother>(),
        "the multigrid's smoother: block_jacobi (fully parallel sweeps) or ilu0 (triangular solves)"},
+      {"solver", "starting_guess_solutions", Kind::integer, "", "4", Range::closed(0, 16), {},
+       "Stokes steps start GMRES from the least-residual combination of the last this many solutions; 0: the last "
+       "solution extrapolated linearly"},
 
       {"scales", "length_um", Kind::number, "μm", "0", non_negative, {},
        "the length scale of the nondimensional solve; 0 = derived from the case"},

@@ -1,5 +1,7 @@
 #include "config/memory_estimate.hpp"
 
+#include "config/derived.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -140,6 +142,11 @@ MemoryEstimate estimate_memory(const CaseConfig& config, int threads) {
   add("fluid state and sums", (504.0 + (f.uniform_box ? 72.0 : 0.0)) * N + 104.0 * T * N);
   // solver/gmres.cpp: the Krylov basis of m + 1 vectors of 4N, and 3 work vectors.
   add("GMRES(" + std::to_string(config.solver.gmres_restart) + ") basis", 32.0 * (m + 1.0) * N + 96.0 * N);
+  // fluid/fluid_starting_guess.cpp: a Stokes run in time keeps its last k solutions and,
+  // as scratch, k combinations of them and their images (3k vectors of 4N).
+  const int k = config.solver.starting_guess_solutions;
+  if (k > 0 && config.time.mode == TimeMode::transient && derive_quantities(config).stokes)
+    add("starting guess: last " + std::to_string(k) + " solutions", 96.0 * k * N);
   // fluid/fluid_matrix.cpp and the preconditioners (solver/).
   const double ilu_scratch = 16.0 * f.widest_ilu_level * N;  // KokkosKernels' spiluk numeric: rows x widest level ints
   switch (config.solver.preconditioner) {

@@ -3,6 +3,8 @@
 // (fluid/fluid_solver.hpp).
 #include "fluid/fluid_solver.hpp"
 
+#include <algorithm>
+
 #include "util/view_transfer.hpp"
 
 namespace rouleau {
@@ -13,6 +15,15 @@ void FluidSolver::save_state(CheckpointData& data) const {
   data.reals["fluid/previous_state"] = global_values(previous_state_);
   data.reals["fluid/time"] = {time_};
   data.integers["fluid/steps"] = {steps_};
+  // The last solutions, newest first (the next step's starting guess is made from them).
+  std::vector<double> past;
+  for (int i = 0; i < past_count_; ++i) {
+    const int column = (past_newest_ - i + past_solutions_.extent_int(1)) % past_solutions_.extent_int(1);
+    const std::vector<double> values = global_values(Kokkos::subview(past_solutions_, Kokkos::ALL(), column));
+    past.insert(past.end(), values.begin(), values.end());
+  }
+  data.reals["fluid/past_solutions"] = past;
+  data.integers["fluid/past_solutions_count"] = {past_count_};
 }
 
 void FluidSolver::restore_state(const CheckpointData& data) {
@@ -25,6 +36,25 @@ void FluidSolver::restore_state(const CheckpointData& data) {
   }
   time_ = data.real("fluid/time", 1).front();
   steps_ = static_cast<int>(data.integer("fluid/steps", 1).front());
+  // The last solutions: written newest first, held oldest … newest in columns 0 … count − 1
+  // (as many of the newest as this run keeps)
+  // (a checkpoint written before they were kept has none).
+  const int written = data.integers.count("fluid/past_solutions_count")
+                          ? static_cast<int>(data.integer("fluid/past_solutions_count", 1).front())
+                          : 0;
+  allocate_past_solutions();
+  const int kept = std::min(written, past_solutions_.extent_int(1));
+  static const std::vector<double> none;
+  const std::vector<double>& past =
+      written > 0 ? data.real("fluid/past_solutions", static_cast<long long>(written) * n) : none;
+  for (int i = kept - 1; i >= 0; --i) {
+    const std::vector<double> one(past.begin() + static_cast<long long>(i) * n,
+                                  past.begin() + static_cast<long long>(i + 1) * n);
+    from_flat_vector(one, global, "fluid/past_solutions");
+    exchange_->localize(global, Kokkos::subview(past_solutions_, Kokkos::ALL(), kept - 1 - i));
+  }
+  past_count_ = kept;
+  past_newest_ = kept - 1;
 }
 
 }  // namespace rouleau

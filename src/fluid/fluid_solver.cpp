@@ -203,6 +203,7 @@ FluidSolveReport FluidSolver::solve(const ConstVector& history, const ImmersedTe
     Kokkos::deep_copy(correction_, 0.0);
     operator_.residual(correction_, correction_, residual_);
     rhs_norm = exchange_->norm(residual_);
+    project_starting_guess(immersed);
   }
   residual_at_state(immersed, true);
   double residual_norm = exchange_->norm(residual_);
@@ -325,12 +326,14 @@ FluidSolveReport FluidSolver::advance(double dt, TimeScheme scheme, const Immers
   Kokkos::deep_copy(previous_state_, state_);
   KokkosBlas::update(a1 / dt_scaled, previous_state_, a2 / dt_scaled, older_state_, 0.0, history_);
   // The starting guess: U^n extrapolated linearly in time, 2 U^n − U^{n−1} (U^n on the first
-  // step). It only shortens the solve: the solution does not depend on it.
+  // step), which a Stokes step replaces by a better one once it knows two solutions
+  // (project_starting_guess). It only shortens the solve: the solution does not depend on it.
   if (steps_ > 0 && bdf2) KokkosBlas::axpby(-1.0, older_state_, 2.0, state_);
   FluidSolveReport report = solve(history_, immersed);
   if (report.converged) {
     time_ += dt;
     ++steps_;
+    remember_solution();
   }
   return report;
 }

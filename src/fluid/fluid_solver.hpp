@@ -3,7 +3,8 @@
 //
 // Each solve is Newton–Raphson on the scaled residual R(U) = 0; each Newton step solves
 // J δ = −R with right-preconditioned GMRES, J applied element by element (matrix-free).
-// In the Stokes limit the residual is affine: one Krylov solve per step.
+// In the Stokes limit the residual is affine: one Krylov solve per step, started from the
+// combination of the last solutions with the least residual (fluid_starting_guess.cpp).
 // Time stepping: backward Euler or BDF2 (BE on the first step), or a steady solve.
 //
 // The ranks are known only through a FluidExchange (fluid/fluid_exchange.hpp), the
@@ -183,6 +184,18 @@ class FluidSolver {
   double last_mass_coefficient_ = -1.0;
   double time_ = 0.0;
   int steps_ = 0;
+
+  // A Stokes step's starting guess (fluid_starting_guess.cpp): U₀ = Σ c_i U_i over the last
+  // k = settings_.starting_guess_solutions solutions U_i, the c_i minimizing ‖R(U₀)‖.
+  void project_starting_guess(const ImmersedTerms& immersed);
+  // Keeps the converged state_ among the last solutions (the oldest goes).
+  void remember_solution();
+  void allocate_past_solutions();  // once, for a Stokes run that keeps solutions
+  Kokkos::View<double**, Kokkos::LayoutLeft> past_solutions_;  // (unknown, k): a ring of U_i
+  int past_count_ = 0;     // solutions held
+  int past_newest_ = -1;   // the ring's column of the newest
+  // Scratch: the combinations of the U_i whose images A U_i are orthonormal, and those images.
+  Kokkos::View<double**, Kokkos::LayoutLeft> guess_states_, guess_images_;
 };
 
 }  // namespace rouleau

@@ -36,9 +36,8 @@ void FluidSolver::restore_state(const CheckpointData& data) {
   }
   time_ = data.real("fluid/time", 1).front();
   steps_ = static_cast<int>(data.integer("fluid/steps", 1).front());
-  // The last solutions: written newest first, held oldest … newest in columns 0 … count − 1
-  // (as many of the newest as this run keeps)
-  // (a checkpoint written before they were kept has none).
+  // The last solutions, written newest first: the newest `kept` of them go to columns
+  // kept − 1 (newest) … 0. A checkpoint written before solutions were kept has none.
   const int written = data.integers.count("fluid/past_solutions_count")
                           ? static_cast<int>(data.integer("fluid/past_solutions_count", 1).front())
                           : 0;

@@ -88,7 +88,7 @@ packages=(
   g++ cmake make pkg-config dpkg-dev ca-certificates tar gzip xz-utils
   libeigen3-dev libhdf5-dev libtomlplusplus-dev libcli11-dev libspdlog-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev libgmsh-dev python3 python3-matplotlib python3-h5py
-  libopenmpi-dev openmpi-bin libmetis-dev
+  libopenmpi-dev openmpi-bin libmetis-dev libfftw3-dev liblapack-dev
 )
 # The fuzzing build: clang and its runtime libraries (libFuzzer, AddressSanitizer, UBSan).
 [ "$fuzz" = 1 ] && packages+=(clang libclang-rt-dev)

@@ -85,7 +85,9 @@ struct TimeConfig {
 };
 
 enum class StokesChoice { automatic, on, off };
-enum class PreconditionerType { none, block_jacobi, ilu0, multigrid };
+// automatic: fast_diagonalization where it applies (a uniform box periodic along two axes,
+// Stokes), multigrid elsewhere (DerivedQuantities::preconditioner).
+enum class PreconditionerType { none, block_jacobi, ilu0, multigrid, fast_diagonalization, automatic };
 
 struct SolverConfig {
   StokesChoice stokes = StokesChoice::automatic;  // key stokes = "auto" | "on" | "off"
@@ -104,7 +106,7 @@ struct SolverConfig {
   // The aggregation multigrid: on the work–precision study (bench/work_precision.md) it is on the
   // Pareto front from about 2e4 unknowns on, where every paper scene lies, and its 2–5×
   // fewer GMRES iterations save the semi-implicit cells' force evaluation per iteration.
-  PreconditionerType preconditioner = PreconditionerType::multigrid;
+  PreconditionerType preconditioner = PreconditionerType::automatic;
   // The multigrid's smoother: block-Jacobi sweeps (fully parallel, 2.5–6.5× faster fluid
   // solves than ILU(0) on the paper scenes) or ILU(0) (fewer GMRES iterations, launch-bound).
   MultigridSmoother multigrid_smoother = MultigridSmoother::block_jacobi;
@@ -290,6 +292,10 @@ struct DerivedQuantities {
   double reynolds = 0.0;        // ρUL/μ
   bool stokes = false;          // the Stokes limit is used
   std::string stokes_reason;    // why (or why not), for --explain
+  // The fluid's preconditioner: solver.preconditioner, with "auto" resolved; and why fast
+  // diagonalization does not apply (empty when it does).
+  PreconditionerType preconditioner = PreconditionerType::multigrid;
+  std::string fast_diagonalization_obstacle;
   // The explicit coupling's stable step estimate [s] (0 when the case has no cells or
   // does not step in time), and how it was found, for --explain and the log.
   double stable_dt = 0.0;

@@ -29,8 +29,10 @@ inline constexpr std::array<NamedChoice<TimeScheme>, 2> time_scheme_names{
     {{TimeScheme::bdf2, "bdf2"}, {TimeScheme::backward_euler, "backward_euler"}}};
 inline constexpr std::array<NamedChoice<StokesChoice>, 3> stokes_choice_names{
     {{StokesChoice::automatic, "auto"}, {StokesChoice::on, "on"}, {StokesChoice::off, "off"}}};
-inline constexpr std::array<NamedChoice<PreconditionerType>, 4> preconditioner_names{
-    {{PreconditionerType::ilu0, "ilu0"},
+inline constexpr std::array<NamedChoice<PreconditionerType>, 6> preconditioner_names{
+    {{PreconditionerType::automatic, "auto"},
+     {PreconditionerType::ilu0, "ilu0"},
+     {PreconditionerType::fast_diagonalization, "fast_diagonalization"},
      {PreconditionerType::multigrid, "multigrid"},
      {PreconditionerType::block_jacobi, "block_jacobi"},
      {PreconditionerType::none, "none"}}};

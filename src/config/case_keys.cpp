@@ -113,8 +113,9 @@ std::vector<CaseKey> make_case_keys() {
       {"solver", "gmres_restart", Kind::integer, "", "60", Range::closed(1, 1000), {}, "GMRES's Krylov basis size"},
       {"solver", "gmres_rtol", Kind::number, "", "1e-08", fraction, {}, "GMRES's tolerance relative to the right-hand side"},
       {"solver", "gmres_max_iterations", Kind::integer, "", "3000", count, {}, "GMRES iterations per solve at most"},
-      {"solver", "preconditioner", Kind::choice, "", "\"multigrid\"", any, spellings<PreconditionerType>(),
-       "the fluid solve's preconditioner"},
+      {"solver", "preconditioner", Kind::choice, "", "\"auto\"", any, spellings<PreconditionerType>(),
+       "the fluid solve's preconditioner; auto: fast_diagonalization (FFT along the periodic axes, the Stokes "
+       "operator's exact inverse) on a uniform box periodic along two axes in the Stokes limit, multigrid elsewhere"},
       {"solver", "multigrid_smoother", Kind::choice, "", "\"block_jacobi\"", any, spellings<MultigridSmoother>(),
        "the multigrid's smoother: block_jacobi (fully parallel sweeps) or ilu0 (triangular solves)"},
       {"solver", "starting_guess_solutions", Kind::integer, "", "4", Range::closed(0, 16), {},

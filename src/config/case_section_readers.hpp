@@ -25,6 +25,9 @@ std::optional<double> read_density(const TableReader& section);
 // The explicit coupling refuses a step above its stable estimate unless asked to force it
 // (the semi-implicit coupling is not bound by it): InputError at time.dt_s.
 void check_time_step(const CaseConfig& config);
+// solver.preconditioner = "fast_diagonalization" where it does not apply (it needs a
+// uniform box periodic along two axes, Stokes) is refused.
+void check_preconditioner(const CaseConfig& config);
 
 // ---- the fluid domain (read_domain.cpp): a box, or a vessel
 void read_domain(const TableReader& root, DomainConfig& domain);

@@ -178,6 +178,28 @@ void derive_stable_step(const CaseConfig& config, DerivedQuantities& derived) {
 
 }  // namespace
 
+namespace {
+// derived.preconditioner: "auto" becomes fast diagonalization where it applies (a uniform
+// box periodic along two axes, in the Stokes limit) and the multigrid elsewhere.
+void derive_preconditioner(const CaseConfig& config, DerivedQuantities& derived) {
+  std::string& obstacle = derived.fast_diagonalization_obstacle;
+  if (config.vessel.enabled) {
+    obstacle = "this case's fluid mesh is a vessel's tetrahedra";
+  } else {
+    int periodic_axes = 0;
+    for (int axis = 0; axis < 3; ++axis)
+      if (config.domain.boundary[2 * axis].type == BoundaryType::periodic) ++periodic_axes;
+    if (periodic_axes != 2) obstacle = "this box is periodic along " + std::to_string(periodic_axes) + " axes";
+    for (double grading : config.domain.wall_grading)
+      if (grading != 1.0 && obstacle.empty()) obstacle = "this box is graded (domain.wall_grading)";
+  }
+  if (obstacle.empty() && !derived.stokes) obstacle = "this flow is not in the Stokes limit (solver.stokes)";
+  derived.preconditioner = config.solver.preconditioner;
+  if (derived.preconditioner == PreconditionerType::automatic)
+    derived.preconditioner = obstacle.empty() ? PreconditionerType::fast_diagonalization : PreconditionerType::multigrid;
+}
+}  // namespace
+
 DerivedQuantities derive_quantities(const CaseConfig& config) {
   DerivedQuantities derived;
   derived.length_scale = derived_length_scale(config);
@@ -206,6 +228,7 @@ DerivedQuantities derive_quantities(const CaseConfig& config) {
                          : reynolds + " ≥ threshold " + threshold + ": convective term kept (Navier–Stokes)";
       break;
   }
+  derive_preconditioner(config, derived);
   derive_stable_step(config, derived);
   return derived;
 }

@@ -86,6 +86,7 @@ CaseConfig load_case_document(toml::table document, const std::string& path, con
   // The cells against the domain and each other (exact shapes, before any meshing).
   check_cell_placement(config);
   check_time_step(config);
+  check_preconditioner(config);
   return config;
 }
 

@@ -149,14 +149,22 @@ MemoryEstimate estimate_memory(const CaseConfig& config, int threads) {
     add("starting guess: last " + std::to_string(k) + " solutions", 96.0 * k * N);
   // fluid/fluid_matrix.cpp and the preconditioners (solver/).
   const double ilu_scratch = 16.0 * f.widest_ilu_level * N;  // KokkosKernels' spiluk numeric: rows x widest level ints
-  switch (config.solver.preconditioner) {
+  const PreconditionerType preconditioner = derive_quantities(config).preconditioner;
+  switch (preconditioner) {
     case PreconditionerType::none: break;
     case PreconditionerType::block_jacobi: add("block-Jacobi blocks", (256.0 + 128.0 * T) * N); break;
+    case PreconditionerType::fast_diagonalization:
+      // fluid/fast_diagonalization.cpp: per pair of wave numbers (about N/2 over the wall
+      // planes) a banded LU of 4 unknowns per plane, 34 complex bands each, its pivots and
+      // spectrum; a probe and its response.
+      add("fast diagonalization: banded factors per wave number", 1250.0 * N);
+      break;
     case PreconditionerType::ilu0:
       // the Jacobian's block graph and values, the ILU(0) factors and their schedule
       add("ILU(0): Jacobian blocks and factors", (228.0 + 388.0 * B) * N + 4.0 * E);
       add("ILU(0) level-schedule scratch", ilu_scratch);
       break;
+    case PreconditionerType::automatic:  // never: derive_quantities resolves it
     case PreconditionerType::multigrid:
       // Aggregates of up to 4 nodes: the coarse levels hold 0.30–0.32 of the fine level's
       // blocks (measured on hexahedra and tetrahedra, 16³–32³). Per level of N_l nodes with
@@ -200,10 +208,9 @@ MemoryEstimate estimate_memory(const CaseConfig& config, int threads) {
   std::vector<std::pair<double, std::string>> counts{{9.0 * N, "projected-gradient entries (9 per node)"},
                                                      {f.nodes_per_element * E, "element-node entries"},
                                                      {3.0 * Ng, "node coordinates"}};
-  if (config.solver.preconditioner == PreconditionerType::ilu0 ||
-      config.solver.preconditioner == PreconditionerType::multigrid)
+  if (preconditioner == PreconditionerType::ilu0 || preconditioner == PreconditionerType::multigrid)
     counts.emplace_back(B * N, "4x4 blocks of the preconditioner's matrix");
-  if (config.solver.preconditioner == PreconditionerType::block_jacobi)
+  if (preconditioner == PreconditionerType::block_jacobi)
     counts.emplace_back(16.0 * N, "block-Jacobi entries (16 per node)");
   const auto largest = *std::max_element(counts.begin(), counts.end());
   estimate.largest_index_count = largest.first;

@@ -122,4 +122,13 @@ void check_time_step(const CaseConfig& config) {
                        "); lower time.dt_s, or set coupling.allow_unstable_step = true to run it anyway");
 }
 
+void check_preconditioner(const CaseConfig& config) {
+  if (config.solver.preconditioner != PreconditionerType::fast_diagonalization) return;
+  const std::string obstacle = derive_quantities(config).fast_diagonalization_obstacle;
+  if (!obstacle.empty())
+    throw InputError(config.source_file, "solver.preconditioner",
+                     "\"fast_diagonalization\" needs a uniform box periodic along two axes in the Stokes limit, and " +
+                         obstacle + "; use \"multigrid\" or \"auto\"");
+}
+
 }  // namespace rouleau

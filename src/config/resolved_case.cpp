@@ -268,6 +268,7 @@ std::string resolved_case_toml(const CaseConfig& config, const DerivedQuantities
   toml_file.key("reynolds", derived.reynolds);
   toml_file.key("stokes", derived.stokes);
   toml_file.key("stokes_reason", derived.stokes_reason);
+  toml_file.key("preconditioner", toml_name(derived.preconditioner));
   if (derived.stable_dt > 0.0) {
     toml_file.key("stable_dt_s", derived.stable_dt);
     toml_file.key("stable_dt_reason", derived.stable_dt_reason);

@@ -46,16 +46,22 @@ ScenePlan plan_scene(const CaseConfig& config, const DerivedQuantities& derived)
   std::string preconditioner;
   const char* when = derived.stokes ? "built once (the Stokes operator is constant while dt is)"
                                     : "rebuilt every Newton step";
-  switch (config.solver.preconditioner) {
+  switch (derived.preconditioner) {
     case PreconditionerType::ilu0:
       preconditioner = std::string("ILU(0) of the assembled Jacobian (KokkosKernels spiluk/sptrsv), ") + when;
       break;
+    case PreconditionerType::automatic:  // never: derived.preconditioner is resolved
     case PreconditionerType::multigrid:
       preconditioner = std::string("aggregation multigrid W-cycle (pairwise aggregates of up to 4 nodes, ") +
                        (config.solver.multigrid_smoother == MultigridSmoother::block_jacobi
                             ? "3 damped block-Jacobi sweeps"
                             : "ILU(0)") +
                        " smoothing, sparse LU on the coarsest level) of the assembled Jacobian, " + when;
+      break;
+    case PreconditionerType::fast_diagonalization:
+      preconditioner = std::string("fast diagonalization: FFT along the periodic axes, one banded LU per pair of "
+                                   "wave numbers across the walls (the Stokes operator's exact inverse up to "
+                                   "the pressure pin), ") + when;
       break;
     case PreconditionerType::block_jacobi:
       preconditioner = std::string("point-block Jacobi (4x4 node blocks), ") + when;

@@ -1,6 +1,7 @@
 #include "distributed/fluid_distribution.hpp"
 
 #include <KokkosBlas1_dot.hpp>
+#include <spdlog/spdlog.h>
 #include <algorithm>
 #include <cmath>
 
@@ -223,7 +224,16 @@ std::unique_ptr<FluidPreconditioner> FluidDistribution::make_preconditioner(
     case PreconditionerType::ilu0:
       return std::make_unique<AdditiveSchwarz>(communicator_, partition_, local_mesh_, owned_dirichlet,
                                                SubdomainSolver::ilu0);
+    case PreconditionerType::automatic:
     case PreconditionerType::multigrid:
+      return std::make_unique<AdditiveSchwarz>(communicator_, partition_, local_mesh_, owned_dirichlet,
+                                               SubdomainSolver::multigrid, multigrid_settings(solver));
+    case PreconditionerType::fast_diagonalization:
+      // Its transforms span the whole box: across ranks, each subdomain's multigrid instead.
+      if (communicator_.rank() == 0)
+        spdlog::warn("solver.preconditioner = \"fast_diagonalization\" runs on one rank; across {} ranks the "
+                     "subdomains' multigrid is used instead",
+                     communicator_.size());
       return std::make_unique<AdditiveSchwarz>(communicator_, partition_, local_mesh_, owned_dirichlet,
                                                SubdomainSolver::multigrid, multigrid_settings(solver));
     case PreconditionerType::none: break;

@@ -1,5 +1,10 @@
 #include "fluid/fluid_preconditioner.hpp"
 
+#include <spdlog/spdlog.h>
+
+#include <string>
+
+#include "fluid/fast_diagonalization.hpp"
 #include "fluid/fluid_matrix.hpp"
 #include "solver/aggregation_multigrid.hpp"
 #include "solver/block_jacobi.hpp"
@@ -86,7 +91,18 @@ std::unique_ptr<FluidPreconditioner> make_fluid_preconditioner(const SolverConfi
   switch (solver.preconditioner) {
     case PreconditionerType::block_jacobi: return std::make_unique<PointBlockJacobi>(mesh);
     case PreconditionerType::ilu0: return std::make_unique<AssembledIlu0>(mesh);
+    // "auto" is resolved when a case is loaded (config/read_settings.cpp); a solver set up
+    // without a case takes the multigrid, which applies everywhere.
+    case PreconditionerType::automatic:
     case PreconditionerType::multigrid: return std::make_unique<AssembledMultigrid>(mesh, multigrid_settings(solver));
+    case PreconditionerType::fast_diagonalization: {
+      // The case loader has checked the box; what remains is where the vectors live.
+      const std::string reason = FastDiagonalization::unavailable_reason(mesh);
+      if (reason.empty()) return std::make_unique<FastDiagonalization>(mesh);
+      spdlog::warn("the fast diagonalization is not available here ({}): the multigrid preconditions the fluid",
+                   reason);
+      return std::make_unique<AssembledMultigrid>(mesh, multigrid_settings(solver));
+    }
     case PreconditionerType::none: break;
   }
   return std::make_unique<NoPreconditioner>();

@@ -41,8 +41,11 @@ Simulation::Simulation(const CaseConfig& config, const std::string& mesh_cache_d
   if (several_ranks && ranks->rank() == 0) ranks->barrier();
   if (several_ranks)
     distribution_ = times_.time("fluid setup", [&] { return std::make_unique<FluidDistribution>(*ranks, mesh_); });
+  // The preconditioner "auto" stands for (derived_.preconditioner).
+  SolverConfig solver = config_.solver;
+  solver.preconditioner = derived_.preconditioner;
   fluid_ = times_.time("fluid setup", [&] {
-    return std::make_unique<FluidSolver>(mesh_, config_.fluid, case_boundaries(config_), config_.solver, scales,
+    return std::make_unique<FluidSolver>(mesh_, config_.fluid, case_boundaries(config_), solver, scales,
                                          derived_.stokes, distribution_.get());
   });
   // The stencil changes Aδ only by round-off; scene.skip_unneeded_stages = false keeps the

@@ -135,8 +135,9 @@ class FluidSolver {
   GmresResult newton_step(const ImmersedTerms& immersed, bool linear, double forcing);
   // R(U) at the current state into residual_, with the immersed stiffness's share.
   // `constrained_rows`: the Dirichlet rows hold the constraints (the stiffness left out of
-  // them); false leaves the nodal reactions there (boundary_forces()).
-  void residual_at_state(const ImmersedTerms& immersed, bool constrained_rows);
+  // them); false leaves the nodal reactions there (boundary_forces()). `affine`: the
+  // residual is the Stokes step's, R(U) = A U + R(0), with R(0) in zero_state_residual_.
+  void residual_at_state(const ImmersedTerms& immersed, bool constrained_rows, bool affine = false);
   // The debug log's line for a Newton step.
   void log_newton_step(const FluidSolveReport& report, const GmresResult& g, double forcing, double residual_norm,
                        double target) const;
@@ -174,6 +175,7 @@ class FluidSolver {
   Vector stiffness_action_, stiffness_stabilization_;  // Ŝ x and P(Ŝ x) (scratch)
   Vector stiffness_carrier_;                           // x + u' (scratch)
   Vector residual_;  // also scratch for boundary_forces() (const)
+  Vector zero_state_residual_;  // a Stokes step's R(0) = −b (allocated in the Stokes limit)
   Vector state_gradient_;  // G(U) during a Krylov solve
   std::unique_ptr<FluidPreconditioner> preconditioner_;  // on the owned unknowns
   // Across ranks: scratch for the Jacobian's lift of owned vectors to local ones, and for

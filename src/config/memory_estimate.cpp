@@ -141,7 +141,8 @@ MemoryEstimate estimate_memory(const CaseConfig& config, int threads) {
   // loads, and per thread the scattered sums of gradients and residuals (Kokkos ScatterView
   // copies on CPU threads).
   add("fluid state and sums", (536.0 + (f.uniform_box ? 72.0 : 0.0)) * N + 104.0 * T * N);
-  // solver/gmres.cpp: the Krylov basis of m + 1 vectors of 4N, and 3 work vectors.
+  // solver/gmres.cpp: the Krylov basis, at most m + 1 vectors of 4N (it grows with the
+  // iterations the solves need), and 3 work vectors.
   add("GMRES(" + std::to_string(config.solver.gmres_restart) + ") basis", 32.0 * (m + 1.0) * N + 96.0 * N);
   // fluid/fluid_starting_guess.cpp: a Stokes run in time keeps its last k solutions and,
   // as scratch, k combinations of them and their images (3k vectors of 4N).

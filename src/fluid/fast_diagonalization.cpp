@@ -70,8 +70,7 @@ FastDiagonalization::FastDiagonalization(const FluidMesh& mesh) : plans_(std::ma
   pivots_.assign(static_cast<std::size_t>(waves_) * unknowns_per_wave_, 0);
   spectrum_.assign(static_cast<std::size_t>(waves_) * unknowns_per_wave_, 0.0);
   const int n = mesh.num_unknowns();
-  probe_ = Vector("rouleau::FastDiagonalization::probe", n);
-  response_ = Vector("rouleau::FastDiagonalization::response", n);
+  num_unknowns_ = n;
 
   // One plane's 2D transform of its 4 components: input strides along the periodic
   // directions, output [wave][plane][c] with wave = k_first (N_last/2 + 1) + k_last.
@@ -133,17 +132,20 @@ void FastDiagonalization::factor(const FluidOperator& op, const ConstVector&) {
   // The probes sit at the middle of the periodic directions, away from the pinned node 0.
   const int probe_first = first_count_ / 2, probe_last = last_count_ / 2;
   const int group_spacing = 2 * plane_reach + 1;
-  auto probe = Kokkos::create_mirror_view(probe_);  // the same View on the host spaces
+  // Set-up scratch, freed when the factors are made (once per time-step size).
+  Vector probe_vector("rouleau::FastDiagonalization::probe", num_unknowns_);
+  Vector response("rouleau::FastDiagonalization::response", num_unknowns_);
+  auto probe = Kokkos::create_mirror_view(probe_vector);  // the same View on the host spaces
   for (int group = 0; group < group_spacing; ++group) {
     for (int c = 0; c < components; ++c) {
       Kokkos::deep_copy(probe, 0.0);
       for (int j = group; j < wall_planes_; j += group_spacing)
         probe(static_cast<std::size_t>(j) * wall_stride_ + probe_first * first_stride_ + probe_last * last_stride_ +
               c) = 1.0;
-      Kokkos::deep_copy(probe_, probe);
-      op.linear_action(probe_, response_);
+      Kokkos::deep_copy(probe_vector, probe);
+      op.linear_action(probe_vector, response);
       Kokkos::fence();
-      transform(response_.data());
+      transform(response.data());
       Kokkos::fence();
       // Column (j', c) of Â_κ: the response at planes j' − 2 … j' + 2, shifted back by the
       // probe's position: Â_κ = ŷ_κ e^(i κ·m_probe).

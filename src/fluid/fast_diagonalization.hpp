@@ -77,7 +77,7 @@ class FastDiagonalization final : public FluidPreconditioner {
   std::vector<std::complex<double>> bands_;  // LAPACK band storage, [wave][band_rows × n]
   std::vector<int> pivots_;                  // [wave][n]
   mutable std::vector<std::complex<double>> spectrum_;
-  Vector probe_, response_;
+  int num_unknowns_ = 0;
 };
 
 }  // namespace rouleau

@@ -5,6 +5,7 @@
 #include <KokkosBlas1_nrm2.hpp>
 #include <KokkosBlas1_scal.hpp>
 #include <KokkosBlas2_gemv.hpp>
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -12,15 +13,26 @@
 
 namespace rouleau {
 
+namespace {
+constexpr int initial_basis_columns = 4;
+}  // namespace
+
 Gmres::Gmres(int n, const GmresSettings& settings, const Communicator* communicator)
     : settings_(settings),
       communicator_(communicator && communicator->size() > 1 ? communicator : nullptr),
-      basis_("rouleau::Gmres::basis", n, settings.restart + 1),
+      basis_("rouleau::Gmres::basis", n, std::min(settings.restart + 1, initial_basis_columns)),
       gram_schmidt_(n, settings.restart + 1, communicator_),
       work_("rouleau::Gmres::work", n),
       preconditioned_("rouleau::Gmres::preconditioned", n),
       correction_("rouleau::Gmres::correction", n),
       projection_("rouleau::Gmres::projection", settings.restart + 1) {}
+
+void Gmres::reserve_basis(int columns) {
+  const int held = basis_.extent_int(1);
+  if (columns <= held) return;
+  const int wanted = std::min(settings_.restart + 1, std::max(columns, 2 * held));
+  Kokkos::resize(basis_, basis_.extent(0), wanted);
+}
 
 double Gmres::norm(const Kokkos::View<const double*>& v) const {
   if (!communicator_) return KokkosBlas::nrm2(v);
@@ -61,6 +73,7 @@ GmresResult Gmres::solve(const LinearOperator& A, const Preconditioner& M, const
     int k = 0;
     for (; k < m && result.iterations < settings_.max_iterations; ++k) {
       ++result.iterations;
+      reserve_basis(k + 2);
       // w = A M⁻¹ v_k
       M.apply(Kokkos::subview(basis_, Kokkos::ALL(), k), preconditioned_);
       auto w = Kokkos::subview(basis_, Kokkos::ALL(), k + 1);

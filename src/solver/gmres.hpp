@@ -47,7 +47,12 @@ class Gmres {
   double norm(const Kokkos::View<const double*>& v) const;
   GmresSettings settings_;
   const Communicator* communicator_;
-  Kokkos::View<double**, Kokkos::LayoutLeft> basis_;  // V: n × (m+1)
+  // Makes room for `columns` basis vectors (at most m + 1), keeping those held: the basis
+  // grows with the iterations solves have needed, by doubling, so a preconditioner that
+  // solves in a few iterations does not pay m + 1 vectors of memory. It grows in the first
+  // solves of a run, not once the iteration counts have settled.
+  void reserve_basis(int columns);
+  Kokkos::View<double**, Kokkos::LayoutLeft> basis_;  // V: n × (columns held, ≤ m+1)
   GramSchmidt gram_schmidt_;
   Kokkos::View<double*> work_, preconditioned_, correction_;
   Kokkos::View<double*> projection_;  // h: m+1 coefficients of one Gram–Schmidt pass

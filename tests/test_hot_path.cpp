@@ -63,7 +63,11 @@ void stop_counting() {
   Kokkos::Tools::Experimental::set_allocate_data_callback(nullptr);
 }
 
-TEST(HotPath, TimeStepsAllocateNothingAndCopyNothingThroughAHostMirror) {
+// A shear box's transient Stokes steps after warm-up, with the multigrid and with the fast
+// diagonalization (the shear boxes' default).
+class HotPathPreconditioners : public ::testing::TestWithParam<PreconditionerType> {};
+
+TEST_P(HotPathPreconditioners, TimeStepsAllocateNothingAndCopyNothingThroughAHostMirror) {
   const FluidMesh mesh = make_box_mesh({0, 0, 0}, {2, 1, 1}, {8, 8, 4}, {1, 1, 1}, {true, false, true});
   std::array<BoundaryConfig, 6> sides{};
   sides[Side::x_min].type = sides[Side::x_max].type = BoundaryType::periodic;
@@ -74,7 +78,9 @@ TEST(HotPath, TimeStepsAllocateNothingAndCopyNothingThroughAHostMirror) {
   fluid.density = 1.0;
   FluidScales scales;
   scales.reynolds = 1.0;
-  FluidSolver solver(mesh, fluid, sides, SolverConfig{}, scales, true);
+  SolverConfig settings;
+  settings.preconditioner = GetParam();
+  FluidSolver solver(mesh, fluid, sides, settings, scales, true);
   for (int step = 0; step < 2; ++step) ASSERT_TRUE(solver.advance(0.01, TimeScheme::bdf2).converged);
 
   start_counting();
@@ -97,6 +103,13 @@ TEST(HotPath, TimeStepsAllocateNothingAndCopyNothingThroughAHostMirror) {
   EXPECT_EQ(counted.through_mirror, 0);
   EXPECT_EQ(counted.allocations, 0) << "first: " << counted.first_allocation;
 }
+
+INSTANTIATE_TEST_SUITE_P(HotPath, HotPathPreconditioners,
+                         ::testing::Values(PreconditionerType::multigrid, PreconditionerType::fast_diagonalization),
+                         [](const ::testing::TestParamInfo<PreconditionerType>& info) {
+                           return info.param == PreconditionerType::multigrid ? std::string("Multigrid")
+                                                                              : std::string("FastDiagonalization");
+                         });
 
 TEST(HotPath, CoupledStepsWithCellsAllocateNothingAndCopyNothingThroughAHostMirror) {
   // The aggregation scene (two red cells face to face, the Morse interaction on, the

@@ -115,7 +115,8 @@ std::vector<CaseKey> make_case_keys() {
       {"solver", "gmres_max_iterations", Kind::integer, "", "3000", count, {}, "GMRES iterations per solve at most"},
       {"solver", "preconditioner", Kind::choice, "", "\"auto\"", any, spellings<PreconditionerType>(),
        "the fluid solve's preconditioner; auto: fast_diagonalization (FFT along the periodic axes, the Stokes "
-       "operator's exact inverse) on a uniform box periodic along two axes in the Stokes limit, multigrid elsewhere"},
+       "operator's exact inverse) on a box uniform and periodic along two axes in the Stokes limit on one rank "
+       "and CPU threads, multigrid elsewhere"},
       {"solver", "multigrid_smoother", Kind::choice, "", "\"block_jacobi\"", any, spellings<MultigridSmoother>(),
        "the multigrid's smoother: block_jacobi (fully parallel sweeps) or ilu0 (triangular solves)"},
       {"solver", "starting_guess_solutions", Kind::integer, "", "4", Range::closed(0, 16), {},

@@ -186,14 +186,23 @@ void derive_preconditioner(const CaseConfig& config, DerivedQuantities& derived)
   if (config.vessel.enabled) {
     obstacle = "this case's fluid mesh is a vessel's tetrahedra";
   } else {
-    int periodic_axes = 0;
+    int periodic_axes = 0, longest_periodic = 0;
     for (int axis = 0; axis < 3; ++axis)
-      if (config.domain.boundary[2 * axis].type == BoundaryType::periodic) ++periodic_axes;
+      if (config.domain.boundary[2 * axis].type == BoundaryType::periodic) {
+        ++periodic_axes;
+        longest_periodic = std::max(longest_periodic, config.domain.elements[axis]);
+        if (config.domain.wall_grading[axis] != 1.0 && obstacle.empty())
+          obstacle = "this box is graded along a periodic axis (domain.wall_grading)";
+      }
     if (periodic_axes != 2) obstacle = "this box is periodic along " + std::to_string(periodic_axes) + " axes";
-    for (double grading : config.domain.wall_grading)
-      if (grading != 1.0 && obstacle.empty()) obstacle = "this box is graded (domain.wall_grading)";
+    if (obstacle.empty() && longest_periodic < 6)
+      obstacle = "this box has fewer than 6 elements along both periodic axes";
   }
   if (obstacle.empty() && !derived.stokes) obstacle = "this flow is not in the Stokes limit (solver.stokes)";
+#if ROULEAU_DEVICE_MEMORY
+  // fluid/fast_diagonalization.cpp runs on the host threads, over the fluid's vectors.
+  if (obstacle.empty()) obstacle = "this build keeps the fluid's vectors in a GPU's memory";
+#endif
   derived.preconditioner = config.solver.preconditioner;
   if (derived.preconditioner == PreconditionerType::automatic)
     derived.preconditioner = obstacle.empty() ? PreconditionerType::fast_diagonalization : PreconditionerType::multigrid;

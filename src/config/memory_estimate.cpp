@@ -155,12 +155,20 @@ MemoryEstimate estimate_memory(const CaseConfig& config, int threads) {
   switch (preconditioner) {
     case PreconditionerType::none: break;
     case PreconditionerType::block_jacobi: add("block-Jacobi blocks", (256.0 + 128.0 * T) * N); break;
-    case PreconditionerType::fast_diagonalization:
-      // fluid/fast_diagonalization.cpp: per pair of wave numbers (about N/2 over the wall
-      // planes) a banded LU of 4 unknowns per plane, 34 complex bands each, its pivots and
-      // spectrum; a probe and its response.
-      add("fast diagonalization: banded factors per wave number", 1250.0 * N);
+    case PreconditionerType::fast_diagonalization: {
+      // fluid/fast_diagonalization.cpp: per pair of wave numbers, N_first (N_last/2 + 1) of
+      // them (the real transform halves the last periodic axis), a banded LU of 4 unknowns
+      // per wall plane: 34 complex bands (16 B), a pivot and a spectrum entry per unknown;
+      // while factoring, a probe and its response.
+      int wall = 0;
+      while (wall < 2 && config.domain.boundary[2 * wall].type == BoundaryType::periodic) ++wall;
+      const int first = wall == 0 ? 1 : 0, last = wall == 2 ? 1 : 2;
+      const double unknowns_per_wave = 4.0 * (config.domain.elements[wall] + 1.0);
+      const double waves = config.domain.elements[first] * (config.domain.elements[last] / 2 + 1.0);
+      add("fast diagonalization: banded factors per wave number", waves * unknowns_per_wave * (34.0 * 16.0 + 20.0) +
+                                                                      64.0 * N);
       break;
+    }
     case PreconditionerType::ilu0:
       // the Jacobian's block graph and values, the ILU(0) factors and their schedule
       add("ILU(0): Jacobian blocks and factors", (228.0 + 388.0 * B) * N + 4.0 * E);

@@ -2,6 +2,7 @@
 
 #include <fftw3.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -20,7 +21,7 @@ void zgbtrs_(const char* trans, const int* n, const int* kl, const int* ku, cons
 namespace rouleau {
 
 namespace {
-using HostSpace = Kokkos::DefaultHostExecutionSpace;
+using HostExec = Kokkos::DefaultHostExecutionSpace;
 constexpr bool host_readable =
     Kokkos::SpaceAccessibility<Kokkos::HostSpace, Vector::memory_space>::accessible;
 constexpr int components = 4;  // u, v, w, p per dof node
@@ -38,9 +39,17 @@ struct FastDiagonalization::Plans {
 
 std::string FastDiagonalization::unavailable_reason(const FluidMesh& mesh) {
   if (mesh.structured_elements[0] == 0) return "the fluid mesh is not a structured box";
-  int periodic = 0;
-  for (int d = 0; d < 3; ++d) periodic += mesh.periodic[d] ? 1 : 0;
+  int periodic = 0, longest_periodic = 0;
+  for (int d = 0; d < 3; ++d)
+    if (mesh.periodic[d]) {
+      ++periodic;
+      longest_periodic = std::max(longest_periodic, mesh.structured_elements[d]);
+    }
   if (periodic != 2) return "the box is periodic in " + std::to_string(periodic) + " directions, not 2";
+  // The probes sit half a box away from the pinned dof node 0 along the periodic axes; with
+  // 5 elements or fewer along both, every node is within a row's reach of it.
+  if (longest_periodic < 2 * plane_reach + 2)
+    return "the box has fewer than " + std::to_string(2 * plane_reach + 2) + " elements along both periodic axes";
   if (!host_readable) return "it runs on the host and the fluid's vectors live on the device";
   return "";
 }
@@ -100,7 +109,7 @@ void FastDiagonalization::transform(const double* x) const {
   const int wall_stride = wall_stride_;
   // Plane by plane, in parallel (FFTW's new-array execution is thread-safe).
   Kokkos::parallel_for(
-      "rouleau::FastDiagonalization::transform", Kokkos::RangePolicy<HostSpace>(0, wall_planes_),
+      "rouleau::FastDiagonalization::transform", Kokkos::RangePolicy<HostExec>(0, wall_planes_),
       [=](const int j) {
         fftw_execute_dft_r2c(plan, const_cast<double*>(x) + static_cast<std::ptrdiff_t>(j) * wall_stride,
                              spectrum + components * j);
@@ -114,7 +123,7 @@ void FastDiagonalization::inverse_transform(double* x) const {
   const int first_count = first_count_, last_count = last_count_;
   const double scale = 1.0 / (static_cast<double>(first_count_) * last_count_);
   Kokkos::parallel_for(
-      "rouleau::FastDiagonalization::inverse_transform", Kokkos::RangePolicy<HostSpace>(0, wall_planes_),
+      "rouleau::FastDiagonalization::inverse_transform", Kokkos::RangePolicy<HostExec>(0, wall_planes_),
       [=](const int j) {
         double* plane = x + static_cast<std::ptrdiff_t>(j) * wall_stride;
         fftw_execute_dft_c2r(plan, spectrum + components * j, plane);
@@ -131,6 +140,13 @@ void FastDiagonalization::factor(const FluidOperator& op, const ConstVector&) {
   const int last_waves = last_count_ / 2 + 1;
   // The probes sit at the middle of the periodic directions, away from the pinned node 0.
   const int probe_first = first_count_ / 2, probe_last = last_count_ / 2;
+  // Is the pressure's level pinned (at dof node 0: no traction side)? Then the zero wave
+  // number's block is singular and gets the pin's counterpart below.
+  bool pressure_pinned = false;
+  {
+    auto dirichlet = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), op.dirichlet_dofs());
+    for (std::size_t k = 0; k < dirichlet.extent(0); ++k) pressure_pinned = pressure_pinned || dirichlet(k) == 3;
+  }
   const int group_spacing = 2 * plane_reach + 1;
   // Set-up scratch, freed when the factors are made (once per time-step size).
   Vector probe_vector("rouleau::FastDiagonalization::probe", num_unknowns_);
@@ -172,7 +188,7 @@ void FastDiagonalization::factor(const FluidOperator& op, const ConstVector&) {
   }
   // The zero wave number: the mean pressure of the pinned node's plane instead of its
   // continuity row (the shift-invariant operator leaves a uniform pressure free).
-  {
+  if (pressure_pinned) {
     const int row = components * pinned_plane_ + 3;
     std::complex<double>* band = bands_.data();
     for (int column = std::max(0, row - kl); column <= std::min(n - 1, row + ku); ++column)
@@ -180,7 +196,7 @@ void FastDiagonalization::factor(const FluidOperator& op, const ConstVector&) {
   }
   int failures = 0;
   Kokkos::parallel_reduce(
-      "rouleau::FastDiagonalization::factor_waves", Kokkos::RangePolicy<HostSpace>(0, waves_),
+      "rouleau::FastDiagonalization::factor_waves", Kokkos::RangePolicy<HostExec>(0, waves_),
       [&](const int wave, int& failed) {
         int info = 0;
         zgbtrf_(&n, &n, &kl, &ku, bands_.data() + static_cast<std::size_t>(wave) * ldab * n, &ldab,
@@ -205,7 +221,7 @@ void FastDiagonalization::apply(const ConstVector& r, const Vector& z) const {
   const int* pivots = pivots_.data();
   std::complex<double>* spectrum = spectrum_.data();
   Kokkos::parallel_for(
-      "rouleau::FastDiagonalization::solve_waves", Kokkos::RangePolicy<HostSpace>(0, waves_), [=](const int wave) {
+      "rouleau::FastDiagonalization::solve_waves", Kokkos::RangePolicy<HostExec>(0, waves_), [=](const int wave) {
         int info = 0;
         const char no_transpose = 'N';
         zgbtrs_(&no_transpose, &n, &kl, &ku, &one, bands + static_cast<std::size_t>(wave) * ldab * n, &ldab,
@@ -213,6 +229,7 @@ void FastDiagonalization::apply(const ConstVector& r, const Vector& z) const {
                 1);
       });
   inverse_transform(z.data());
+  HostExec().fence();
 }
 
 }  // namespace rouleau

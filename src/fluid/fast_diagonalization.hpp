@@ -23,9 +23,10 @@
 // of the node's wall plane. The two differ by a rank-one term, which GMRES removes in one
 // iteration. What the cells add (the semi-implicit stiffness) is left to GMRES.
 //
-// Needs: a structured box (make_box_mesh) of uniform hexahedra, exactly two periodic
-// directions, the Stokes operator (no convection), one rank, and a memory space the host
-// can read (FFTW and LAPACK run on the host threads).
+// Needs: a structured box (make_box_mesh) of hexahedra uniform along its two periodic
+// directions (graded across the walls or not), at least 6 elements along one of them, the
+// Stokes operator (no convection), one rank, and a memory space the host can read (FFTW and
+// LAPACK run on the host threads).
 #include <Kokkos_Core.hpp>
 #include <complex>
 #include <memory>
@@ -49,7 +50,8 @@ class FastDiagonalization final : public FluidPreconditioner {
   FastDiagonalization& operator=(const FastDiagonalization&) = delete;
 
   // Reads the blocks Â_κ off `op` (its Stokes operator; the state does not enter) and
-  // factors them. Throws when `op` is not the shift-invariant Stokes stencil.
+  // factors them. Throws when a block is singular (an operator that is not shift-invariant
+  // is not detected otherwise: it makes a weaker preconditioner).
   void factor(const FluidOperator& op, const ConstVector& state) override;
   // z = M⁻¹ r.
   void apply(const ConstVector& r, const Vector& z) const override;
@@ -73,7 +75,9 @@ class FastDiagonalization final : public FluidPreconditioner {
   int first_stride_ = 0, last_stride_ = 0;
   int pinned_plane_ = 0;             // wall plane of dof node 0 (the pressure pin)
   int unknowns_per_wave_ = 0, waves_ = 0;
-  int lower_bands_ = 11, upper_bands_ = 11, band_rows_ = 0;
+  // Bands either side: a row reaches 2 wall planes of 4 unknowns either way.
+  static constexpr int bands = 4 * (2 + 1) - 1;
+  int lower_bands_ = bands, upper_bands_ = bands, band_rows_ = 0;
   std::vector<std::complex<double>> bands_;  // LAPACK band storage, [wave][band_rows × n]
   std::vector<int> pivots_;                  // [wave][n]
   mutable std::vector<std::complex<double>> spectrum_;

@@ -41,9 +41,12 @@ Simulation::Simulation(const CaseConfig& config, const std::string& mesh_cache_d
   if (several_ranks && ranks->rank() == 0) ranks->barrier();
   if (several_ranks)
     distribution_ = times_.time("fluid setup", [&] { return std::make_unique<FluidDistribution>(*ranks, mesh_); });
-  // The preconditioner "auto" stands for (derived_.preconditioner).
+  // The preconditioner "auto" stands for (derived_.preconditioner); across ranks, where the
+  // fast diagonalization does not run, the multigrid.
   SolverConfig solver = config_.solver;
   solver.preconditioner = derived_.preconditioner;
+  if (several_ranks && config_.solver.preconditioner == PreconditionerType::automatic)
+    solver.preconditioner = PreconditionerType::multigrid;
   fluid_ = times_.time("fluid setup", [&] {
     return std::make_unique<FluidSolver>(mesh_, config_.fluid, case_boundaries(config_), solver, scales,
                                          derived_.stokes, distribution_.get());

@@ -179,8 +179,10 @@ void derive_stable_step(const CaseConfig& config, DerivedQuantities& derived) {
 }  // namespace
 
 namespace {
-// derived.preconditioner: "auto" becomes fast diagonalization where it applies (a uniform
-// box periodic along two axes, in the Stokes limit) and the multigrid elsewhere.
+// derived.preconditioner: "auto" becomes fast diagonalization where it applies (a box
+// periodic along two axes and uniform along them, at least 6 elements along one, in the
+// Stokes limit, in a build whose vectors the host threads read; fluid/fast_diagonalization.hpp)
+// and the multigrid elsewhere (run/simulation.cpp also takes the multigrid across ranks).
 void derive_preconditioner(const CaseConfig& config, DerivedQuantities& derived) {
   std::string& obstacle = derived.fast_diagonalization_obstacle;
   if (config.vessel.enabled) {

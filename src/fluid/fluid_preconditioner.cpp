@@ -91,8 +91,8 @@ std::unique_ptr<FluidPreconditioner> make_fluid_preconditioner(const SolverConfi
   switch (solver.preconditioner) {
     case PreconditionerType::block_jacobi: return std::make_unique<PointBlockJacobi>(mesh);
     case PreconditionerType::ilu0: return std::make_unique<AssembledIlu0>(mesh);
-    // "auto" is resolved when a case is loaded (config/read_settings.cpp); a solver set up
-    // without a case takes the multigrid, which applies everywhere.
+    // "auto" is resolved from a case (config/derived.cpp, run/simulation.cpp); a solver set
+    // up without a case takes the multigrid, which applies everywhere.
     case PreconditionerType::automatic:
     case PreconditionerType::multigrid: return std::make_unique<AssembledMultigrid>(mesh, multigrid_settings(solver));
     case PreconditionerType::fast_diagonalization: {

@@ -178,6 +178,18 @@ void derive_stable_step(const CaseConfig& config, DerivedQuantities& derived) {
 
 }  // namespace
 
+std::string fast_diagonalization_box_obstacle(const std::array<bool, 3>& periodic, const std::array<int, 3>& elements) {
+  int periodic_axes = 0, longest_periodic = 0;
+  for (int axis = 0; axis < 3; ++axis)
+    if (periodic[axis]) {
+      ++periodic_axes;
+      longest_periodic = std::max(longest_periodic, elements[axis]);
+    }
+  if (periodic_axes != 2) return "is periodic along " + std::to_string(periodic_axes) + " axes";
+  if (longest_periodic < 6) return "has fewer than 6 elements along both periodic axes";
+  return "";
+}
+
 namespace {
 // derived.preconditioner: "auto" becomes fast diagonalization where it applies (a box
 // periodic along two axes and uniform along them, at least 6 elements along one, in the
@@ -188,17 +200,14 @@ void derive_preconditioner(const CaseConfig& config, DerivedQuantities& derived)
   if (config.vessel.enabled) {
     obstacle = "this case's fluid mesh is a vessel's tetrahedra";
   } else {
-    int periodic_axes = 0, longest_periodic = 0;
-    for (int axis = 0; axis < 3; ++axis)
-      if (config.domain.boundary[2 * axis].type == BoundaryType::periodic) {
-        ++periodic_axes;
-        longest_periodic = std::max(longest_periodic, config.domain.elements[axis]);
-        if (config.domain.wall_grading[axis] != 1.0 && obstacle.empty())
-          obstacle = "this box is graded along a periodic axis (domain.wall_grading)";
-      }
-    if (periodic_axes != 2) obstacle = "this box is periodic along " + std::to_string(periodic_axes) + " axes";
-    if (obstacle.empty() && longest_periodic < 6)
-      obstacle = "this box has fewer than 6 elements along both periodic axes";
+    std::array<bool, 3> periodic{};
+    for (int axis = 0; axis < 3; ++axis) {
+      periodic[axis] = config.domain.boundary[2 * axis].type == BoundaryType::periodic;
+      if (periodic[axis] && config.domain.wall_grading[axis] != 1.0 && obstacle.empty())
+        obstacle = "this box is graded along a periodic axis (domain.wall_grading)";
+    }
+    const std::string shape = fast_diagonalization_box_obstacle(periodic, config.domain.elements);
+    if (!shape.empty()) obstacle = "this box " + shape;
   }
   if (obstacle.empty() && !derived.stokes) obstacle = "this flow is not in the Stokes limit (solver.stokes)";
 #if ROULEAU_DEVICE_MEMORY

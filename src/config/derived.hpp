@@ -1,6 +1,7 @@
 #pragma once
 // Scales, Reynolds number and the Stokes decision derived from a case.
 // Host-only: includes no Kokkos header.
+#include <array>
 #include <string>
 
 #include "config/case_config.hpp"
@@ -17,6 +18,12 @@ namespace rouleau {
 //  pressure scale μU/L, Re = ρUL/μ; Stokes when solver.stokes = "on", or "auto" and Re is
 //  below solver.stokes_reynolds_threshold. stokes_reason says which, in one sentence.
 DerivedQuantities derive_quantities(const CaseConfig& config);
+
+// Why a structured box periodic along the axes `periodic`, with `elements` per axis, does
+// not allow the fast diagonalization (fluid/fast_diagonalization.hpp); empty when it does:
+// exactly two periodic axes, and at least 6 elements along one of them (the probes sit
+// half a box away from the pinned dof node 0, beyond a row's reach of 2 planes).
+std::string fast_diagonalization_box_obstacle(const std::array<bool, 3>& periodic, const std::array<int, 3>& elements);
 
 // The fluid domain in one line: "8 x 8 x 8 hexahedra (512 elements), 20 x 20 x 20 μm" or
 // "vessel of tetrahedra (Gmsh), radius 5 μm, throat 2 μm, length 60 μm, elements 1 μm

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "config/derived.hpp"
 #include "util/profiling_region.hpp"
 
 // LAPACK's banded LU (Fortran; the trailing length is gfortran's hidden string length).
@@ -39,17 +40,8 @@ struct FastDiagonalization::Plans {
 
 std::string FastDiagonalization::unavailable_reason(const FluidMesh& mesh) {
   if (mesh.structured_elements[0] == 0) return "the fluid mesh is not a structured box";
-  int periodic = 0, longest_periodic = 0;
-  for (int d = 0; d < 3; ++d)
-    if (mesh.periodic[d]) {
-      ++periodic;
-      longest_periodic = std::max(longest_periodic, mesh.structured_elements[d]);
-    }
-  if (periodic != 2) return "the box is periodic in " + std::to_string(periodic) + " directions, not 2";
-  // The probes sit half a box away from the pinned dof node 0 along the periodic axes; with
-  // 5 elements or fewer along both, every node is within a row's reach of it.
-  if (longest_periodic < 2 * plane_reach + 2)
-    return "the box has fewer than " + std::to_string(2 * plane_reach + 2) + " elements along both periodic axes";
+  const std::string shape = fast_diagonalization_box_obstacle(mesh.periodic, mesh.structured_elements);
+  if (!shape.empty()) return "the box " + shape;
   if (!host_readable) return "it runs on the host and the fluid's vectors live on the device";
   return "";
 }
@@ -70,7 +62,6 @@ FastDiagonalization::FastDiagonalization(const FluidMesh& mesh) : plans_(std::ma
   wall_stride_ = stride[wall_];
   first_stride_ = stride[first_];
   last_stride_ = stride[last_];
-  pinned_plane_ = 0;
   unknowns_per_wave_ = components * wall_planes_;
   const int last_waves = last_count_ / 2 + 1;  // the real transform's halved direction
   waves_ = first_count_ * last_waves;
@@ -186,10 +177,11 @@ void FastDiagonalization::factor(const FluidOperator& op, const ConstVector&) {
       }
     }
   }
-  // The zero wave number: the mean pressure of the pinned node's plane instead of its
-  // continuity row (the shift-invariant operator leaves a uniform pressure free).
+  // The zero wave number: the mean pressure of the pinned node's plane (dof node 0 lies on
+  // wall plane 0) instead of its continuity row (the shift-invariant operator leaves a
+  // uniform pressure free).
   if (pressure_pinned) {
-    const int row = components * pinned_plane_ + 3;
+    const int row = 3;
     std::complex<double>* band = bands_.data();
     for (int column = std::max(0, row - kl); column <= std::min(n - 1, row + ku); ++column)
       band[kl + ku + row - column + static_cast<std::size_t>(column) * ldab] = column == row ? 1.0 : 0.0;

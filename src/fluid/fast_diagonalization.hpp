@@ -73,7 +73,6 @@ class FastDiagonalization final : public FluidPreconditioner {
   int wall_planes_ = 0, first_count_ = 0, last_count_ = 0;
   int wall_stride_ = 0;              // entries between consecutive wall planes
   int first_stride_ = 0, last_stride_ = 0;
-  int pinned_plane_ = 0;             // wall plane of dof node 0 (the pressure pin)
   int unknowns_per_wave_ = 0, waves_ = 0;
   // Bands either side: a row reaches 2 wall planes of 4 unknowns either way.
   static constexpr int bands = 4 * (2 + 1) - 1;

@@ -13,7 +13,8 @@
 // the stencil's neighbours and the PSPG viscous term's projected gradient at theirs). Each
 // is factored once (LAPACK's banded LU with partial pivoting), and an application is a
 // forward transform, one banded solve per wave-number pair and an inverse transform: the
-// exact inverse of the fluid's operator at the cost of about two stencil applications.
+// exact inverse of the fluid's operator (in a stack_shear profile its banded solves take
+// 3 % of a step, the stencil 6 %).
 //
 // The blocks Â_κ are not derived by hand but read off the operator itself, so they are
 // exactly what GMRES applies: the operator is applied to unit vectors at one node of every

@@ -23,7 +23,10 @@ Per scene, thread count and binary it reports:
   divided by the seconds of one application of the fluid operator on the same mesh
   (bench/scene_operator.cpp, this tree's binary, same thread count): the solve's overhead
   ratio, how many operator applications one GMRES iteration costs;
-- the run's peak memory (resident set, as the run reports it) per fluid unknown.
+- the run's peak memory (resident set, as the run reports it) per fluid unknown;
+- the answers' largest difference: after the last timed step, the largest difference between
+  the two binaries' cell centroids and gaps (diagnostics.csv, μm), which must stay at the
+  solver tolerance's level (a faster step may not change the result).
 The targets they are judged by are written below, before any run.
 """
 import argparse
@@ -101,7 +104,8 @@ def build_baseline(revision):
 
 def run(binary, case_file, folder, steps, threads, binding=None):
     """One run of `steps` steps: (the step stages' seconds, the fluid solve's seconds, the
-    GMRES iterations of each step, the fluid unknowns, the peak memory in MiB)."""
+    GMRES iterations of each step, the fluid unknowns, the peak memory in MiB, the last
+    diagnostics row)."""
     dt = case_time_step(case_file)
     command = [binary, "run", case_file, "--out", folder, "--overwrite", "--no-progress", "--threads", str(threads),
                "--set", f"time.end_s={steps * dt!r}", "--set", "output.fields=false",
@@ -113,11 +117,25 @@ def run(binary, case_file, folder, steps, threads, binding=None):
     stages = stage_times(log)
     step_seconds = sum(seconds for stage, seconds in stages.items() if stage not in NOT_STEP_STAGES)
     with open(os.path.join(folder, "diagnostics.csv")) as f:
-        gmres = {int(row["step"]): int(float(row["gmres_iterations"])) for row in csv.DictReader(f)}
+        rows = list(csv.DictReader(f))
+    gmres = {int(row["step"]): int(float(row["gmres_iterations"])) for row in rows}
     unknowns, peak = UNKNOWNS.search(log), PEAK_MEMORY.search(log)
     if not unknowns or not peak:
         fail(f"{' '.join(command)}: the log has no unknowns or peak memory line")
-    return step_seconds, stages.get("fluid solve", 0.0), gmres, int(unknowns.group(1)), float(peak.group(1))
+    return (step_seconds, stages.get("fluid solve", 0.0), gmres, int(unknowns.group(1)), float(peak.group(1)),
+            rows[-1])
+
+
+# The diagnostics columns whose difference between two binaries is the answers' difference
+# [μm]: each cell's centroid and each pair's gap.
+ANSWER_COLUMNS = re.compile(r"^(cell\d+_centroid_[xyz]_um|gap_\d+_\d+_um)$")
+
+
+def answer_difference(row_a, row_b):
+    """The largest |a − b| over the centroid and gap columns both rows hold [μm]; 0 when none
+    (a scene without cells)."""
+    columns = [c for c in row_a if ANSWER_COLUMNS.match(c) and c in row_b and row_a[c] and row_b[c]]
+    return max((abs(float(row_a[c]) - float(row_b[c])) for c in columns), default=0.0)
 
 
 def measure(binary, case_file, scratch, threads, warmup, steps, binding=None):
@@ -127,7 +145,8 @@ def measure(binary, case_file, scratch, threads, warmup, steps, binding=None):
     long = run(binary, case_file, os.path.join(scratch, "long"), warmup + steps, threads, binding)
     iterations = [long[2][s] for s in range(warmup + 1, warmup + steps + 1) if s in long[2]]
     return {"seconds_per_step": (long[0] - short[0]) / steps, "fluid_seconds_per_step": (long[1] - short[1]) / steps,
-            "gmres_per_step": sum(iterations) / max(len(iterations), 1), "unknowns": long[3], "peak_mib": long[4]}
+            "gmres_per_step": sum(iterations) / max(len(iterations), 1), "unknowns": long[3], "peak_mib": long[4],
+            "last_row": long[5]}
 
 
 def operator_seconds(rouleau, case_file, threads):
@@ -221,6 +240,7 @@ def main():
                         if name not in best or result["seconds_per_step"] < best[name]["seconds_per_step"]:
                             best[name] = result
                 op_seconds, path = operator_seconds(binaries["new"], case_file, t)
+                difference = answer_difference(best["baseline"]["last_row"], best["new"]["last_row"])
                 for name in ("baseline", "new"):
                     r = best[name]
                     per_iteration = r["fluid_seconds_per_step"] / r["gmres_per_step"] if r["gmres_per_step"] else 0.0
@@ -233,7 +253,8 @@ def main():
                                  "overhead_ratio": f"{per_iteration / op_seconds:.1f}",
                                  "peak_mib": f"{r['peak_mib']:.0f}",
                                  "bytes_per_unknown": f"{r['peak_mib'] * 2**20 / r['unknowns']:.0f}",
-                                 "speedup": f"{best['baseline']['seconds_per_step'] / r['seconds_per_step']:.2f}"})
+                                 "speedup": f"{best['baseline']['seconds_per_step'] / r['seconds_per_step']:.2f}",
+                                 "answer_difference_um": f"{difference:.2e}"})
 
     with open(args.out, "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
@@ -244,15 +265,16 @@ def main():
     print(f"\n{args.warmup} warm-up steps, then {args.steps} timed steps, least of {args.repeats} runs; baseline "
           f"{baseline_name}; wrote {args.out} and {figure}\n")
     print("| case | threads | s/step baseline | s/step new | speed-up | target (2 threads) | GMRES/step | "
-          "GMRES iteration / operator | bytes per unknown |")
-    print("|---|---|---|---|---|---|---|---|---|")
+          "GMRES iteration / operator | bytes per unknown | answers' largest difference (μm) |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
     for case in dict.fromkeys(r["case"] for r in rows):
         for t in threads:
             old = next(r for r in rows if r["case"] == case and r["threads"] == t and r["binary"] == "baseline")
             new = next(r for r in rows if r["case"] == case and r["threads"] == t and r["binary"] == "new")
             print(f"| {case} | {t} | {old['seconds_per_step']} | {new['seconds_per_step']} | {new['speedup']}× | "
                   f"{TARGET_SECONDS_PER_STEP.get(case, '')} | {old['gmres_per_step']} → {new['gmres_per_step']} | "
-                  f"{old['overhead_ratio']} → {new['overhead_ratio']} | {new['bytes_per_unknown']} |")
+                  f"{old['overhead_ratio']} → {new['overhead_ratio']} | {new['bytes_per_unknown']} | "
+                  f"{new['answer_difference_um']} |")
 
 
 if __name__ == "__main__":

@@ -6,7 +6,7 @@
 // within 5e-4. The sphere is meshed at the "fine" preset: a faceted coarse sphere turns
 // differently by up to 0.2 % once the fluid mesh resolves its facets (measured: 0.03 %,
 // 0.10 %, 0.23 % at a/h = 1, 2, 3 with the coarse mesh). Measured: 3.4e-4, 3.2e-4,
-// 2.3e-4, 9 minutes on 2 cores.
+// 2.3e-4, 14 s on 2 cores.
 #include <gtest/gtest.h>
 #include <unistd.h>
 

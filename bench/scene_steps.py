@@ -132,9 +132,13 @@ ANSWER_COLUMNS = re.compile(r"^(cell\d+_centroid_[xyz]_um|gap_\d+_\d+_um)$")
 
 
 def answer_difference(row_a, row_b):
-    """The largest |a − b| over the centroid and gap columns both rows hold [μm]; 0 when none
-    (a scene without cells)."""
-    columns = [c for c in row_a if ANSWER_COLUMNS.match(c) and c in row_b and row_a[c] and row_b[c]]
+    """The largest |a − b| over the centroid and gap columns both rows hold [μm]; 0 for a scene
+    without cells, NaN when the rows have such columns but none in common (renamed columns
+    must not read as agreement)."""
+    own = [c for c in row_b if ANSWER_COLUMNS.match(c) and row_b[c]]
+    columns = [c for c in own if row_a.get(c)]
+    if own and not columns:
+        return float("nan")
     return max((abs(float(row_a[c]) - float(row_b[c])) for c in columns), default=0.0)
 
 

@@ -186,7 +186,9 @@ std::string fast_diagonalization_box_obstacle(const std::array<bool, 3>& periodi
       longest_periodic = std::max(longest_periodic, elements[axis]);
     }
   if (periodic_axes != 2) return "is periodic along " + std::to_string(periodic_axes) + " axes";
-  if (longest_periodic < 6) return "has fewer than 6 elements along both periodic axes";
+  if (longest_periodic < fast_diagonalization_min_periodic_elements)
+    return "has fewer than " + std::to_string(fast_diagonalization_min_periodic_elements) +
+           " elements along both periodic axes";
   return "";
 }
 

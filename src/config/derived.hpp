@@ -23,6 +23,7 @@ DerivedQuantities derive_quantities(const CaseConfig& config);
 // not allow the fast diagonalization (fluid/fast_diagonalization.hpp); empty when it does:
 // exactly two periodic axes, and at least 6 elements along one of them (the probes sit
 // half a box away from the pinned dof node 0, beyond a row's reach of 2 planes).
+constexpr int fast_diagonalization_min_periodic_elements = 6;
 std::string fast_diagonalization_box_obstacle(const std::array<bool, 3>& periodic, const std::array<int, 3>& elements);
 
 // The fluid domain in one line: "8 x 8 x 8 hexahedra (512 elements), 20 x 20 x 20 μm" or

@@ -27,6 +27,10 @@ constexpr bool host_readable =
     Kokkos::SpaceAccessibility<Kokkos::HostSpace, Vector::memory_space>::accessible;
 constexpr int components = 4;  // u, v, w, p per dof node
 constexpr int plane_reach = 2;  // wall planes a row reaches on either side
+// The probes sit half a box from the pinned dof node 0 along a periodic axis; the box rule
+// read by the case loader must keep them beyond a row's reach of it.
+static_assert(fast_diagonalization_min_periodic_elements >= 2 * plane_reach + 2,
+              "the box rule lets a probe fall within reach of the pressure pin");
 constexpr double pi = 3.14159265358979323846;
 }  // namespace
 

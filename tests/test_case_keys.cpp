@@ -48,6 +48,7 @@ const CaseTables box_case{
     {"[time]", {{"dt_s", "0.001"}, {"end_s", "0.01"}}},
     {"[cell_kinds.normal]", {}},
     {"[cell_kinds.bent]", {{"shape", "\"sickle\""}}},
+    {"[cell_kinds.rod]", {{"shape", "\"spheroid\""}, {"body", "\"filled\""}}},
     {"[[cells]]", {{"kind", "\"normal\""}, {"center_um", "[5, 10, 15]"}}},
     {"[interaction]", {}},
     {"[[interaction.pair]]", {{"kind_a", "\"normal\""}, {"kind_b", "\"sickle\""}}},
@@ -84,7 +85,7 @@ KeyPlace place_of(const CaseKey& key) {
   if (section == "vessel" || section == "boundary.wall") return {&vessel_case, "[" + section + "]", section};
   if (section == "cell_kinds.NAME") {
     const bool sickle_size = name == "length_um" || name == "width_um" || name == "thickness_um" || name == "arc_radius_um";
-    const std::string kind = sickle_size ? "bent" : "normal";
+    const std::string kind = sickle_size ? "bent" : name == "axis_ratio" ? "rod" : "normal";
     return {&box_case, "[cell_kinds." + kind + "]", "cell_kinds." + kind};
   }
   if (section == "cells" || section == "interaction.pair") return {&box_case, "[[" + section + "]]", section + "[0]"};

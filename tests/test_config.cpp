@@ -256,7 +256,7 @@ TEST(ConfigLoad, CellErrorsSayWhatIsWrong) {
             "applies to body = \"shell\" only, and this kind's body is \"filled\" (give shear_modulus_Pa)");
   EXPECT_EQ(reason_of("poisson_ratio_one_half.toml"), "must be > -1 and < 0.5, got 0.5");
   EXPECT_EQ(reason_of("unknown_cell_shape.toml"),
-            "must be one of \"rbc\", \"sickle\", \"sphere\"; got \"rbd\"; did you mean \"rbc\"?");
+            "must be one of \"rbc\", \"sickle\", \"sphere\", \"spheroid\"; got \"rbd\"; did you mean \"rbc\"?");
   EXPECT_EQ(reason_of("unknown_cell_kind.toml"),
             "must be one of \"normal\", \"sickle\", \"capsule\"; got \"sickel\"; did you mean \"sickle\"?");
   EXPECT_EQ(reason_of("cells_not_array_of_tables.toml"), "expected an array of tables ([[cells]] entries), got a table");

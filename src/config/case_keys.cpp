@@ -140,10 +140,14 @@ std::vector<CaseKey> make_case_keys() {
       {"checkpoint", "keep", Kind::integer, "", "2", Range::closed(1, 1000), {}, "the newest K checkpoints stay on disk"},
 
       {"cell_kinds.NAME", "shape", Kind::choice, "", "\"rbc\"", any, spellings<CellShape>(),
-       "Evans–Fung biconcave disc, crescent (an ellipsoid bent along an arc) or sphere"},
+       "Evans–Fung biconcave disc, crescent (an ellipsoid bent along an arc), sphere, or spheroid (about its "
+       "local z axis; filled only)"},
       {"cell_kinds.NAME", "body", Kind::choice, "", "\"shell\"", any, spellings<CellBody>(),
        "a membrane layer enclosing fluid, or a solid body"},
-      {"cell_kinds.NAME", "diameter_um", Kind::number, "μm", "7.82", positive, {}, "rbc, sphere: the diameter"},
+      {"cell_kinds.NAME", "diameter_um", Kind::number, "μm", "7.82", positive, {},
+       "rbc, sphere: the diameter; spheroid: the equatorial diameter"},
+      {"cell_kinds.NAME", "axis_ratio", Kind::number, "", "1", Range::closed(0.05, 20), {},
+       "spheroid: polar over equatorial semi-axis, < 1 oblate (a disc), > 1 prolate (a rod)"},
       {"cell_kinds.NAME", "length_um", Kind::number, "μm", "14", positive, {}, "sickle: the centre line's length"},
       {"cell_kinds.NAME", "width_um", Kind::number, "μm", "4.2", positive, {}, "sickle: the width in the bending plane"},
       {"cell_kinds.NAME", "thickness_um", Kind::number, "μm", "3", positive, {}, "sickle: the thickness across it"},

@@ -91,7 +91,8 @@ double smallest_fluid_element(const CaseConfig& config) {
 // The radius over which a kind's area-constraint mode varies, times ⟨4(H − H̄)²⟩ R/π R:
 // the shape factor κ of that mode's stiffness (below), measured on the meshes: 1.6 for the
 // Evans–Fung disc (⟨4(H − H̄)²⟩ = 0.33 /μm² at R = 3.91 μm), 0.014 for a sphere (only
-// inflation, which the cavity blocks, changes its area); the sickle is taken as the disc.
+// inflation, which the cavity blocks, changes its area); the sickle and the spheroid
+// (not measured) are taken as the disc, the larger.
 double area_mode_shape_factor(CellShape shape) { return shape == CellShape::sphere ? 0.014 : 1.6; }
 
 // The explicit coupling's stable step (docs/method.md, "The stable step"): a membrane of modulus G_s

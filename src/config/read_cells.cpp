@@ -29,6 +29,7 @@ std::vector<std::string_view> size_keys_of(CellShape shape) {
   switch (shape) {
     case CellShape::rbc:
     case CellShape::sphere: return {"diameter_um"};
+    case CellShape::spheroid: return {"diameter_um", "axis_ratio"};
     case CellShape::sickle: return {"length_um", "width_um", "thickness_um", "arc_radius_um"};
   }
   return {};
@@ -88,6 +89,8 @@ HalfDimension smallest_half_dimension(const CellKindConfig& kind) {
                                           " × diameter_um = " + format_number(centre_thickness) + " μm)"};
     }
     case CellShape::sphere: return {0.5 * kind.diameter, "the radius (diameter_um / 2)"};
+    case CellShape::spheroid:  // filled only: no shell needs this
+      return {0.5 * kind.diameter * std::min(1.0, kind.axis_ratio), "the smaller semi-axis"};
     case CellShape::sickle: {
       HalfDimension smallest{0.5 * kind.length, "length_um / 2"};
       if (0.5 * kind.width < smallest.value) smallest = {0.5 * kind.width, "width_um / 2"};
@@ -105,6 +108,8 @@ void check_cell_body(const TableReader& reader, const CellKindConfig& kind) {
     reader.fail("arc_radius_um", "must be > width_um / 2 = " + format_number(0.5 * kind.width) +
                                      " μm (else the crescent's inner edge crosses its centre of curvature), got " +
                                      format_number(kind.arc_radius));
+  if (kind.shape == CellShape::spheroid && kind.body == CellBody::shell)
+    reader.fail("body", "a spheroid is meshed as a filled body only: give body = \"filled\" (the default is \"shell\")");
   if (kind.body != CellBody::shell) return;
   const HalfDimension limit = smallest_half_dimension(kind);
   if (!(kind.shell_thickness < limit.value))
@@ -118,6 +123,7 @@ void read_cell_kind(const TableReader& reader, CellKindConfig& kind) {
   assign(kind.body, reader.choice<CellBody>("body"));
   check_keys_apply_to_shape_and_body(reader, kind);
   assign(kind.diameter, reader.number("diameter_um"));
+  assign(kind.axis_ratio, reader.number("axis_ratio"));
   assign(kind.length, reader.number("length_um"));
   assign(kind.width, reader.number("width_um"));
   assign(kind.thickness, reader.number("thickness_um"));

@@ -83,6 +83,10 @@ void write_cell_kind(TomlWriter& toml_file, const CellKindConfig& kind) {
   switch (kind.shape) {
     case CellShape::rbc:
     case CellShape::sphere: toml_file.key("diameter_um", kind.diameter); break;
+    case CellShape::spheroid:
+      toml_file.key("diameter_um", kind.diameter);
+      toml_file.key("axis_ratio", kind.axis_ratio);
+      break;
     case CellShape::sickle:
       toml_file.key("length_um", kind.length);
       toml_file.key("width_um", kind.width);

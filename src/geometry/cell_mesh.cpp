@@ -9,6 +9,8 @@
 //           about z.
 //   sphere  an OpenCASCADE sphere; the shell is the sphere of radius R minus the one of
 //           radius R − h.
+//   spheroid  an OpenCASCADE unit sphere, its poles turned onto the x axis, scaled by
+//           (a, a, c); filled only (cell_shapes.cpp says why).
 //   sickle  the unbent ellipsoid (an OpenCASCADE unit sphere, its poles turned onto the x
 //           axis, scaled by a, b, c; the shell minus the one with a − h, b − h, c − h) is
 //           meshed with element sizes from the exact curvature, then every node is moved by
@@ -151,26 +153,36 @@ void add_sphere(const CellGeometry& kind) {
   }
 }
 
-// The unbent ellipsoid (shell: minus its cavity); the nodes are bent after meshing.
-void add_unbent_sickle(const CellGeometry& kind) {
-  const SickleBend bend = sickle_bend(kind);
-  const auto add_ellipsoid = [](double a, double b, double c) {
-    // The unit sphere's poles turned onto the x axis before scaling, so that they become
-    // the tips: with the poles on the flat sides, Gmsh 4.8's surface mesher fails on the
-    // scaled (B-spline) surface.
+// The ellipsoid with semi-axes a, b, c along x, y, z; for a shell minus the one with
+// a − h, b − h, c − h.
+void add_ellipsoid(const CellGeometry& kind, double a, double b, double c) {
+  const auto add_solid = [](double a, double b, double c) {
+    // The unit sphere's poles turned onto the x axis before scaling: with the poles on the
+    // flat sides, Gmsh 4.8's surface mesher fails on the scaled (B-spline) surface.
     const int tag = gmsh::model::occ::addSphere(0, 0, 0, 1.0);
     gmsh::model::occ::rotate({{3, tag}}, 0, 0, 0, 0, 1, 0, pi / 2);
     gmsh::model::occ::dilate({{3, tag}}, 0, 0, 0, a, b, c);
     return tag;
   };
-  const int outer = add_ellipsoid(bend.semi_length, bend.semi_width, bend.semi_thickness);
+  const int outer = add_solid(a, b, c);
   if (kind.body == CellBody::shell) {
     const double h = kind.shell_thickness;
-    const int cavity = add_ellipsoid(bend.semi_length - h, bend.semi_width - h, bend.semi_thickness - h);
+    const int cavity = add_solid(a - h, b - h, c - h);
     gmsh::vectorpair result;
     std::vector<gmsh::vectorpair> result_map;
     gmsh::model::occ::cut({{3, outer}}, {{3, cavity}}, result, result_map);
   }
+}
+
+// The unbent ellipsoid (shell: minus its cavity); the nodes are bent after meshing.
+void add_unbent_sickle(const CellGeometry& kind) {
+  const SickleBend bend = sickle_bend(kind);
+  add_ellipsoid(kind, bend.semi_length, bend.semi_width, bend.semi_thickness);
+}
+
+void add_spheroid(const CellGeometry& kind) {
+  const SpheroidAxes axes = spheroid_axes(kind);
+  add_ellipsoid(kind, axes.equatorial, axes.equatorial, axes.polar);
 }
 
 // ---- the element size field
@@ -212,6 +224,16 @@ class ElementSizeField {
         return radius_of_curvature_[k - 1] + t * (radius_of_curvature_[k] - radius_of_curvature_[k - 1]);
       }
       case CellShape::sphere: return 0.5 * kind_.diameter;
+      case CellShape::spheroid: {
+        // At the point of the meridian (a sin θ, c cos θ) with cos θ = z/c, the principal
+        // curvature radii are, with s = a² cos²θ + c² sin²θ,
+        //   meridional R_m = s^{3/2} / (a c),   circumferential R_c = a √s / c.
+        const SpheroidAxes axes = spheroid_axes(kind_);
+        const double a = axes.equatorial, c = axes.polar;
+        const double cos_theta = std::clamp(z / c, -1.0, 1.0), sin2 = 1.0 - cos_theta * cos_theta;
+        const double s = a * a * cos_theta * cos_theta + c * c * sin2;
+        return std::min(s * std::sqrt(s) / (a * c), a * std::sqrt(s) / c);
+      }
       case CellShape::sickle: {
         // Unbent ellipsoid: the cross-section at x is an ellipse with semi-axes b s, c s,
         // s = √(1 − x²/a²), whose smallest curvature radius is m² s / M (m, M the smaller
@@ -259,6 +281,7 @@ TetrahedralMesh mesh_with_gmsh(const CellGeometry& kind, double element_size) {
   switch (kind.shape) {
     case CellShape::rbc: add_rbc(kind); break;
     case CellShape::sphere: add_sphere(kind); break;
+    case CellShape::spheroid: add_spheroid(kind); break;
     case CellShape::sickle: add_unbent_sickle(kind); break;
   }
   gmsh::model::occ::synchronize();
@@ -343,6 +366,9 @@ std::string canonical_parameters(const CellGeometry& kind, double element_size) 
   switch (kind.shape) {
     case CellShape::rbc: text << " shape=rbc diameter=" << kind.diameter; break;
     case CellShape::sphere: text << " shape=sphere diameter=" << kind.diameter; break;
+    case CellShape::spheroid:
+      text << " shape=spheroid diameter=" << kind.diameter << " axis_ratio=" << kind.axis_ratio;
+      break;
     case CellShape::sickle:
       text << " shape=sickle length=" << kind.length << " width=" << kind.width << " thickness=" << kind.thickness
            << " arc_radius=" << kind.arc_radius;

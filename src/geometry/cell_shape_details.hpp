@@ -45,6 +45,13 @@ std::array<double, 2> rbc_profile_normal(double theta, double cell_radius);
 // kind and the reason otherwise.
 std::vector<std::array<double, 2>> rbc_inner_profile(const CellGeometry& kind, int intervals);
 
+// ---- Sphere and spheroid: the semi-axes of (x² + y²)/a² + z²/c² = 1, the polar axis along
+// the body's z (c = a for a sphere).
+struct SpheroidAxes {
+  double equatorial, polar;  // a, c [μm]
+};
+SpheroidAxes spheroid_axes(const CellGeometry& kind);
+
 // ---- Sickle: an ellipsoid bent along a circular arc (see cell_shapes.cpp for the
 // construction and why it keeps the volume).
 struct SickleBend {

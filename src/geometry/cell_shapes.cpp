@@ -1,4 +1,4 @@
-// The exact cell shapes: the Evans–Fung RBC, the sphere and the sickle crescent, their
+// The exact cell shapes: the Evans–Fung RBC, the sphere and spheroid and the sickle crescent, their
 // volumes and areas by quadrature, inside tests, surface samples and placement rotations.
 //
 // Sickle construction (cited by the README). Start from the ellipsoid
@@ -201,6 +201,11 @@ std::array<double, 3> unbend_sickle_point(const SickleBend& bend, const std::arr
   return {rho * std::atan2(from_centre_x, from_centre_y), std::hypot(from_centre_x, from_centre_y) - rho, body[2]};
 }
 
+SpheroidAxes spheroid_axes(const CellGeometry& kind) {
+  const double a = 0.5 * kind.diameter;
+  return {a, kind.shape == CellShape::spheroid ? kind.axis_ratio * a : a};
+}
+
 void validate_cell_kind(const CellGeometry& kind) {
   const bool shell = kind.body == CellBody::shell;
   switch (kind.shape) {
@@ -212,14 +217,23 @@ void validate_cell_kind(const CellGeometry& kind) {
       }
       break;
     case CellShape::sphere:
+    case CellShape::spheroid: {
       require_positive(kind, kind.diameter, "diameter");
+      require_positive(kind, kind.axis_ratio, "axis ratio");
+      const SpheroidAxes axes = spheroid_axes(kind);
+      const double smallest_semi_axis = std::min(axes.equatorial, axes.polar);
+      // Gmsh meshes the layer between two scaled spheres with slivers (smallest quality
+      // 0.01–0.05 at element sizes 0.3–0.9 μm): a spheroid is a filled body.
+      if (shell && kind.shape == CellShape::spheroid)
+        fail(kind, "a spheroid is meshed as a filled body only (body = \"filled\")");
       if (shell) {
         require_positive(kind, kind.shell_thickness, "shell thickness");
-        if (kind.shell_thickness >= 0.5 * kind.diameter)
+        if (kind.shell_thickness >= smallest_semi_axis)
           fail(kind, "the shell thickness " + format_length(kind.shell_thickness) +
-                         " is not smaller than the radius " + format_length(0.5 * kind.diameter));
+                         " is not smaller than the smallest semi-axis " + format_length(smallest_semi_axis));
       }
       break;
+    }
     case CellShape::sickle: {
       require_positive(kind, kind.length, "length");
       require_positive(kind, kind.width, "width");
@@ -319,15 +333,18 @@ std::vector<Vector3> rbc_surface_samples(double radius, double spacing) {
   return samples;
 }
 
-std::vector<Vector3> sphere_surface_samples(double radius, double spacing) {
-  // Fibonacci lattice: N ≈ 4πR²/spacing² points, z uniform in (−R, R), azimuth advancing
-  // by the golden angle π(3 − √5).
-  const int count = std::max(8, static_cast<int>(std::ceil(4.0 * pi * radius * radius / (spacing * spacing))));
+std::vector<Vector3> spheroid_surface_samples(const SpheroidAxes& axes, double spacing) {
+  // Fibonacci lattice on the sphere of the larger semi-axis L: N ≈ 4πL²/spacing² points,
+  // z uniform in (−1, 1), azimuth advancing by the golden angle π(3 − √5); then the unit
+  // sphere scaled by (a, a, c), which moves no two points further apart than on that sphere.
+  const double largest = std::max(axes.equatorial, axes.polar);
+  const int count = std::max(8, static_cast<int>(std::ceil(4.0 * pi * largest * largest / (spacing * spacing))));
   const double golden_angle = pi * (3.0 - std::sqrt(5.0));
   std::vector<Vector3> samples(count);
   for (int i = 0; i < count; ++i) {
     const double z = 1.0 - (2.0 * i + 1.0) / count, r = std::sqrt(std::max(0.0, 1.0 - z * z));
-    samples[i] = {radius * r * std::cos(golden_angle * i), radius * r * std::sin(golden_angle * i), radius * z};
+    samples[i] = {axes.equatorial * r * std::cos(golden_angle * i), axes.equatorial * r * std::sin(golden_angle * i),
+                  axes.polar * z};
   }
   return samples;
 }
@@ -388,9 +405,11 @@ double exact_cell_volume(const CellGeometry& kind) {
         return 2.0 * pi * point[0] * point[1] * dr_dtheta;
       });
     }
-    case CellShape::sphere: {
-      const double radius = 0.5 * kind.diameter;
-      return 4.0 / 3.0 * pi * radius * radius * radius;
+    case CellShape::sphere:
+    case CellShape::spheroid: {
+      // V = (4/3)π a² c.
+      const SpheroidAxes axes = spheroid_axes(kind);
+      return 4.0 / 3.0 * pi * axes.equatorial * axes.equatorial * axes.polar;
     }
     case CellShape::sickle:
       // The bend keeps the ellipsoid's volume (see the top of this file): V = (4/3)π a b c.
@@ -411,9 +430,21 @@ double exact_cell_area(const CellGeometry& kind) {
         return 2.0 * pi * point[0] * std::hypot(tangent[0], tangent[1]);
       });
     }
-    case CellShape::sphere: {
-      const double radius = 0.5 * kind.diameter;
-      return 4.0 * pi * radius * radius;
+    case CellShape::sphere:
+    case CellShape::spheroid: {
+      // With e the eccentricity of the meridian ellipse:
+      //   oblate (c < a), e² = 1 − c²/a²:   A = 2πa² + 2π c² atanh(e)/e,
+      //   prolate (c > a), e² = 1 − a²/c²:  A = 2πa² + 2π a c asin(e)/e,
+      // both → 4πa² as e → 0 (atanh(e)/e, asin(e)/e → 1), the sphere.
+      const SpheroidAxes axes = spheroid_axes(kind);
+      const double a = axes.equatorial, c = axes.polar;
+      if (c == a) return 4.0 * pi * a * a;
+      if (c < a) {
+        const double e = std::sqrt(1.0 - (c * c) / (a * a));
+        return 2.0 * pi * a * a + 2.0 * pi * c * c * std::atanh(e) / e;
+      }
+      const double e = std::sqrt(1.0 - (a * a) / (c * c));
+      return 2.0 * pi * a * a + 2.0 * pi * a * c * std::asin(e) / e;
     }
     case CellShape::sickle: {
       const SickleBend bend = sickle_bend(kind);
@@ -430,9 +461,12 @@ bool inside_cell(const CellGeometry& kind, const std::array<double, 3>& p) {
       const double radius = 0.5 * kind.diameter, r = std::hypot(p[0], p[1]);
       return r < radius && std::abs(p[2]) < evans_fung_half_thickness(r, radius);
     }
-    case CellShape::sphere: {
-      const double radius = 0.5 * kind.diameter;
-      return p[0] * p[0] + p[1] * p[1] + p[2] * p[2] < radius * radius;
+    case CellShape::sphere:
+    case CellShape::spheroid: {
+      // Inside when (x² + y²)/a² + z²/c² < 1.
+      const SpheroidAxes axes = spheroid_axes(kind);
+      const double a = axes.equatorial, c = axes.polar;
+      return (p[0] * p[0] + p[1] * p[1]) / (a * a) + p[2] * p[2] / (c * c) < 1.0;
     }
     case CellShape::sickle: {
       // The bend (its centroid shift is a quadrature) of the last sickle asked about: the
@@ -454,21 +488,25 @@ std::vector<std::array<double, 3>> cell_surface_samples(const CellGeometry& kind
   validate_cell_kind(kind);
   if (!(spacing > 0.0 && std::isfinite(spacing)))
     throw std::invalid_argument("cell_surface_samples: the spacing must be positive, not " + std::to_string(spacing));
-  // No body holds more surface than the sphere of its diameter, π D²: past a few million
-  // samples the cell is far larger than any mesh could resolve (and sampling it would
-  // exhaust the memory before the placement check could say so).
+  // No body holds more surface than the sphere of its largest extent D (a prolate
+  // spheroid's is its length), π D²: past a few million samples the cell is far larger
+  // than any mesh could resolve (and sampling it would exhaust the memory before the
+  // placement check could say so).
   constexpr double most_samples = 2e6;
-  const double estimated_samples = pi * kind.diameter * kind.diameter / (spacing * spacing);
+  const double largest_extent =
+      kind.shape == CellShape::spheroid ? kind.diameter * std::max(1.0, kind.axis_ratio) : kind.diameter;
+  const double estimated_samples = pi * largest_extent * largest_extent / (spacing * spacing);
   if (estimated_samples > most_samples) {
     std::ostringstream reason;
-    reason << "diameter_um = " << kind.diameter << " would need about " << std::setprecision(2) << estimated_samples
+    reason << "the largest extent " << largest_extent << " um would need about " << std::setprecision(2) << estimated_samples
            << " surface samples at the placement check's spacing of " << spacing
            << " um (at most 2e+06): the cell is too large";
     throw std::runtime_error(reason.str());
   }
   switch (kind.shape) {
     case CellShape::rbc: return rbc_surface_samples(0.5 * kind.diameter, spacing);
-    case CellShape::sphere: return sphere_surface_samples(0.5 * kind.diameter, spacing);
+    case CellShape::sphere:
+    case CellShape::spheroid: return spheroid_surface_samples(spheroid_axes(kind), spacing);
     case CellShape::sickle: return sickle_surface_samples(sickle_bend(kind), spacing);
   }
   return {};

@@ -55,7 +55,7 @@ namespace {
 constexpr double pi = 3.14159265358979323846;
 // Changes whenever this file would make a different mesh from the same parameters; it
 // enters the hash, so old cache files are not reused.
-constexpr int geometry_code_version = 1;
+constexpr int geometry_code_version = 2;
 constexpr const char* cache_header = "rouleau-cell-mesh 1";
 
 using Node = MeshPoint;  // a mesh node's position [μm]
@@ -157,10 +157,12 @@ void add_sphere(const CellGeometry& kind) {
 // a − h, b − h, c − h.
 void add_ellipsoid(const CellGeometry& kind, double a, double b, double c) {
   const auto add_solid = [](double a, double b, double c) {
-    // The unit sphere's poles turned onto the x axis before scaling: with the poles on the
-    // flat sides, Gmsh 4.8's surface mesher fails on the scaled (B-spline) surface.
+    // The unit sphere's poles (on z) turned onto the longest axis before scaling, where
+    // they become the tips: with the poles on the flat sides, Gmsh 4.8's surface mesher
+    // fails on the scaled (B-spline) surface ("No elements in volume").
     const int tag = gmsh::model::occ::addSphere(0, 0, 0, 1.0);
-    gmsh::model::occ::rotate({{3, tag}}, 0, 0, 0, 0, 1, 0, pi / 2);
+    if (a >= b && a >= c) gmsh::model::occ::rotate({{3, tag}}, 0, 0, 0, 0, 1, 0, pi / 2);
+    else if (b > a && b >= c) gmsh::model::occ::rotate({{3, tag}}, 0, 0, 0, 1, 0, 0, pi / 2);
     gmsh::model::occ::dilate({{3, tag}}, 0, 0, 0, a, b, c);
     return tag;
   };

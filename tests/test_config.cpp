@@ -593,6 +593,29 @@ TEST(ConfigCoupling, MorseStiffnessBoundsTheStepOfInteractingCells) {
               1e-14 * membrane_step);
 }
 
+TEST(ConfigCoupling, StrainPerStepBeyondTheMeasuredAccurateRangeIsWarnedOf) {
+  // The spheroid in shear: walls ±120 μm/s, 24 μm apart: γ̇ = 10 1/s exactly; at its
+  // Δt = 2.5e-3 s a strain of 0.025 per step (no warning), at 1e-2 s 0.1 (a warning that
+  // names the step to take, 0.05 / γ̇ = 5e-3 s).
+  const std::string cases = std::string(ROULEAU_SOURCE_DIR) + "/cases/";
+  const rouleau::DerivedQuantities shear = rouleau::derive_quantities(rouleau::load_case(cases + "spheroid_shear/case.toml"));
+  EXPECT_NEAR(shear.shear_rate, 10.0, 1e-12);
+  EXPECT_NEAR(shear.strain_per_step, 0.025, 1e-14);
+  EXPECT_TRUE(shear.accuracy_warning.empty()) << shear.accuracy_warning;
+  const rouleau::DerivedQuantities coarse_step =
+      rouleau::derive_quantities(rouleau::load_case(cases + "spheroid_shear/case.toml", {"time.dt_s=1e-2"}));
+  EXPECT_NEAR(coarse_step.strain_per_step, 0.1, 1e-14);
+  EXPECT_NE(coarse_step.accuracy_warning.find("dt <= 0.005 s"), std::string::npos) << coarse_step.accuracy_warning;
+  // The capillary: 10 μm/s in feeders of radius 5 μm, a throat of 2.5 μm: Poiseuille's wall
+  // shear rate there 4 V (R/R_t)² / R_t = 64 1/s.
+  const rouleau::DerivedQuantities vessel = rouleau::derive_quantities(rouleau::load_case(cases + "capillary/case.toml"));
+  EXPECT_NEAR(vessel.shear_rate, 64.0, 1e-12);
+  // A closed box at rest (the aggregation scene): no flow to strain the cells, no estimate.
+  const rouleau::DerivedQuantities at_rest = rouleau::derive_quantities(rouleau::load_case(cases + "aggregation/case.toml"));
+  EXPECT_EQ(at_rest.shear_rate, 0.0);
+  EXPECT_TRUE(at_rest.accuracy_warning.empty());
+}
+
 TEST(ConfigCells, OverridesReachKindsAndCells) {
   const CaseConfig config = rouleau::load_case(
       good_case, {"cell_kinds.sickle.shear_modulus_Pa=100", "cells=[{kind=\"capsule\", center_um=[20, 0, 10]}]",

@@ -188,6 +188,15 @@ std::string case_summary(const CaseConfig& config, const DerivedQuantities& deri
                   derived.stable_dt);
     summary += step + derived.stable_dt_reason + ")\n";
   }
+  // How far the flow strains the cells in one step, against the measured accurate range.
+  if (derived.shear_rate > 0.0) {
+    char strain[80], limit[64];
+    std::snprintf(strain, sizeof(strain), "accuracy  strain per step %.3g (shear rate %.3g 1/s: ",
+                  derived.strain_per_step, derived.shear_rate);
+    std::snprintf(limit, sizeof(limit), "); measured accurate up to %g\n", accurate_strain_per_step);
+    summary += strain + derived.shear_rate_source + limit;
+  }
+  if (!derived.accuracy_warning.empty()) summary += "WARNING   " + derived.accuracy_warning + "\n";
   return summary;
 }
 

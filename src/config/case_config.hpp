@@ -300,6 +300,14 @@ struct DerivedQuantities {
   // does not step in time), and how it was found, for --explain and the log.
   double stable_dt = 0.0;
   std::string stable_dt_reason;
+  // The flow's largest shear rate as the case sets it [1/s] (0 when no estimate applies)
+  // and where it comes from; the strain per step γ̇ Δt; and, when that is beyond the range
+  // where the coupling was measured accurate (accurate_strain_per_step), what to change,
+  // in one sentence (empty otherwise). Only for cells that move.
+  double shear_rate = 0.0;
+  std::string shear_rate_source;
+  double strain_per_step = 0.0;
+  std::string accuracy_warning;
 };
 
 }  // namespace rouleau

@@ -107,6 +107,12 @@ ScenePlan plan_scene(const CaseConfig& config, const DerivedQuantities& derived)
     } else {
       cells << ". A steady solve: the cells stay where they are placed (the coupling is a time loop)";
     }
+    if (moving && derived.shear_rate > 0.0) {
+      cells << "; the strain per step, shear rate x dt = " << derived.strain_per_step << " ("
+            << derived.shear_rate_source << "), "
+            << (derived.accuracy_warning.empty() ? "within the " : "BEYOND the ") << accurate_strain_per_step
+            << " up to which the coupling was measured accurate";
+    }
     stages.push_back({"cells", true, cells.str()});
     const char* steady_only = "skipped: a steady solve does not move the cells (output steps only)";
     stages.push_back({stage_name::elastic_forces, true,

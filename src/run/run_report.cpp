@@ -63,6 +63,7 @@ void report_run_setup(const Simulation& simulation, const DerivedQuantities& der
   if (cell_count > config.output.cell_gaps_max_cells && cell_count > 1)
     std::cerr << "cell gaps: not in the diagnostics (" << cell_count << " cells, more than output.cell_gaps_max_cells = "
               << config.output.cell_gaps_max_cells << ")\n";
+  if (coupling && !derived.accuracy_warning.empty()) std::cerr << "warning: " << derived.accuracy_warning << "\n";
   if (coupling && coupling->semi_implicit())
     std::cerr << "semi-implicit coupling: dt = " << config.time.dt << " s (the explicit stable step estimate, "
               << derived.stable_dt << " s, does not bind it)\n";

@@ -6,6 +6,7 @@
 #include "analysis/jeffery_orbit.hpp"
 #include "analysis/scene_checks.hpp"
 #include "config/cell_kinds.hpp"
+#include "config/derived.hpp"
 #include "io/diagnostics_reader.hpp"
 #include "run/run_case.hpp"
 
@@ -17,8 +18,7 @@ int main(int argc, char** argv) {
   const rouleau::CaseConfig& config = run.config;
   const rouleau::CellKindConfig& body = *rouleau::find_cell_kind(config, config.cells.at(0).kind);
   const auto& domain = config.domain;
-  const double shear_rate = (domain.boundary[rouleau::y_max].velocity[0] - domain.boundary[rouleau::y_min].velocity[0]) /
-                            (domain.upper[1] - domain.lower[1]);
+  const double shear_rate = rouleau::derive_quantities(config).shear_rate;  // the walls' γ̇
   const double h_f = (domain.upper[0] - domain.lower[0]) / domain.elements[0];
   const auto rows = rouleau::read_diagnostics(run.options.output_dir + "/diagnostics.csv");
   const auto times = rouleau::diagnostics_column(rows, "time_s");

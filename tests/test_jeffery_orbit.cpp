@@ -91,6 +91,10 @@ TEST(JefferyOrbit, ComparisonPassesJefferysOwnOrbitAndFailsAFatterBody) {
   EXPECT_LT(same.rms_angle_error_deg, 1e-9);
   EXPECT_NEAR(same.measured_period, period, 1e-3 * period);  // the half turn interpolated between rows
   EXPECT_TRUE(same.met());
+  // The flip from 45° to 135°: Jeffery's closed form, and the orbit's own crossing times.
+  const double omega = shear_rate * r / (r * r + 1.0);
+  EXPECT_NEAR(same.jeffery_flip_time, (pi - 2.0 * std::atan(3.0)) / omega, 1e-12);
+  EXPECT_NEAR(same.flip_time, same.jeffery_flip_time, 2e-4);  // interpolated between rows 0.01 s apart
   // What a coarse fluid mesh makes of this disc: it turns like a thicker one (c/a = 1/2,
   // as measured at h_f = 1 μm): period −25 %, the angle up to 50° ahead.
   const Rows fat = jeffery_rows(0.5, shear_rate, 0.0, 0.6 * period, 0.01);
@@ -98,6 +102,9 @@ TEST(JefferyOrbit, ComparisonPassesJefferysOwnOrbitAndFailsAFatterBody) {
   EXPECT_NEAR(thick.period_error, rouleau::jeffery_period(0.5, shear_rate) / period - 1.0, 2e-3);
   EXPECT_GT(thick.rms_angle_error_deg, 10.0);
   EXPECT_FALSE(thick.met());
+  // A thicker disc flips more slowly where it is fastest: (π − 2 atan 2)/ω' against (π − 2 atan 3)/ω.
+  const double thick_omega = shear_rate * 0.5 / 1.25;
+  EXPECT_NEAR(thick.flip_time, (pi - 2.0 * std::atan(2.0)) / thick_omega, 2e-4);
   // Just inside and outside the period's 5 %: a disc of c/a = 0.345 (period −3.4 %) passes
   // on the period, one of 0.36 (−7.3 %) does not.
   const Rows near = jeffery_rows(0.345, shear_rate, 0.0, 0.6 * period, 0.01);

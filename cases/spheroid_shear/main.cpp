@@ -34,6 +34,8 @@ int main(int argc, char** argv) {
                 100.0 * jeffery.period_error);
   else
     std::printf("Jeffery period %.4f s, no half turn in the run; ", jeffery.jeffery_period);
+  if (jeffery.flip_time > 0.0)
+    std::printf("flip 45 -> 135 deg %.4f s (Jeffery %.4f s); ", jeffery.flip_time, jeffery.jeffery_flip_time);
   std::printf("angle RMS %.2f deg (largest %.2f): %s (period within %.0f %%, RMS within %.0f deg)\n",
               jeffery.rms_angle_error_deg, jeffery.largest_angle_error_deg, jeffery.met() ? "met" : "NOT MET",
               100.0 * rouleau::JefferyComparison::period_tolerance, rouleau::JefferyComparison::rms_tolerance_deg);

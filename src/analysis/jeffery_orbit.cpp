@@ -63,6 +63,18 @@ JefferyComparison compare_with_jeffery(const std::vector<double>& times, const s
     }
   }
   result.rms_angle_error_deg = std::sqrt(sum_of_squares / times.size());
+  // The flip: the first angle ≥ φ0 that is 45° modulo 180°, and 90° further.
+  const double flip_start = pi / 4 + pi * std::ceil((initial_angle - pi / 4) / pi);
+  const auto crossing = [&](double target) {
+    for (std::size_t k = 1; k < times.size(); ++k)
+      if (angles[k - 1] < target && angles[k] >= target)
+        return times[k - 1] + (times[k] - times[k - 1]) * (target - angles[k - 1]) / (angles[k] - angles[k - 1]);
+    return -1.0;
+  };
+  const double flip_begins = crossing(flip_start), flip_ends = crossing(flip_start + pi / 2);
+  if (flip_begins >= 0.0 && flip_ends >= 0.0) result.flip_time = flip_ends - flip_begins;
+  result.jeffery_flip_time =
+      (pi - 2.0 * std::atan(1.0 / axis_ratio)) / (shear_rate * axis_ratio / (axis_ratio * axis_ratio + 1.0));
   if (result.half_turn_time > 0.0) {
     result.measured_period = 2.0 * result.half_turn_time;
     result.period_error = result.measured_period / result.jeffery_period - 1.0;

@@ -34,6 +34,11 @@ struct JefferyComparison {
   double measured_period = -1.0;      // 2 × half_turn_time [s]; −1: no half turn in the run
   double jeffery_period = 0.0;        // [s]
   double period_error = 0.0;          // measured / Jeffery − 1 (when measured)
+  // The flip: the time from φ = 45° to 135° (modulo 180°, the first such pass after the
+  // first row), where the turning is fastest and a step's lag shows most; −1: not in the
+  // run. Jeffery's: (π − 2 atan(1/r)) / ω.
+  double flip_time = -1.0;            // [s]
+  double jeffery_flip_time = 0.0;     // [s]
   // Thresholds written before the runs (the issue's): the period within 5 %, the angle's
   // history within 5° RMS.
   static constexpr double period_tolerance = 0.05;

@@ -72,7 +72,8 @@ rouleau::DiagnosticsRows pair_rows(double shift, double end_x) {
     const double far_dy = 2.0 + shift * 0.5 * (1.0 + std::tanh(dx / 2.0));
     const double dy = std::abs(dx) < 4.2 ? std::max(far_dy, std::sqrt(4.2 * 4.2 - dx * dx)) : far_dy;
     const double gap = std::hypot(dx, dy) - 4.0;
-    rows.push_back({{"cell0_centroid_x_um", 0.5 * dx},
+    rows.push_back({{"time_s", 0.01 * k},
+                    {"cell0_centroid_x_um", 0.5 * dx},
                     {"cell1_centroid_x_um", -0.5 * dx},
                     {"cell0_centroid_y_um", 0.5 * dy},
                     {"cell1_centroid_y_um", -0.5 * dy},
@@ -88,11 +89,19 @@ TEST(PairReversibility, AsymmetryIsTheOffsetsChangeOverTheRadius) {
   EXPECT_NEAR(reversible.asymmetry, 0.0, 1e-9);
   EXPECT_TRUE(reversible.passed);
   EXPECT_NEAR(reversible.smallest_gap, 0.2, 1e-9);
+  EXPECT_NEAR(reversible.symmetric_time, 1.0, 1e-9);
   // Irreversible: the offset grows by 0.4 μm, a fifth of the radius.
   const rouleau::PairReversibility spread = rouleau::measure_pair_reversibility(pair_rows(0.4, 14.0), 2.0);
   EXPECT_NEAR(spread.asymmetry, 0.2, 1e-5);
-  // Stopped while still side by side: not passed, whatever the offset.
-  EXPECT_FALSE(rouleau::measure_pair_reversibility(pair_rows(0.0, 5.0), 2.0).passed);
+  // A run that goes on past the symmetric point, toward the next periodic image, is read
+  // at the symmetric point (dx = +14 μm, reached at t = 0.7 s), not at its end.
+  const rouleau::PairReversibility longer = rouleau::measure_pair_reversibility(pair_rows(0.4, 26.0), 2.0);
+  EXPECT_NEAR(longer.symmetric_time, 0.7, 1e-9);
+  EXPECT_NEAR(longer.asymmetry, 0.2, 1e-5);
+  // Stopped while still side by side: not passed, and nothing read.
+  const rouleau::PairReversibility side_by_side = rouleau::measure_pair_reversibility(pair_rows(0.4, 5.0), 2.0);
+  EXPECT_FALSE(side_by_side.passed);
+  EXPECT_LT(side_by_side.symmetric_time, 0.0);
 }
 
 }  // namespace

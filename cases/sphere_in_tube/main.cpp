@@ -14,13 +14,13 @@ int main(int argc, char** argv) {
   const auto run = rouleau::run_case_driver(argc, argv, ROULEAU_CASE_DIR "/case.toml", "runs/sphere_in_tube");
   if (!run.ran) return run.status;
   // What is special to this case: a/R, the tube's mean speed, the sphere's speed after
-  // the first fifth of the run (the start-up).
+  // the first half of the run (the start-up).
   const rouleau::CaseConfig& config = run.config;
   const rouleau::CellKindConfig& sphere = *rouleau::find_cell_kind(config, config.cells.at(0).kind);
   const double radius_ratio = 0.5 * sphere.diameter / config.vessel.profile.radius;
   const double mean_speed = config.vessel.inlet.mean_speed;
   const auto rows = rouleau::read_diagnostics(run.options.output_dir + "/diagnostics.csv");
-  const rouleau::PlugSpeed plug = rouleau::measure_plug_speed(rows, 0.2 * config.time.end);
+  const rouleau::PlugSpeed plug = rouleau::measure_plug_speed(rows, 0.5 * config.time.end);
   const double reference = rouleau::sphere_in_tube_speed_ratio(radius_ratio);
   const double ratio = plug.speed / mean_speed;
   std::printf("a/R = %.3f: U / V_mean = %.4f (speed %.4f um/s, spread %.2g um/s over %d rows), Bungay & Brenner %.4f "

@@ -19,9 +19,14 @@ int main(int argc, char** argv) {
   const double h_f = (config.domain.upper[0] - config.domain.lower[0]) / config.domain.elements[0];
   const auto rows = rouleau::read_diagnostics(run.options.output_dir + "/diagnostics.csv");
   const rouleau::PairReversibility pair = rouleau::measure_pair_reversibility(rows, radius);
-  std::printf("a/h_f = %.3g: offset across the streamlines %.4f -> %.4f um, asymmetry (final - initial) / a = %+.4f "
-              "(0 for smooth spheres in Stokes flow); smallest gap %.4f um (%.3g a); %s\n",
-              radius / h_f, pair.initial_offset, pair.final_offset, pair.asymmetry, pair.smallest_gap,
-              pair.smallest_gap / radius, pair.passed ? "passed each other" : "NOT past each other yet");
+  if (!pair.passed) {
+    std::printf("a/h_f = %.3g: the spheres did not get as far past each other as they started apart: no measure\n",
+                radius / h_f);
+    return 0;
+  }
+  std::printf("a/h_f = %.3g: offset across the streamlines %.4f um, and %.4f um as far past (t = %.3f s): asymmetry "
+              "(after - before) / a = %+.4f (0 for smooth spheres in Stokes flow); smallest gap %.4f um (%.3g a)\n",
+              radius / h_f, pair.initial_offset, pair.final_offset, pair.symmetric_time, pair.asymmetry,
+              pair.smallest_gap, pair.smallest_gap / radius);
   return 0;
 }

@@ -15,15 +15,24 @@ PairReversibility measure_pair_reversibility(const DiagnosticsRows& rows, double
     return diagnostics_value(row, "cell0_centroid_x_um") - diagnostics_value(row, "cell1_centroid_x_um");
   };
   PairReversibility result;
-  result.initial_offset = offset_y(rows.front());
-  result.final_offset = offset_y(rows.back());
+  result.initial_offset = result.final_offset = offset_y(rows.front());
+  const double start = offset_x(rows.front());  // −d
+  result.smallest_gap = diagnostics_value(rows.front(), "gap_0_1_um");
+  if (!(start < 0.0)) return result;
+  for (std::size_t k = 1; k < rows.size(); ++k) {
+    result.smallest_gap = std::min(result.smallest_gap, diagnostics_value(rows[k], "gap_0_1_um"));
+    const double before = offset_x(rows[k - 1]), after = offset_x(rows[k]);
+    if (before < -start && after >= -start) {
+      // Linear between the two rows, at x₀ − x₁ = +d.
+      const double s = (-start - before) / (after - before);
+      result.final_offset = offset_y(rows[k - 1]) + s * (offset_y(rows[k]) - offset_y(rows[k - 1]));
+      const double t0 = diagnostics_value(rows[k - 1], "time_s"), t1 = diagnostics_value(rows[k], "time_s");
+      result.symmetric_time = t0 + s * (t1 - t0);
+      result.passed = true;
+      break;
+    }
+  }
   result.asymmetry = (result.final_offset - result.initial_offset) / radius;
-  result.smallest_gap = INFINITY;
-  for (const auto& row : rows) result.smallest_gap = std::min(result.smallest_gap, diagnostics_value(row, "gap_0_1_um"));
-  const double initial_approach = offset_x(rows.front());
-  result.final_approach = offset_x(rows.back());
-  result.passed =
-      initial_approach < 0.0 && result.final_approach >= PairReversibility::passed_fraction * (-initial_approach);
   return result;
 }
 

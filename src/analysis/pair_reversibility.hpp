@@ -7,18 +7,17 @@
 
 namespace rouleau {
 
-// Cells 0 (starting behind, on the faster streamline) and 1 over a run's rows.
+// Cells 0 (starting behind, on the faster streamline) and 1 over a run's rows. The pair's
+// trajectory in Stokes flow is symmetric under x₀ − x₁ → −(x₀ − x₁): the offset is read
+// where 0 is as far ahead as it started behind (interpolated between rows), not at the
+// run's end, where the pair may already be nearing the next periodic image.
 struct PairReversibility {
-  double initial_offset = 0.0;  // [μm] y₀ − y₁ (centroids), first row
-  double final_offset = 0.0;    // [μm] the same, last row
-  double asymmetry = 0.0;       // (final − initial offset) / sphere radius
-  double smallest_gap = 0.0;    // [μm] least gap_0_1_um over the run
-  double final_approach = 0.0;  // [μm] x₀ − x₁ at the last row: > 0 once 0 has overtaken 1
-  // Passed: 0 ended ahead of 1 by at least `passed_fraction` of the distance it started
-  // behind, where the offset is within about 1 % of its far value (the disturbance of a
-  // sphere's streamlines decays as the inverse square of the distance).
-  static constexpr double passed_fraction = 0.8;
-  bool passed = false;
+  double initial_offset = 0.0;   // [μm] y₀ − y₁ (centroids), first row, at x₀ − x₁ = −d < 0
+  double final_offset = 0.0;     // [μm] the same where x₀ − x₁ first reaches +d
+  double asymmetry = 0.0;        // (final − initial offset) / sphere radius
+  double smallest_gap = 0.0;     // [μm] least gap_0_1_um up to there
+  double symmetric_time = -1.0;  // [s] when x₀ − x₁ reached +d; −1: never (not passed)
+  bool passed = false;           // 0 started behind 1 and reached +d
 };
 // `radius` [μm] of the spheres.
 PairReversibility measure_pair_reversibility(const DiagnosticsRows& rows, double radius);

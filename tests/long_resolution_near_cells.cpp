@@ -1,0 +1,99 @@
+// Long tier (ctest -L long; scripts/long_tier.sh): bodies a few fluid elements thick
+// against references that do not depend on the code (docs/validation.md, "Resolution near
+// the cells"). Each runs a case of cases/ through the rouleau executable and holds its
+// diagnostics against the reference with src/analysis.
+// - Jeffery (1922): a stiff oblate spheroid (c/a = 1/3) in shear, cases/spheroid_shear,
+//   at h_f = 1 and 0.5 μm. Not met at either (period −24 % and −14 %, measured); the
+//   test holds the error's fall with h_f (first order: a ratio near 0.5; threshold 0.75)
+//   and the step's accuracy at the case's strain per step (the flip within 3 % of the run
+//   at half the step). 2 + 12 + 4 minutes on 2 cores.
+// - Bungay & Brenner (1973): a stiff sphere of a/R = 0.8 and 0.9 on the axis of Poiseuille
+//   flow, cases/sphere_in_tube (fluid elements 1 μm, 0.5 μm at the wall), moves at their
+//   U/V_mean within 10 % (the threshold of the validation's statement). 2 × 9 minutes.
+// - Reversibility: two stiff spheres (a = 2 μm) passing each other in shear,
+//   cases/sphere_pair_shear at a/h_f = 2, 2.7 and 4: they pass, and the change of their
+//   offset across the streamlines falls at each refinement. 2 + 4 + 15 minutes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "analysis/jeffery_orbit.hpp"
+#include "analysis/pair_reversibility.hpp"
+#include "analysis/sphere_in_tube.hpp"
+#include "analysis/scene_checks.hpp"
+#include "io/diagnostics_reader.hpp"
+#include "run_rouleau.hpp"
+
+namespace {
+
+// Runs cases/NAME/case.toml with `settings` (" --set KEY=VALUE" ...) into a fresh folder;
+// returns its diagnostics.
+rouleau::DiagnosticsRows run_case(const std::string& name, const std::string& tag, const std::string& settings) {
+  const std::string out = fresh_output_dir(name + "_" + tag);
+  const Outcome outcome = run_rouleau("run " + std::string(ROULEAU_SOURCE_DIR) + "/cases/" + name + "/case.toml --out " +
+                                      out + " --no-progress --set output.fields=false" + settings);
+  EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+  return rouleau::read_diagnostics(out + "/diagnostics.csv");
+}
+
+// The spheroid case's run against Jeffery's orbit (c/a = 1/3, γ̇ = 10 1/s, the case's).
+rouleau::JefferyComparison spheroid_against_jeffery(const std::string& tag, const std::string& settings) {
+  const rouleau::DiagnosticsRows rows = run_case("spheroid_shear", tag, settings);
+  const double axis_ratio = 0.3333333333, shear_rate = 10.0;
+  const rouleau::JefferyComparison c = rouleau::compare_with_jeffery(
+      rouleau::diagnostics_column(rows, "time_s"),
+      rouleau::symmetry_axis_angles(rouleau::diagnostics_column(rows, "cell0_inclination_deg"), axis_ratio), axis_ratio,
+      shear_rate);
+  std::printf("Jeffery %s: period %+.2f %%, flip %.4f s (Jeffery %.4f s), RMS %.2f deg: %s\n", tag.c_str(),
+              100.0 * c.period_error, c.flip_time, c.jeffery_flip_time, c.rms_angle_error_deg,
+              c.met() ? "met" : "not met");
+  return c;
+}
+
+TEST(ResolutionLong, SpheroidPeriodErrorFallsWithTheFluidMeshAndTheStepIsAccurate) {
+  const rouleau::JefferyComparison coarse = spheroid_against_jeffery("h1", "");
+  const rouleau::JefferyComparison fine = spheroid_against_jeffery("h05", " --set \"domain.elements=[48,48,48]\"");
+  const rouleau::JefferyComparison half_step = spheroid_against_jeffery("h1_half_step", " --set time.dt_s=1.25e-3");
+  ASSERT_GT(coarse.measured_period, 0.0);
+  ASSERT_GT(fine.measured_period, 0.0);
+  std::printf("Jeffery: period error ratio h_f 0.5 / 1 = %.3f\n", fine.period_error / coarse.period_error);
+  EXPECT_LT(std::fabs(fine.period_error), 0.75 * std::fabs(coarse.period_error));
+  EXPECT_LT(fine.rms_angle_error_deg, coarse.rms_angle_error_deg);
+  ASSERT_GT(coarse.flip_time, 0.0);
+  ASSERT_GT(half_step.flip_time, 0.0);
+  EXPECT_NEAR(coarse.flip_time / half_step.flip_time, 1.0, 0.03);
+}
+
+TEST(ResolutionLong, SphereOnATubesAxisMovesAtBungayAndBrennersSpeed) {
+  for (const double radius_ratio : {0.8, 0.9}) {
+    const double diameter = 2.0 * radius_ratio * 5.0;  // the case's tube: R = 5 μm, V_mean = 10 μm/s
+    const std::string tag = radius_ratio == 0.8 ? "08" : "09";
+    const rouleau::DiagnosticsRows rows =
+        run_case("sphere_in_tube", tag, " --set cell_kinds.plug.diameter_um=" + std::to_string(diameter));
+    const rouleau::PlugSpeed plug = rouleau::measure_plug_speed(rows, 0.1);  // the second half of 0.2 s
+    const double ratio = plug.speed / 10.0, reference = rouleau::sphere_in_tube_speed_ratio(radius_ratio);
+    std::printf("plug a/R = %.1f: U/V_mean = %.4f, Bungay & Brenner %.4f (%+.2f %%), speed spread %.3g um/s\n",
+                radius_ratio, ratio, reference, 100.0 * (ratio / reference - 1.0), plug.speed_spread);
+    EXPECT_NEAR(ratio / reference, 1.0, 0.1) << "a/R " << radius_ratio;
+  }
+}
+
+TEST(ResolutionLong, PassingSpheresKeepTheirOffsetBetterOnFinerMeshes) {
+  const double radius = 2.0;
+  std::vector<rouleau::PairReversibility> runs;
+  for (const std::string elements : {"[48,24,16]", "[64,32,22]", "[96,48,32]"}) {
+    const rouleau::DiagnosticsRows rows =
+        run_case("sphere_pair_shear", elements.substr(1, 2), " --set \"domain.elements=" + elements + "\"");
+    runs.push_back(rouleau::measure_pair_reversibility(rows, radius));
+    const auto& r = runs.back();
+    std::printf("pair %s: offset %.4f -> %.4f um, asymmetry %+.4f, smallest gap %.4f um, %s\n", elements.c_str(),
+                r.initial_offset, r.final_offset, r.asymmetry, r.smallest_gap, r.passed ? "passed" : "NOT passed");
+    EXPECT_TRUE(r.passed) << elements;
+  }
+  for (std::size_t i = 1; i < runs.size(); ++i) EXPECT_LT(std::fabs(runs[i].asymmetry), std::fabs(runs[i - 1].asymmetry));
+}
+
+}  // namespace

@@ -15,6 +15,7 @@
 #include "config/derived.hpp"
 #include "config/load_case.hpp"
 #include "config/resolved_case.hpp"
+#include "config/scene_plan.hpp"
 #include "geometry/grading.hpp"
 #include "util/errors.hpp"
 #include "temporary_folder.hpp"
@@ -606,6 +607,16 @@ TEST(ConfigCoupling, StrainPerStepBeyondTheMeasuredAccurateRangeIsWarnedOf) {
       rouleau::derive_quantities(rouleau::load_case(cases + "spheroid_shear/case.toml", {"time.dt_s=1e-2"}));
   EXPECT_NEAR(coarse_step.strain_per_step, 0.1, 1e-14);
   EXPECT_NE(coarse_step.accuracy_warning.find("dt <= 0.005 s"), std::string::npos) << coarse_step.accuracy_warning;
+  // --explain says it in the cells' stage: within the range at 2.5e-3 s, beyond it at 1e-2 s.
+  const auto cells_stage = [&](const std::vector<std::string>& overrides) {
+    const CaseConfig config = rouleau::load_case(cases + "spheroid_shear/case.toml", overrides);
+    for (const auto& stage : rouleau::plan_scene(config, rouleau::derive_quantities(config)).stages)
+      if (stage.name == "cells") return stage.reason;
+    return std::string();
+  };
+  EXPECT_NE(cells_stage({}).find("strain per step, shear rate x dt = 0.025"), std::string::npos) << cells_stage({});
+  EXPECT_NE(cells_stage({}).find("within the 0.05"), std::string::npos);
+  EXPECT_NE(cells_stage({"time.dt_s=1e-2"}).find("BEYOND the 0.05"), std::string::npos);
   // The capillary: 10 μm/s in feeders of radius 5 μm, a throat of 2.5 μm: Poiseuille's wall
   // shear rate there 4 V (R/R_t)² / R_t = 64 1/s.
   const rouleau::DerivedQuantities vessel = rouleau::derive_quantities(rouleau::load_case(cases + "capillary/case.toml"));

@@ -177,7 +177,6 @@ void derive_stable_step(const CaseConfig& config, DerivedQuantities& derived) {
                              (volume_constraint ? "; it leaves out the volume constraint (volume_modulus_Pa)" : "");
 }
 
-
 // The flow's largest shear rate as the case sets it:
 //   between moving walls ℓ apart: |Δv_t| / ℓ (simple shear);
 //   a plane channel of height ℓ with mean speed V (an inflow side, or the Poiseuille

@@ -9,8 +9,9 @@
 //           about z.
 //   sphere  an OpenCASCADE sphere; the shell is the sphere of radius R minus the one of
 //           radius R − h.
-//   spheroid  an OpenCASCADE unit sphere, its poles turned onto the x axis, scaled by
-//           (a, a, c); filled only (cell_shapes.cpp says why).
+//   spheroid  an OpenCASCADE unit sphere, its poles turned onto the longest axis (x for a
+//           disc, left on z for a rod), scaled by (a, a, c); filled only (cell_shapes.cpp
+//           says why).
 //   sickle  the unbent ellipsoid (an OpenCASCADE unit sphere, its poles turned onto the x
 //           axis, scaled by a, b, c; the shell minus the one with a − h, b − h, c − h) is
 //           meshed with element sizes from the exact curvature, then every node is moved by

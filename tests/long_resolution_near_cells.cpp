@@ -6,13 +6,13 @@
 //   at h_f = 1 and 0.5 μm. Not met at either (period −24 % and −14 %, measured); the
 //   test holds the error's fall with h_f (first order: a ratio near 0.5; threshold 0.75)
 //   and the step's accuracy at the case's strain per step (the flip within 3 % of the run
-//   at half the step). 64 + 631 + 100 s on 2 cores.
+//   at half the step). 629 s on 2 cores.
 // - Bungay & Brenner (1973): a stiff sphere of a/R = 0.8 and 0.9 on the axis of Poiseuille
 //   flow, cases/sphere_in_tube (fluid elements 1 μm, 0.5 μm at the wall), moves at their
-//   U/V_mean within 10 % (the threshold of the validation's statement). 123 + 146 s.
+//   U/V_mean within 10 % (the threshold of the validation's statement). 247 s.
 // - Reversibility: two stiff spheres (a = 2 μm) passing each other in shear,
 //   cases/sphere_pair_shear at a/h_f = 1.33, 2 and 2.67: they pass, and the change of
-//   their offset across the streamlines falls at each refinement. 35 + 180 + 294 s.
+//   their offset across the streamlines falls at each refinement. 424 s.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "config/cell_kinds.hpp"
+#include "config/derived.hpp"
 #include "io/diagnostics_reader.hpp"
 #include "run/run_case.hpp"
 
@@ -17,8 +18,7 @@ int main(int argc, char** argv) {
   const rouleau::CaseConfig& config = run.config;
   const rouleau::CellKindConfig& capsule = *rouleau::find_cell_kind(config, config.cells.at(0).kind);
   const auto& domain = config.domain;
-  const double shear_rate = (domain.boundary[rouleau::y_max].velocity[0] - domain.boundary[rouleau::y_min].velocity[0]) /
-                            (domain.upper[1] - domain.lower[1]);
+  const double shear_rate = rouleau::derive_quantities(config).shear_rate;  // the walls' γ̇
   // The thin membrane the shell stands for is its mid-surface, of radius a = D/2 − h/2;
   // D is measured there too (src/cells/cell_shape.hpp).
   const double radius = 0.5 * (capsule.diameter - capsule.shell_thickness);

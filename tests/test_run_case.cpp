@@ -146,6 +146,7 @@ TEST(RunCase, CellsAreWrittenInPlaceBesideTheFluid) {
   EXPECT_EQ(last.at("interaction_energy_pN_um"), 0.0);
   EXPECT_EQ(last.at("neighbor_list_rebuilds"), 1.0);
   EXPECT_NEAR(last.at("largest_relative_volume_change"), 0.0, 1e-14);
+  EXPECT_NEAR(last.at("smallest_volume_ratio"), 1.0, 1e-12);  // no element compressed
   const Dataset ids = read_dataset(out + "/fields_000001.h5", "/cells/cell_id", false);
   const Dataset x = read_dataset(out + "/fields_000001.h5", "/cells/coordinates", false);
   const Dataset tets = read_dataset(out + "/fields_mesh.h5", "/cells/connectivity", true);
@@ -303,6 +304,9 @@ TEST(RunCase, CellsEnterTheContractionNormalAndSickle) {
                 rows.back().at("largest_relative_volume_change"));
     EXPECT_GT(rows.back().at("cell0_centroid_x_um"), start + 0.01);
     EXPECT_LT(rows.back().at("largest_relative_volume_change"), 1e-3);
+    // Moving, the cells deform a little: the most compressed element below 1, far from 0.
+    EXPECT_LT(rows.back().at("smallest_volume_ratio"), 1.0);
+    EXPECT_GT(rows.back().at("smallest_volume_ratio"), 0.5);
   }
 }
 

@@ -182,6 +182,47 @@ TEST(VesselMesh, RenumberingNarrowsTheBandAndKeepsTheMesh) {
       EXPECT_EQ(shuffled[tetrahedra[e][v]], vessel.nodes[vessel.tetrahedra[e][v]]);
 }
 
+// Mean edge length of the wall triangles whose centroid lies in [from, to] along the axis.
+double mean_wall_edge(const VesselMesh& mesh, double from, double to) {
+  double sum = 0.0;
+  int count = 0;
+  for (const auto& f : mesh.wall) {
+    const double x = (mesh.nodes[f[0]][0] + mesh.nodes[f[1]][0] + mesh.nodes[f[2]][0]) / 3.0;
+    if (x < from || x > to) continue;
+    for (int k = 0; k < 3; ++k) {
+      const MeshPoint &a = mesh.nodes[f[k]], &b = mesh.nodes[f[(k + 1) % 3]];
+      sum += std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]) / 3.0;
+    }
+    ++count;
+  }
+  return sum / count;
+}
+
+TEST(VesselMesh, ARefinedStretchHasTheScaledSizeAndTheRestKeepsItsOwn) {
+  // A tube of radius 3 μm, 12 μm long, h = 0.8, h_w = 0.4 μm, the stretch 5–8 μm refined by
+  // s_r = 0.5 (blending back over 2h = 1.6 μm): the wall's edges inside it half those at
+  // the inlet, which lies more than 1.6 μm away; the volume still right.
+  const VesselProfile p = tube(3.0, 12.0);
+  VesselMeshSizes sizes{0.8, 0.4};
+  sizes.refined_scale = 0.5;
+  sizes.refined_from = 5.0;
+  sizes.refined_to = 8.0;
+  const VesselMesh refined = rouleau::make_vessel_mesh(p, sizes);
+  const VesselMesh plain = rouleau::make_vessel_mesh(p, VesselMeshSizes{0.8, 0.4});
+  const double inside = mean_wall_edge(refined, 5.3, 7.7), outside = mean_wall_edge(refined, 0.3, 3.0);
+  const double plain_outside = mean_wall_edge(plain, 0.3, 3.0);
+  const double volume_error = std::abs(mesh_volume(refined) - rouleau::vessel_volume(p)) / rouleau::vessel_volume(p);
+  std::printf("refined stretch ×0.5: %zu tetrahedra (%zu without); mean wall edge %.3f μm inside, %.3f μm at the "
+              "inlet (%.3f without); volume error %.2e; smallest size %.3f μm\n",
+              refined.tetrahedra.size(), plain.tetrahedra.size(), inside, outside, plain_outside, volume_error,
+              rouleau::smallest_vessel_element_size(p, sizes));
+  EXPECT_NEAR(inside / outside, 0.5, 0.1);
+  EXPECT_NEAR(outside / plain_outside, 1.0, 0.1);
+  EXPECT_LT(volume_error, 1e-2);
+  EXPECT_DOUBLE_EQ(rouleau::smallest_vessel_element_size(p, sizes), 0.2);
+  EXPECT_NE(refined.hash, plain.hash);
+}
+
 TEST(VesselMesh, BadSizesAreRefusedWithTheKey) {
   const VesselProfile p = tube(3.0, 8.0);
   auto problem = rouleau::vessel_mesh_sizes_problem(p, VesselMeshSizes{0.5, 0.8});
@@ -194,6 +235,19 @@ TEST(VesselMesh, BadSizesAreRefusedWithTheKey) {
   ASSERT_TRUE(problem);
   EXPECT_NE(problem->reason.find("tetrahedra expected"), std::string::npos) << problem->reason;
   EXPECT_FALSE(rouleau::vessel_mesh_sizes_problem(p, VesselMeshSizes{0.5, 0.25}));
+  VesselMeshSizes refined{0.5, 0.25};
+  refined.refined_scale = 0.0;
+  EXPECT_EQ(rouleau::vessel_mesh_sizes_problem(p, refined)->key, "refined_element_scale");
+  refined.refined_scale = 0.5;
+  refined.refined_from = 4.0;
+  refined.refined_to = 3.0;
+  EXPECT_EQ(rouleau::vessel_mesh_sizes_problem(p, refined)->key, "refined_to_um");
+  refined.refined_from = 9.0;
+  refined.refined_to = 12.0;
+  EXPECT_EQ(rouleau::vessel_mesh_sizes_problem(p, refined)->key, "refined_to_um");
+  refined.refined_from = 2.0;
+  refined.refined_to = 5.0;
+  EXPECT_FALSE(rouleau::vessel_mesh_sizes_problem(p, refined));
   try {
     VesselProfile wide = tube(3.0, 8.0);
     wide.throat_radius = 4.0;

@@ -75,6 +75,11 @@ std::vector<CaseKey> make_case_keys() {
        "h, the tetrahedra's size on the feeders' axis (scaled with the local radius); > 0"},
       {"vessel", "wall_element_size_um", Kind::number, "μm", "0", any, {},
        "h_w, the size on the feeders' wall, at most h; 0 = element_size_um"},
+      {"vessel", "refined_element_scale", Kind::number, "", "1", any, {},
+       "s_r in (0, 1]: the sizes between refined_from_um and refined_to_um are multiplied by it "
+       "(where the cells squeeze), returning to 1 over 2 element_size_um; 1 = no refined stretch"},
+      {"vessel", "refined_from_um", Kind::number, "μm", "0", any, {}, "x_a, where the refined stretch starts"},
+      {"vessel", "refined_to_um", Kind::number, "μm", "0", any, {}, "x_b, where it ends; above refined_from_um"},
       {"vessel", "allow_squeeze", Kind::boolean, "", "false", any, {},
        "allow cells wider than the throat (they must deform to pass it)"},
       {"vessel", "wall_repulsion_Pa", Kind::number, "Pa", "2", non_negative, {},

@@ -8,6 +8,7 @@
 
 #include "config/cell_kinds.hpp"
 #include "geometry/grading.hpp"
+#include "geometry/vessel_mesh.hpp"
 
 namespace rouleau {
 namespace {
@@ -70,14 +71,10 @@ double derived_velocity_scale(const CaseConfig& config, double length_scale) {
   return speed > 0.0 ? speed : 1.0;
 }
 
-// The smallest fluid element edge [μm]: of the box, or the vessel's size field at the
-// throat's wall.
+// The smallest fluid element edge [μm]: of the box, or the vessel's size field on the
+// wall (the throat's, or a refined stretch's).
 double smallest_fluid_element(const CaseConfig& config) {
-  if (config.vessel.enabled) {
-    const VesselConfig& vessel = config.vessel;
-    const double wall = vessel.sizes.wall_element_size > 0.0 ? vessel.sizes.wall_element_size : vessel.sizes.element_size;
-    return wall * vessel.profile.throat_radius / vessel.profile.radius;
-  }
+  if (config.vessel.enabled) return smallest_vessel_element_size(config.vessel.profile, config.vessel.sizes);
   const DomainConfig& domain = config.domain;
   double smallest = 0.0;
   for (int axis = 0; axis < 3; ++axis) {
@@ -322,10 +319,14 @@ std::string describe_fluid_domain(const CaseConfig& config) {
   if (config.vessel.enabled) {
     const VesselConfig& v = config.vessel;
     const double wall = v.sizes.wall_element_size > 0.0 ? v.sizes.wall_element_size : v.sizes.element_size;
-    std::snprintf(text, sizeof(text),
-                  "vessel of tetrahedra (Gmsh), radius %g μm, throat %g μm, length %g μm, elements %g μm (%g μm at "
-                  "the wall)",
-                  v.profile.radius, v.profile.throat_radius, vessel_length(v.profile), v.sizes.element_size, wall);
+    int written = std::snprintf(text, sizeof(text),
+                                "vessel of tetrahedra (Gmsh), radius %g μm, throat %g μm, length %g μm, elements %g μm "
+                                "(%g μm at the wall)",
+                                v.profile.radius, v.profile.throat_radius, vessel_length(v.profile),
+                                v.sizes.element_size, wall);
+    if (v.sizes.refined_scale < 1.0 && written > 0 && written < static_cast<int>(sizeof(text)))
+      std::snprintf(text + written, sizeof(text) - written, ", × %g from x = %g to %g μm", v.sizes.refined_scale,
+                    v.sizes.refined_from, v.sizes.refined_to);
     return text;
   }
   const DomainConfig& d = config.domain;

@@ -100,6 +100,9 @@ void read_vessel(const TableReader& root, VesselConfig& vessel) {
   if (const auto problem = vessel_profile_problem(p)) section.fail(problem->key, problem->reason);
   vessel.sizes.element_size = require(section, "element_size_um", section.number("element_size_um"));
   vessel.sizes.wall_element_size = section.number("wall_element_size_um").value_or(0.0);
+  assign(vessel.sizes.refined_scale, section.number("refined_element_scale"));
+  assign(vessel.sizes.refined_from, section.number("refined_from_um"));
+  assign(vessel.sizes.refined_to, section.number("refined_to_um"));
   if (const auto problem = vessel_mesh_sizes_problem(p, vessel.sizes)) section.fail(problem->key, problem->reason);
   assign(vessel.allow_squeeze, section.boolean("allow_squeeze"));
   assign(vessel.wall_repulsion_pressure, section.number("wall_repulsion_Pa"));

@@ -173,6 +173,9 @@ std::string resolved_case_toml(const CaseConfig& config, const DerivedQuantities
     toml_file.key("transition", toml_name(vessel.profile.transition));
     toml_file.key("element_size_um", vessel.sizes.element_size);
     toml_file.key("wall_element_size_um", vessel.sizes.wall_element_size);
+    toml_file.key("refined_element_scale", vessel.sizes.refined_scale);
+    toml_file.key("refined_from_um", vessel.sizes.refined_from);
+    toml_file.key("refined_to_um", vessel.sizes.refined_to);
     toml_file.key("allow_squeeze", vessel.allow_squeeze);
     toml_file.key("wall_repulsion_Pa", vessel.wall_repulsion_pressure);
     toml_file.key("wall_repulsion_range_um", vessel.wall_repulsion_range);

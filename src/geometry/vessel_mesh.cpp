@@ -44,12 +44,12 @@ double wall_size(const VesselMeshSizes& sizes) {
   return sizes.wall_element_size > 0.0 ? sizes.wall_element_size : sizes.element_size;
 }
 
-// h(x, r) = (R(x)/R) [h_w + (h − h_w) min(1, 2 (R(x) − r)/R(x))]
-double element_size_at(const VesselProfile& profile, const VesselMeshSizes& sizes, double x, double r) {
-  const double local_radius = vessel_radius(profile, x);
-  const double depth = std::clamp(2.0 * (local_radius - r) / local_radius, 0.0, 1.0);
-  const double h_wall = wall_size(sizes);
-  return local_radius / profile.radius * (h_wall + (sizes.element_size - h_wall) * depth);
+// The refined stretch's factor s_r + (1 − s_r) min(1, d(x)/ℓ), ℓ = 2h.
+double refinement_factor(const VesselMeshSizes& sizes, double x) {
+  if (sizes.refined_scale >= 1.0) return 1.0;
+  const double distance = std::max({sizes.refined_from - x, x - sizes.refined_to, 0.0});
+  const double blend_length = 2.0 * sizes.element_size;
+  return sizes.refined_scale + (1.0 - sizes.refined_scale) * std::min(1.0, distance / blend_length);
 }
 
 // The closed profile face in the x–y plane, revolved about x; within a GmshSession.
@@ -104,7 +104,7 @@ TetrahedralMesh mesh_lumen(const VesselProfile& profile, const VesselMeshSizes& 
   gmsh::model::add("vessel");
   add_lumen(profile);
   return mesh_volumes(std::max(sizes.element_size, wall_size(sizes)), [&](double x, double y, double z) {
-    return element_size_at(profile, sizes, x, std::hypot(y, z));
+    return vessel_element_size(profile, sizes, x, std::hypot(y, z));
   });
 }
 
@@ -125,6 +125,9 @@ std::string canonical_parameters(const VesselProfile& p, const VesselMeshSizes& 
        << " transition=" << (p.transition == VesselTransition::cosine ? "cosine" : "cone")
        << " transition_samples=" << transition_samples << " element_size=" << sizes.element_size
        << " wall_element_size=" << wall_size(sizes);
+  if (sizes.refined_scale < 1.0)  // absent otherwise: the meshes made before the option keep their hash
+    text << " refined_scale=" << sizes.refined_scale << " refined_from=" << sizes.refined_from
+         << " refined_to=" << sizes.refined_to;
   return text.str();
 }
 
@@ -179,6 +182,27 @@ CachedMesh to_cached(const VesselMesh& mesh) {
 
 }  // namespace
 
+// h(x, r) = (R(x)/R) [h_w + (h − h_w) min(1, 2 (R(x) − r)/R(x))], times the refined
+// stretch's factor.
+double vessel_element_size(const VesselProfile& profile, const VesselMeshSizes& sizes, double x, double r) {
+  const double local_radius = vessel_radius(profile, x);
+  const double depth = std::clamp(2.0 * (local_radius - r) / local_radius, 0.0, 1.0);
+  const double h_wall = wall_size(sizes);
+  return local_radius / profile.radius * (h_wall + (sizes.element_size - h_wall) * depth) *
+         refinement_factor(sizes, x);
+}
+
+double smallest_vessel_element_size(const VesselProfile& profile, const VesselMeshSizes& sizes) {
+  const int samples = 2000;
+  const double length = vessel_length(profile);
+  double smallest = vessel_element_size(profile, sizes, 0.0, profile.radius);
+  for (int i = 1; i <= samples; ++i) {
+    const double x = length * i / samples;
+    smallest = std::min(smallest, vessel_element_size(profile, sizes, x, vessel_radius(profile, x)));
+  }
+  return smallest;
+}
+
 double expected_element_count(const VesselProfile& profile, const VesselMeshSizes& sizes) {
   const int nx = 200, nr = 50;
   const double length = vessel_length(profile);
@@ -187,7 +211,7 @@ double expected_element_count(const VesselProfile& profile, const VesselMeshSize
     const double x = (i + 0.5) * length / nx, radius = vessel_radius(profile, x);
     for (int j = 0; j < nr; ++j) {
       const double r = (j + 0.5) * radius / nr;
-      const double h = element_size_at(profile, sizes, x, r);
+      const double h = vessel_element_size(profile, sizes, x, r);
       count += 2.0 * pi * r * (radius / nr) * (length / nx) / (h * h * h / 8.48528137423857029);
     }
   }
@@ -203,6 +227,17 @@ std::optional<VesselProfileProblem> vessel_mesh_sizes_problem(const VesselProfil
     return VesselProfileProblem{"wall_element_size_um", "must be >= 0 (0: the same as element_size_um)"};
   if (wall_size(sizes) > sizes.element_size)
     return VesselProfileProblem{"wall_element_size_um", "must not exceed element_size_um (the mesh is graded toward the wall)"};
+  if (!(sizes.refined_scale > 0.0 && sizes.refined_scale <= 1.0))
+    return VesselProfileProblem{"refined_element_scale", "must be in (0, 1] (1: no refined stretch)"};
+  if (sizes.refined_scale < 1.0) {
+    if (!(sizes.refined_to > sizes.refined_from))
+      return VesselProfileProblem{"refined_to_um", "must be above refined_from_um"};
+    if (!(sizes.refined_from < vessel_length(profile) && sizes.refined_to > 0.0)) {
+      std::ostringstream reason;
+      reason << "the refined stretch must overlap the vessel, 0 to " << vessel_length(profile) << " μm";
+      return VesselProfileProblem{"refined_to_um", reason.str()};
+    }
+  }
   if (!vessel_profile_problem(profile)) {
     const double count = expected_element_count(profile, sizes);
     if (count > largest_element_count) {

@@ -17,10 +17,22 @@ namespace rouleau {
 //   h(x, r) = (R(x)/R) [h_w + (h − h_w) min(1, 2 (R(x) − r)/R(x))]
 // that is h_w on the wall growing linearly to h over the outer half of the radius, and
 // scaled with the local radius so that a throat gets as many elements across as the feeders.
+// A refined stretch [x_a, x_b] of the axis (where the cells squeeze) multiplies that size by
+// s_r ≤ 1, returning to it linearly over a blend length ℓ = 2h on either side:
+//   h_r(x, r) = h(x, r) [s_r + (1 − s_r) min(1, d(x)/ℓ)],  d(x) the distance from x to [x_a, x_b].
 struct VesselMeshSizes {
   double element_size = 1.0;       // h, on the axis of the feeders
   double wall_element_size = 0.0;  // h_w, on the wall of the feeders; 0: the same as h
+  double refined_scale = 1.0;      // s_r in (0, 1]; 1: no refined stretch
+  double refined_from = 0.0;       // x_a [μm]
+  double refined_to = 0.0;         // x_b [μm], ≥ x_a
 };
+
+// h_r(x, r) above [μm].
+double vessel_element_size(const VesselProfile& profile, const VesselMeshSizes& sizes, double x, double r);
+
+// The smallest element size the mesh is made for: h_r on the wall, minimized along the axis.
+double smallest_vessel_element_size(const VesselProfile& profile, const VesselMeshSizes& sizes);
 
 struct VesselMesh {
   std::vector<MeshPoint> nodes;             // [μm]
@@ -31,9 +43,10 @@ struct VesselMesh {
   std::string hash;                         // of the parameters that made it (the cache key)
 };
 
-// What is wrong with the sizes, if anything: "element_size_um" or "wall_element_size_um"
-// and the reason (not positive; the wall size above the core size; more than ~5 million
-// elements expected).
+// What is wrong with the sizes, if anything: the key ("element_size_um",
+// "wall_element_size_um", "refined_element_scale", "refined_to_um") and the reason (not
+// positive; the wall size above the core size; a scale outside (0, 1]; a stretch that ends
+// before it starts or lies outside the vessel; more than ~5 million elements expected).
 std::optional<VesselProfileProblem> vessel_mesh_sizes_problem(const VesselProfile& profile,
                                                               const VesselMeshSizes& sizes);
 

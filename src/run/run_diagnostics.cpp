@@ -97,7 +97,7 @@ CellDiagnostics::CellDiagnostics(const CaseCells& cells, const CaseConfig& confi
 
 std::vector<std::string> CellDiagnostics::columns() const {
   std::vector<std::string> names{"elastic_energy_pN_um", "interaction_energy_pN_um", "neighbor_list_rebuilds",
-                                 "largest_relative_volume_change"};
+                                 "largest_relative_volume_change", "smallest_volume_ratio"};
   for (std::size_t c = 0; c < initial_volumes_.size(); ++c) {
     const std::string cell = "cell" + std::to_string(c) + "_";
     for (const char* name : {"volume_um3", "centroid_x_um", "centroid_y_um", "centroid_z_um", "inclination_deg",
@@ -122,7 +122,10 @@ std::vector<double> CellDiagnostics::row(const CaseCells& cells, const CellForce
   double largest_change = 0.0;
   const std::vector<CellMeasures> now = cells.population->measures();
   const std::vector<ShearPlaneShape> shapes = shear_plane_shapes(*cells.population, now, cells.membrane_depth);
-  std::vector<double> values{elastic, interaction, rebuilds, 0.0};
+  // J = det F of the most compressed element of all cells (every rank holds every cell's
+  // positions, so no reduction).
+  const double smallest_volume_ratio = cells.population->most_compressed_element().volume_ratio;
+  std::vector<double> values{elastic, interaction, rebuilds, 0.0, smallest_volume_ratio};
   for (std::size_t c = 0; c < now.size(); ++c) {
     largest_change = std::max(largest_change, std::fabs(now[c].volume / initial_volumes_[c] - 1.0));
     values.insert(values.end(), {now[c].volume, now[c].centroid[0], now[c].centroid[1], now[c].centroid[2],

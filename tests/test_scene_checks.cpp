@@ -104,6 +104,17 @@ TEST(SceneChecks, ContractionPassageWantsNormalCellsThroughAndSickleCellsHeld) {
   // The same cells with the exit at 50 um: nobody has passed.
   EXPECT_TRUE(rouleau::check_contraction_passage(rows, {"sickle", "sickle"}, 50.0).met());
   EXPECT_FALSE(rouleau::check_contraction_passage(rows, {"normal"}, 50.0).met());
+  // Without the elements' column nothing is known to be crushed; with it, the smallest J
+  // and when, and an element at J = 0.15 is crushed (0.25 is not).
+  EXPECT_TRUE(normal.no_element_crushed);
+  const double volume_ratio[3] = {1.0, 0.15, 0.4};
+  for (int r = 0; r < 3; ++r) rows[r]["smallest_volume_ratio"] = volume_ratio[r];
+  const auto crushed = rouleau::check_contraction_passage(rows, {"normal", "normal"}, 40.0);
+  EXPECT_DOUBLE_EQ(crushed.smallest_volume_ratio, 0.15);
+  EXPECT_DOUBLE_EQ(crushed.smallest_volume_ratio_time, 1.0);
+  EXPECT_FALSE(crushed.no_element_crushed);
+  rows[1]["smallest_volume_ratio"] = 0.25;
+  EXPECT_TRUE(rouleau::check_contraction_passage(rows, {"normal", "normal"}, 40.0).no_element_crushed);
 }
 
 TEST(SceneChecks, CapillaryPassageRisesPlugsStretchesAndFalls) {

@@ -43,6 +43,10 @@ int main(int argc, char** argv) {
                                     : "not past the throat's exit");
     std::printf("check (normal cells pass the throat): %s; (sickle cells do not, in the same time): %s\n",
                 passage.normal_cells_passed ? "met" : "NOT MET", passage.sickle_cells_blocked ? "met" : "NOT MET");
+    std::printf("most compressed cell element: J = %.3f at t = %.3f s (%s, J > %.1f)\n",
+                passage.smallest_volume_ratio, passage.smallest_volume_ratio_time,
+                passage.no_element_crushed ? "none crushed" : "CRUSHED",
+                rouleau::ContractionPassageCheck::crushed_volume_ratio);
   }
   const auto& last = rows.back();
   const double inflow = last.at("flow_rate_inlet_um3_s"), outflow = last.at("flow_rate_outlet_um3_s");

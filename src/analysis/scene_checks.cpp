@@ -70,6 +70,13 @@ ContractionPassageCheck check_contraction_passage(const DiagnosticsRows& rows, c
     else
       check.normal_cells_passed = check.normal_cells_passed && check.passed.back();
   }
+  if (rows.front().count("smallest_volume_ratio")) {
+    const std::vector<double> volume_ratio = diagnostics_column(rows, "smallest_volume_ratio");
+    const auto smallest = std::min_element(volume_ratio.begin(), volume_ratio.end());
+    check.smallest_volume_ratio = *smallest;
+    check.smallest_volume_ratio_time = diagnostics_value(rows[smallest - volume_ratio.begin()], "time_s");
+  }
+  check.no_element_crushed = check.smallest_volume_ratio > ContractionPassageCheck::crushed_volume_ratio;
   return check;
 }
 

@@ -54,6 +54,14 @@ struct ContractionPassageCheck {
   bool normal_cells_passed = true;   // every cell not of kind "sickle" passed (true when none)
   bool sickle_cells_blocked = true;  // no "sickle" cell passed (true when none)
   bool met() const { return normal_cells_passed && sickle_cells_blocked; }
+  // The numerics, apart from the paper's statement: the most compressed cell element's
+  // J = det F over the run (column smallest_volume_ratio; 1 when the run has none). An
+  // element below crushed_volume_ratio is crushed: squeezed by velocity gradients finer than
+  // the fluid resolves, it is a step from inverting.
+  static constexpr double crushed_volume_ratio = 0.2;
+  double smallest_volume_ratio = 1.0;
+  double smallest_volume_ratio_time = 0.0;  // [s] when it was reached
+  bool no_element_crushed = true;
 };
 ContractionPassageCheck check_contraction_passage(const DiagnosticsRows& rows, const std::vector<std::string>& kinds,
                                                   double throat_exit);

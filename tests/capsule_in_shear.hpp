@@ -24,6 +24,7 @@ struct CapsuleResult {
   double deformation_drift = 0.0;  // D at the end less D at 80 % of the run
   double inclination_deg = 0.0;
   double largest_volume_change = 0.0;  // |V/V0 − 1|, largest over the run
+  double final_volume_change = 0.0;    // V/V0 − 1 at the end
   double a_over_h = 0.0;
 };
 
@@ -64,12 +65,14 @@ inline CapsuleResult run_capsule(double capillary_number, std::vector<std::strin
       result.inclination_deg = shape.inclination_deg;
     }
   }
+  result.final_volume_change = cells.population->measures().at(0).volume / initial_volume - 1.0;
   for (double d : late) result.deformation += d / late.size();
   result.deformation_drift = late.back() - deformation_at_80;
   std::printf("capsule Ca = %.4f (shear rate %.1f /s, a/h_f = %.2f, gamma t = %.2f): D = %.4f (drift over the last "
-              "20 %%: %+.4f), inclination %.1f deg, largest volume change %.2e\n",
+              "20 %%: %+.4f), inclination %.1f deg, largest volume change %.2e, at the end %+.3f %%\n",
               capillary_number, shear_rate, result.a_over_h, shear_rate * config.time.end, result.deformation,
-              result.deformation_drift, result.inclination_deg, result.largest_volume_change);
+              result.deformation_drift, result.inclination_deg, result.largest_volume_change,
+              100.0 * result.final_volume_change);
   return result;
 }
 

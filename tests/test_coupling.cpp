@@ -139,6 +139,29 @@ TEST(Coupling, CapsuleDeformsInProportionToCaAndKeepsItsVolume) {
   rouleau::testing::expect_steady_and_volume_kept(twice);
 }
 
+TEST(Coupling, CapsuleWithoutTheConstraintKeepsItsVolumeWhenTheMembraneMovesWithTheWholeVelocity) {
+  // The long tier's volume test reduced (CapsuleShearLong.VolumeKeptWithoutTheConstraint...):
+  // the capsule case at a/h_f = 4.1, Ca = 0.05, without the volume constraint, to γ̇t = 5,
+  // with the default coupling and with the settings that remove the membrane's leak (the
+  // cells move with u_h + u', the loads enter the stabilization, RKPM support 2.5
+  // elements). Threshold, set before the runs: the volume change at the end at most a
+  // third of the default's (at a/h_f = 4.1 over γ̇t = 10: +0.45 % against −2.26 %). Not at
+  // a/h_f = 2.7: there these settings gain 1.52 % where the default loses 0.19 %
+  // (measured; docs/validation.md).
+  const std::vector<std::string> coarse{"domain.elements=[27, 34, 27]", "time.dt_s=1.3333e-4", "time.end_s=0.026",
+                                        "cell_kinds.capsule.volume_modulus_Pa=0"};
+  std::vector<std::string> remedy = coarse;
+  for (const char* setting : {"coupling.subscale_velocity=true", "coupling.forces_in_stabilization=true",
+                              "coupling.support_elements=2.5"})
+    remedy.push_back(setting);
+  const auto before = rouleau::testing::run_capsule(0.05, coarse);
+  const auto after = rouleau::testing::run_capsule(0.05, remedy);
+  std::printf("capsule without the volume constraint at a/h_f = %.1f, gamma t = 5: volume change %+.3f %% (default), "
+              "%+.3f %% (u_h + u', loads in the stabilization, support 2.5)\n",
+              after.a_over_h, 100.0 * before.final_volume_change, 100.0 * after.final_volume_change);
+  EXPECT_LT(std::fabs(after.final_volume_change), std::fabs(before.final_volume_change) / 3.0);
+}
+
 TEST(Coupling, StiffSphereInShearRotatesAtHalfTheShearRate) {
   // The stiff sphere of tests/sphere_in_shear.hpp between walls 8a apart (d = 4a: the
   // reference ω_z = −(γ̇/2)(1 − (5/8)/64) = −0.4951/s; its neglected terms, higher

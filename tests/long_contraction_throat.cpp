@@ -36,8 +36,9 @@ TEST(ContractionLong, PaperResolutionCellPassesTheRefinedThroatWithNoElementCrus
       " --set vessel.refined_element_scale=0.5 --set vessel.refined_from_um=22 --set vessel.refined_to_um=50");
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   const rouleau::DiagnosticsRows rows = rouleau::read_diagnostics(out + "/diagnostics.csv");
-  const double throat_exit = 20.0 + 10.0 + 10.0;  // the case's inlet feeder, cone and throat
-  const rouleau::ContractionPassageCheck check = rouleau::check_contraction_passage(rows, {"normal"}, throat_exit);
+  const double throat_entry = 20.0 + 10.0, throat_exit = throat_entry + 10.0;  // the case's feeder, cone, throat
+  const rouleau::ContractionPassageCheck check =
+      rouleau::check_contraction_passage(rows, {"normal"}, throat_entry, throat_exit);
   const std::vector<double> volume_change = rouleau::diagnostics_column(rows, "largest_relative_volume_change");
   double largest_volume_change = 0.0;
   for (const double v : volume_change) largest_volume_change = std::fmax(largest_volume_change, std::fabs(v));

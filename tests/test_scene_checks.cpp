@@ -13,10 +13,11 @@ namespace {
 
 using rouleau::DiagnosticsRows;
 
-// A row of a vertical stack: cell c at (x[c], y[c]) with inclination incl, neighbour gaps gap[c].
+// A row of a vertical stack at `time`: cell c at (x[c], y[c]) with inclination incl,
+// neighbour gaps gap[c].
 std::map<std::string, double> stack_row(const double (&x)[4], const double (&y)[4], double inclination,
-                                        const double (&gap)[3]) {
-  std::map<std::string, double> row;
+                                        const double (&gap)[3], double time) {
+  std::map<std::string, double> row{{"time_s", time}};
   for (int c = 0; c < 4; ++c) {
     const std::string cell = "cell" + std::to_string(c) + "_";
     row[cell + "centroid_x_um"] = x[c];
@@ -28,49 +29,82 @@ std::map<std::string, double> stack_row(const double (&x)[4], const double (&y)[
 }
 
 TEST(SceneChecks, StackMeasuresAreTheChangesBetweenTheFirstAndLastRows) {
-  const DiagnosticsRows rows{stack_row({0, 0, 0, 0}, {-6, -2, 2, 6}, 0.0, {1.4, 1.4, 1.4}),
-                             stack_row({-1, 0, 0, 1}, {-6.5, -2, 2.3, 6}, -12.0, {1.0, 2.1, 1.3})};
+  const DiagnosticsRows rows{stack_row({0, 0, 0, 0}, {-6, -2, 2, 6}, 0.0, {1.4, 1.4, 1.4}, 0.5),
+                             stack_row({-1, 0, 0, 1}, {-6.5, -2, 2.3, 6}, -12.0, {1.0, 2.1, 1.3}, 4.5)};
   const auto m = rouleau::measure_stack(rows, 4, 4, 0.25);
   EXPECT_NEAR(m.largest_gap_growth, 0.7, 1e-12);          // the middle gap, 1.4 -> 2.1
   EXPECT_NEAR(m.largest_separation_change, 0.5, 1e-12);   // cells 0-1: 4 -> 4.5
   EXPECT_NEAR(m.mean_inclination_deg, -10.5, 1e-12);      // -12, -11, -10, -9
   EXPECT_NEAR(m.inclination_spread_deg, 3.0, 1e-12);
   EXPECT_NEAR(m.stack_axis_deg, std::atan2(2.0, 12.5) * 180.0 / M_PI, 1e-12);  // dx 2, dy 12.5
+  EXPECT_NEAR(m.duration, 4.0, 1e-12);                    // 0.5 s -> 4.5 s
   EXPECT_FALSE(m.intact);                                 // 0.7 > r0
 }
 
 TEST(SceneChecks, EachShearRateHasThePapersStatementWithItsThresholds) {
-  rouleau::StackMeasures held;  // a stack turned by 20 deg as one body, gaps grown by 0.1 um
+  rouleau::StackMeasures held;  // a stack turned by 20 deg as one body, gaps grown by 0.1 um, over 8 s
   held.largest_gap_growth = 0.1;
   held.intact = true;
   held.mean_inclination_deg = -20.0;
   held.stack_axis_deg = 18.0;
   held.inclination_spread_deg = 2.0;
+  held.duration = 8.0;
   rouleau::StackMeasures parted = held;  // the same with a gap grown by 0.4 um
   parted.largest_gap_growth = 0.4;
   parted.intact = false;
   const double r0 = 0.25;
-  EXPECT_TRUE(rouleau::check_stack_statement(held, 0.25, true, r0).met);
+  const auto rotates = rouleau::check_stack_statement(held, 0.25, true, r0);
+  EXPECT_EQ(rotates.figure, "Fig. 9");
+  EXPECT_TRUE(rotates.met) << rotates.measured;
   EXPECT_FALSE(rouleau::check_stack_statement(parted, 0.25, true, r0).met);
   rouleau::StackMeasures sliding = held;  // intact but the centroid line does not turn with the discs
   sliding.stack_axis_deg = 0.0;
   EXPECT_FALSE(rouleau::check_stack_statement(sliding, 0.25, true, r0).met);
+  // Held, but only for 20 ms: shorter than the paper's 4 s at 0.25 1/s (strain 1), so not met.
+  rouleau::StackMeasures brief = held;
+  brief.duration = 0.02;
+  const auto too_short = rouleau::check_stack_statement(brief, 0.25, true, r0);
+  EXPECT_FALSE(too_short.long_enough);
+  EXPECT_FALSE(too_short.met);
+  EXPECT_NEAR(too_short.strain, 0.005, 1e-12);
+  brief.duration = 4.0;  // exactly the paper's
+  EXPECT_TRUE(rouleau::check_stack_statement(brief, 0.25, true, r0).met);
   // 0.5 1/s: starting to separate is the complement of intact; aligned within 20 deg.
   EXPECT_FALSE(rouleau::check_stack_statement(held, 0.5, true, r0).met);
   rouleau::StackMeasures aligned_parted = parted;
   aligned_parted.mean_inclination_deg = -8.0;
   EXPECT_TRUE(rouleau::check_stack_statement(aligned_parted, 0.5, true, r0).met);
   EXPECT_FALSE(rouleau::check_stack_statement(parted, 0.5, true, r0).met);  // -20 deg: not aligned
-  // 3.0 1/s: apart and in parallel layers.
-  EXPECT_TRUE(rouleau::check_stack_statement(parted, 3.0, true, r0).met);
+  // 3.0 1/s: apart and in parallel layers (Fig. 11 to 0.5 s; Fig. 12, two columns, to 3 s).
+  const auto layers = rouleau::check_stack_statement(parted, 3.0, true, r0);
+  EXPECT_EQ(layers.figure, "Fig. 11");
+  EXPECT_TRUE(layers.met);
   rouleau::StackMeasures tumbling = parted;
   tumbling.inclination_spread_deg = 25.0;
   EXPECT_FALSE(rouleau::check_stack_statement(tumbling, 3.0, true, r0).met);
-  // Without the interaction, whatever the rate: the vertical separations.
+  rouleau::StackMeasures twelve = parted;
+  twelve.duration = 2.0;  // strain 6, the paper's twelve cells sheared to 9
+  const auto aggregate = rouleau::check_stack_statement(twelve, 3.0, true, r0, 3);
+  EXPECT_EQ(aggregate.figure, "Fig. 12");
+  EXPECT_FALSE(aggregate.met);
+  EXPECT_TRUE(rouleau::check_stack_statement(twelve, 3.0, true, r0, 1).met);  // one column: Fig. 11, strain 1.5
+  // Each measure is printed with the relation it was held to and whether it holds: a gap
+  // that closed by 0.88 um at 3.0 1/s reads "-0.8800 > 0.25 um (r0): NO".
+  rouleau::StackMeasures closed = parted;
+  closed.largest_gap_growth = -0.88;
+  closed.intact = true;
+  const auto not_apart = rouleau::check_stack_statement(closed, 3.0, true, r0);
+  EXPECT_FALSE(not_apart.met);
+  EXPECT_NE(not_apart.measured.find("largest gap growth -0.8800 > 0.25 um (r0): NO"), std::string::npos)
+      << not_apart.measured;
+  EXPECT_NE(not_apart.measured.find("inclination spread 2.0000 < 10 deg: yes"), std::string::npos)
+      << not_apart.measured;
+  // Without the interaction, whatever the rate: the vertical separations (Fig. 8).
   held.largest_separation_change = 0.3;
   EXPECT_TRUE(rouleau::check_stack_statement(held, 3.0, false, r0).met);
   held.largest_separation_change = 0.9;
   const auto moved = rouleau::check_stack_statement(held, 3.0, false, r0);
+  EXPECT_EQ(moved.figure, "Fig. 8");
   EXPECT_FALSE(moved.met);
   EXPECT_NE(moved.measured.find("0.9000"), std::string::npos) << moved.measured;
 }
@@ -81,40 +115,58 @@ std::map<std::string, double> capsule_row(double x, double length, double pressu
 }
 
 TEST(SceneChecks, ContractionPassageWantsNormalCellsThroughAndSickleCellsHeld) {
-  // Two cells and a throat whose exit is at x = 40 um, three rows 1 s apart: cell 0 passes
-  // at 2 s, cell 1 stops at the entrance (x = 29).
+  // Two cells (x-extent 8 um) and a throat from x = 30 to 40 um, five rows 1 s apart: cell
+  // 0 passes at 3 s; cell 1 reaches the entrance (front at 29.5 um) and stalls there
+  // (speed 5 um/s in the first quarter, 0.2 um/s in the last).
   DiagnosticsRows rows;
-  const double x0[3] = {20, 35, 45}, x1[3] = {10, 25, 29};
-  for (int r = 0; r < 3; ++r)
-    rows.push_back({{"time_s", double(r)}, {"cell0_centroid_x_um", x0[r]}, {"cell1_centroid_x_um", x1[r]}});
-  const auto normal = rouleau::check_contraction_passage(rows, {"normal", "normal"}, 40.0);
+  const double x0[5] = {10, 20, 35, 45, 55}, x1[5] = {10, 15, 25, 25.3, 25.5};
+  for (int r = 0; r < 5; ++r)
+    rows.push_back({{"time_s", double(r)},
+                    {"cell0_centroid_x_um", x0[r]},
+                    {"cell1_centroid_x_um", x1[r]},
+                    {"cell0_extent_x_um", 8.0},
+                    {"cell1_extent_x_um", 8.0}});
+  const auto normal = rouleau::check_contraction_passage(rows, {"normal", "normal"}, 30.0, 40.0);
   EXPECT_TRUE(normal.passed[0]);
   EXPECT_FALSE(normal.passed[1]);
-  EXPECT_DOUBLE_EQ(normal.passage_time[0], 2.0);
+  EXPECT_FALSE(normal.blocked[0]);
+  EXPECT_TRUE(normal.blocked[1]);
+  EXPECT_DOUBLE_EQ(normal.passage_time[0], 3.0);
   EXPECT_DOUBLE_EQ(normal.passage_time[1], -1.0);
-  EXPECT_DOUBLE_EQ(normal.final_position[1], 29.0);
-  EXPECT_DOUBLE_EQ(normal.end_time, 2.0);
+  EXPECT_DOUBLE_EQ(normal.final_position[1], 25.5);
+  EXPECT_DOUBLE_EQ(normal.end_time, 4.0);
+  EXPECT_EQ(normal.normal_cells, 2);
   EXPECT_FALSE(normal.met());  // a normal cell held at the entrance
   // The held cell a sickle cell: the statement holds; the passing one a sickle cell: not.
-  EXPECT_TRUE(rouleau::check_contraction_passage(rows, {"normal", "sickle"}, 40.0).met());
-  const auto wrong = rouleau::check_contraction_passage(rows, {"sickle", "sickle"}, 40.0);
+  EXPECT_TRUE(rouleau::check_contraction_passage(rows, {"normal", "sickle"}, 30.0, 40.0).met());
+  const auto wrong = rouleau::check_contraction_passage(rows, {"sickle", "sickle"}, 30.0, 40.0);
   EXPECT_FALSE(wrong.sickle_cells_blocked);
-  EXPECT_TRUE(wrong.normal_cells_passed);  // there are none
+  EXPECT_FALSE(wrong.normal_cells_passed);  // there are none: the statement about them does not apply
+  EXPECT_EQ(wrong.normal_cells, 0);
   EXPECT_FALSE(wrong.met());
-  // The same cells with the exit at 50 um: nobody has passed.
-  EXPECT_TRUE(rouleau::check_contraction_passage(rows, {"sickle", "sickle"}, 50.0).met());
-  EXPECT_FALSE(rouleau::check_contraction_passage(rows, {"normal"}, 50.0).met());
+  // Only a sickle cell, the stalled one as cell 0: met by the sickle statement alone.
+  DiagnosticsRows stalled = rows;
+  for (auto& row : stalled) row["cell0_centroid_x_um"] = row["cell1_centroid_x_um"];
+  EXPECT_TRUE(rouleau::check_contraction_passage(stalled, {"sickle"}, 30.0, 40.0).met());
+  // A sickle cell that stops short of the entrance (with the entry at 32 um its front, at
+  // 29.5 um, is 2.5 um short), or a run that ends while it still moves (the first three
+  // rows: 10 um/s to the end), shows no blockage.
+  const DiagnosticsRows early(rows.begin(), rows.begin() + 3);
+  EXPECT_FALSE(rouleau::check_contraction_passage(rows, {"normal", "sickle"}, 32.0, 40.0).met());
+  EXPECT_FALSE(rouleau::check_contraction_passage(early, {"sickle", "sickle"}, 30.0, 50.0).met());
+  // No cells: nothing is met.
+  EXPECT_FALSE(rouleau::check_contraction_passage(rows, {}, 30.0, 40.0).met());
   // Without the elements' column nothing is known to be crushed; with it, the smallest J
   // and when, and an element at J = 0.15 is crushed (0.25 is not).
   EXPECT_TRUE(normal.no_element_crushed);
-  const double volume_ratio[3] = {1.0, 0.15, 0.4};
-  for (int r = 0; r < 3; ++r) rows[r]["smallest_volume_ratio"] = volume_ratio[r];
-  const auto crushed = rouleau::check_contraction_passage(rows, {"normal", "normal"}, 40.0);
+  const double volume_ratio[5] = {1.0, 0.15, 0.4, 0.5, 0.5};
+  for (int r = 0; r < 5; ++r) rows[r]["smallest_volume_ratio"] = volume_ratio[r];
+  const auto crushed = rouleau::check_contraction_passage(rows, {"normal", "normal"}, 30.0, 40.0);
   EXPECT_DOUBLE_EQ(crushed.smallest_volume_ratio, 0.15);
   EXPECT_DOUBLE_EQ(crushed.smallest_volume_ratio_time, 1.0);
   EXPECT_FALSE(crushed.no_element_crushed);
   rows[1]["smallest_volume_ratio"] = 0.25;
-  EXPECT_TRUE(rouleau::check_contraction_passage(rows, {"normal", "normal"}, 40.0).no_element_crushed);
+  EXPECT_TRUE(rouleau::check_contraction_passage(rows, {"normal", "normal"}, 30.0, 40.0).no_element_crushed);
 }
 
 TEST(SceneChecks, CapillaryPassageRisesPlugsStretchesAndFalls) {

@@ -34,15 +34,23 @@ int main(int argc, char** argv) {
     // The paper's statement (Figs. 13-15): normal cells pass, sickle cells block the entrance.
     std::vector<std::string> kinds;
     for (const auto& cell : run.config.cells) kinds.push_back(cell.kind);
-    const auto passage = rouleau::check_contraction_passage(rows, kinds, throat_exit);
+    const double throat_entry = profile.inlet_length + profile.contraction_length;
+    const auto passage = rouleau::check_contraction_passage(rows, kinds, throat_entry, throat_exit);
     for (int c = 0; c < cells; ++c)
       std::printf("cell %d (%s): centroid at x = %.2f um at t = %.3f s; %s\n", c, kinds[c].c_str(),
                   passage.final_position[c], passage.end_time,
                   passage.passed[c] ? ("past the throat's exit since t = " +
                                        std::to_string(passage.passage_time[c]) + " s").c_str()
-                                    : "not past the throat's exit");
-    std::printf("check (normal cells pass the throat): %s; (sickle cells do not, in the same time): %s\n",
-                passage.normal_cells_passed ? "met" : "NOT MET", passage.sickle_cells_blocked ? "met" : "NOT MET");
+                  : passage.blocked[c] ? "stalled at the throat's entrance (blocked)"
+                                       : "not past the throat's exit, not stalled at its entrance");
+    // A statement about a kind the run does not hold does not apply.
+    const auto verdict = [](int cells_of_kind, bool holds) {
+      return cells_of_kind == 0 ? "does not apply (none in the run)" : holds ? "met" : "NOT MET";
+    };
+    std::printf("check (normal cells pass the throat): %s; (sickle cells stall at its entrance, in the same time): "
+                "%s; the paper's statement: %s\n",
+                verdict(passage.normal_cells, passage.normal_cells_passed),
+                verdict(passage.sickle_cells, passage.sickle_cells_blocked), passage.met() ? "met" : "NOT MET");
     std::printf("most compressed cell element: J = %.3f at t = %.3f s (%s, J > %.1f)\n",
                 passage.smallest_volume_ratio, passage.smallest_volume_ratio_time,
                 passage.no_element_crushed ? "none crushed" : "CRUSHED",

@@ -53,23 +53,48 @@ int cells_past(const std::map<std::string, double>& row, int cells, double x) {
 }
 
 ContractionPassageCheck check_contraction_passage(const DiagnosticsRows& rows, const std::vector<std::string>& kinds,
-                                                  double throat_exit) {
+                                                  double throat_entry, double throat_exit) {
   if (rows.empty()) throw std::runtime_error("rouleau::check_contraction_passage: no diagnostics rows");
   ContractionPassageCheck check;
   const int cells = static_cast<int>(kinds.size());
   check.passage_time.assign(cells, -1.0);
-  check.end_time = diagnostics_value(rows.back(), "time_s");
+  const std::vector<double> time = diagnostics_column(rows, "time_s");
+  check.end_time = time.back();
+  // The rows of the run's first and last quarter in time (at least two each).
+  const double quarter = 0.25 * (time.back() - time.front());
+  std::size_t first_end = 1, last_begin = rows.size() >= 2 ? rows.size() - 2 : 0;
+  while (first_end + 1 < rows.size() && time[first_end] < time.front() + quarter) ++first_end;
+  while (last_begin > 0 && time[last_begin] > time.back() - quarter) --last_begin;
+  // The mean speed along x over rows [a, b].
+  auto mean_speed = [&time](const std::vector<double>& x, std::size_t a, std::size_t b) {
+    return time[b] > time[a] ? (x[b] - x[a]) / (time[b] - time[a]) : 0.0;
+  };
+  bool all_normal_passed = true, all_sickle_blocked = true;
   for (int c = 0; c < cells; ++c) {
-    const std::vector<double> x = diagnostics_column(rows, "cell" + std::to_string(c) + "_centroid_x_um");
+    const std::string cell = "cell" + std::to_string(c);
+    const std::vector<double> x = diagnostics_column(rows, cell + "_centroid_x_um");
     for (std::size_t r = 0; r < rows.size() && check.passage_time[c] < 0.0; ++r)
-      if (x[r] > throat_exit) check.passage_time[c] = diagnostics_value(rows[r], "time_s");
+      if (x[r] > throat_exit) check.passage_time[c] = time[r];
     check.final_position.push_back(x.back());
     check.passed.push_back(x.back() > throat_exit);
-    if (kinds[c] == "sickle")
-      check.sickle_cells_blocked = check.sickle_cells_blocked && !check.passed.back();
-    else
-      check.normal_cells_passed = check.normal_cells_passed && check.passed.back();
+    bool blocked = false;
+    if (!check.passed.back() && rows.size() >= 3) {
+      const double front = x.back() + 0.5 * diagnostics_value(rows.back(), cell + "_extent_x_um");
+      const double early = mean_speed(x, 0, first_end), late = mean_speed(x, last_begin, rows.size() - 1);
+      blocked = front >= throat_entry - ContractionPassageCheck::blocked_front_distance && early > 0.0 &&
+                late < ContractionPassageCheck::stalled_speed_fraction * early;
+    }
+    check.blocked.push_back(blocked);
+    if (kinds[c] == "sickle") {
+      ++check.sickle_cells;
+      all_sickle_blocked = all_sickle_blocked && blocked;
+    } else {
+      ++check.normal_cells;
+      all_normal_passed = all_normal_passed && check.passed.back();
+    }
   }
+  check.normal_cells_passed = check.normal_cells > 0 && all_normal_passed;
+  check.sickle_cells_blocked = check.sickle_cells > 0 && all_sickle_blocked;
   if (rows.front().count("smallest_volume_ratio")) {
     const std::vector<double> volume_ratio = diagnostics_column(rows, "smallest_volume_ratio");
     const auto smallest = std::min_element(volume_ratio.begin(), volume_ratio.end());
@@ -143,36 +168,68 @@ StackMeasures measure_stack(const DiagnosticsRows& rows, int cells, int cells_pe
   const double dx = of_cell(last, top, "centroid_x_um") - of_cell(last, 0, "centroid_x_um");
   const double dy = y(last, top) - y(last, 0);
   m.stack_axis_deg = std::atan2(dx, dy) * 180.0 / M_PI;
+  m.duration = diagnostics_value(last, "time_s") - diagnostics_value(first, "time_s");
   m.intact = m.largest_gap_growth < zero_force_length;
   return m;
 }
 
+namespace {
+
+// "NAME VALUE OP THRESHOLD UNIT: yes" (or NO), and whether it holds.
+struct Against {
+  std::string text;
+  bool holds;
+};
+Against against(const char* name, double value, const char* op, double threshold, const char* unit) {
+  const bool holds = op[0] == '<' ? value < threshold : value > threshold;
+  char text[160];
+  std::snprintf(text, sizeof(text), "%s %.4f %s %.4g %s: %s", name, value, op, threshold, unit, holds ? "yes" : "NO");
+  return {text, holds};
+}
+
+}  // namespace
+
 StackStatement check_stack_statement(const StackMeasures& m, double shear_rate, bool interaction,
-                                     double zero_force_length) {
+                                     double zero_force_length, int columns) {
   StackStatement result;
-  char text[256];
+  std::vector<Against> parts;
   if (!interaction) {
+    result.figure = "Fig. 8";
     result.statement = "no interaction: the cells keep their vertical separations";
-    result.met = m.largest_separation_change < 0.5;
-    std::snprintf(text, sizeof(text), "largest separation change %.4f < 0.5 um", m.largest_separation_change);
+    result.required_strain = 0.25 * 4.0;
+    parts.push_back(against("largest separation change", m.largest_separation_change, "<", 0.5, "um"));
   } else if (shear_rate <= 0.3) {
+    result.figure = "Fig. 9";
     result.statement = "0.25 1/s: the stack rotates as one body";
-    const double turn_mismatch = std::fabs(m.stack_axis_deg + m.mean_inclination_deg);
-    result.met = m.intact && turn_mismatch < 10.0;
-    std::snprintf(text, sizeof(text), "largest gap growth %.4f < r0 = %.2f um, |axis + inclination| %.2f < 10 deg",
-                  m.largest_gap_growth, zero_force_length, turn_mismatch);
+    result.required_strain = 0.25 * 4.0;
+    parts.push_back(against("largest gap growth", m.largest_gap_growth, "<", zero_force_length, "um (r0)"));
+    parts.push_back(against("|axis + inclination|", std::fabs(m.stack_axis_deg + m.mean_inclination_deg), "<", 10.0,
+                            "deg"));
   } else if (shear_rate <= 1.0) {
+    result.figure = "Fig. 10";
     result.statement = "0.5 1/s: the stack aligns with the flow and starts to separate";
-    result.met = !m.intact && std::fabs(m.mean_inclination_deg) < 20.0;
-    std::snprintf(text, sizeof(text), "largest gap growth %.4f > r0 = %.2f um, |mean inclination| %.2f < 20 deg",
-                  m.largest_gap_growth, zero_force_length, std::fabs(m.mean_inclination_deg));
+    result.required_strain = 0.5 * 1.0;
+    parts.push_back(against("largest gap growth", m.largest_gap_growth, ">", zero_force_length, "um (r0)"));
+    parts.push_back(against("|mean inclination|", std::fabs(m.mean_inclination_deg), "<", 20.0, "deg"));
   } else {
-    result.statement = "3.0 1/s: the stack breaks up into parallel layers";
-    result.met = !m.intact && m.inclination_spread_deg < 10.0;
-    std::snprintf(text, sizeof(text), "largest gap growth %.4f > r0 = %.2f um, inclination spread %.2f < 10 deg",
-                  m.largest_gap_growth, zero_force_length, m.inclination_spread_deg);
+    const bool twelve = columns > 1;
+    result.figure = twelve ? "Fig. 12" : "Fig. 11";
+    result.statement = twelve ? "3.0 1/s: the aggregate breaks up into parallel layers"
+                              : "3.0 1/s: the stack breaks up into parallel layers";
+    result.required_strain = twelve ? 3.0 * 3.0 : 3.0 * 0.5;
+    parts.push_back(against("largest gap growth", m.largest_gap_growth, ">", zero_force_length, "um (r0)"));
+    parts.push_back(against("inclination spread", m.inclination_spread_deg, "<", 10.0, "deg"));
   }
-  result.measured = text;
+  result.strain = shear_rate * m.duration;
+  // The strain's threshold is reached within round-off of the last row's time.
+  const Against duration = against("strain", result.strain, ">", result.required_strain * (1.0 - 1e-6), "(the paper's)");
+  result.long_enough = duration.holds;
+  result.met = result.long_enough;
+  result.measured = duration.text;
+  for (const Against& part : parts) {
+    result.met = result.met && part.holds;
+    result.measured += ", " + part.text;
+  }
   return result;
 }
 

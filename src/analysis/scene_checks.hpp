@@ -43,17 +43,33 @@ AggregationCheck check_aggregation(const DiagnosticsRows& rows, double zero_forc
 int cells_past(const std::map<std::string, double>& row, int cells, double x);
 
 // Cells through a contraction (Liu et al. 2004, Figs. 13-15): "normal cells pass; sickle
-// cells (crescents, stiffer, stickier) block the entrance", within the run's time. A cell
-// has passed when its centroid is beyond the throat's exit at x = `throat_exit` [μm] at
-// the last row; `kinds` names each cell's kind ("sickle" must not pass, any other must).
+// cells (crescents, stiffer, stickier) block the entrance", within the run's time. The
+// throat runs from x = `throat_entry` to `throat_exit` [μm]. A cell has passed when its
+// centroid is beyond the throat's exit at the last row. A cell is blocked when it has not
+// passed, its front (centroid + half its x-extent) is within blocked_front_distance of the
+// throat's entry or beyond it at the last row, and it has stalled there: its mean speed
+// over the run's last quarter (in time) is below stalled_speed_fraction of its mean speed
+// over the first quarter. A run that ends before a sickle cell reaches the entrance, or
+// while it still moves, does not show a blockage. `kinds` names each cell's kind: "sickle"
+// cells must be blocked, every other kind must pass; a statement about a kind the run
+// does not hold does not apply (neither met nor failed), and a run with no cells meets
+// nothing.
 struct ContractionPassageCheck {
+  static constexpr double blocked_front_distance = 2.0;  // [μm]
+  static constexpr double stalled_speed_fraction = 0.1;
   std::vector<bool> passed;          // per cell, at the last row
+  std::vector<bool> blocked;         // per cell, at the last row
   std::vector<double> passage_time;  // [s] per cell, the first row with it past the exit; −1: never
   std::vector<double> final_position;  // [μm] per cell, its centroid's x at the last row
   double end_time = 0.0;             // [s]
-  bool normal_cells_passed = true;   // every cell not of kind "sickle" passed (true when none)
-  bool sickle_cells_blocked = true;  // no "sickle" cell passed (true when none)
-  bool met() const { return normal_cells_passed && sickle_cells_blocked; }
+  int normal_cells = 0;              // cells not of kind "sickle"
+  int sickle_cells = 0;
+  bool normal_cells_passed = false;  // there are normal cells and every one passed
+  bool sickle_cells_blocked = false;  // there are sickle cells and every one is blocked
+  bool met() const {
+    return normal_cells + sickle_cells > 0 && (normal_cells == 0 || normal_cells_passed) &&
+           (sickle_cells == 0 || sickle_cells_blocked);
+  }
   // The numerics, apart from the paper's statement: the most compressed cell element's
   // J = det F over the run (column smallest_volume_ratio; 1 when the run has none). An
   // element below crushed_volume_ratio is crushed: squeezed by velocity gradients finer than
@@ -64,7 +80,7 @@ struct ContractionPassageCheck {
   bool no_element_crushed = true;
 };
 ContractionPassageCheck check_contraction_passage(const DiagnosticsRows& rows, const std::vector<std::string>& kinds,
-                                                  double throat_exit);
+                                                  double throat_entry, double throat_exit);
 
 // A capsule squeezing through a capillary along x from `entry` to `exit` [μm] (Liu et
 // al. 2004, Figs. 16-17): "the pressure rises while the capsule enters and plugs the
@@ -103,6 +119,7 @@ struct StackMeasures {
   double mean_inclination_deg = 0.0;       // last row: the cells' mean inclination in the shear plane
                                            // (0 = major axis along the flow)
   double inclination_spread_deg = 0.0;     // last row: largest − smallest inclination
+  double duration = 0.0;                   // [s] the last row's time_s minus the first's
   double stack_axis_deg = 0.0;             // last row: the first-to-last centroid line's angle from +y
                                            // toward +x. The shear (u = γ̇ y) turns a body clockwise: by θ,
                                            // the axis to +θ and the discs' inclination to −θ, so a stack
@@ -115,21 +132,31 @@ struct StackMeasures {
 // intact test.
 StackMeasures measure_stack(const DiagnosticsRows& rows, int cells, int cells_per_stack, double zero_force_length);
 
-// The paper's statement (Liu et al. 2004, Figs. 7-12) for a stack's run, as measures
+// The paper's statement (Liu et al. 2004, Figs. 8-12) for a stack's run, as measures
 // against thresholds:
-// - no interaction: the cells keep their vertical separations (every change < 0.5 μm);
-// - shear rate ≤ 0.3 1/s: the stack rotates as one body (intact: every gap grew by less
-//   than r0; the centroid line turns with the discs, |axis + mean inclination| < 10°);
-// - ≤ 1 1/s: it aligns with the flow and starts to separate (a gap grew by more than r0,
-//   out of the Morse well's range, the complement of "intact"; |mean inclination| < 20°);
-// - above: it breaks up into parallel layers (a gap grew by more than r0; the
-//   inclinations agree within 10°).
+// - no interaction (Fig. 8): the cells keep their vertical separations (every change
+//   < 0.5 μm);
+// - shear rate ≤ 0.3 1/s (Fig. 9): the stack rotates as one body (intact: every gap grew by
+//   less than r0; the centroid line turns with the discs, |axis + mean inclination| < 10°);
+// - ≤ 1 1/s (Fig. 10): it aligns with the flow and starts to separate (a gap grew by more
+//   than r0, out of the Morse well's range, the complement of "intact"; |mean inclination|
+//   < 20°);
+// - above (Fig. 11; Fig. 12 for more than one column): it breaks up into parallel layers
+//   (a gap grew by more than r0; the inclinations agree within 10°).
+// Each holds over the paper's duration, so the run must have sheared at least as long:
+// its strain (shear rate × duration) at least the paper's — Figs. 8 and 9 to 4 s at
+// 0.25 1/s (strain 1), Fig. 10 to 1 s at 0.5 1/s (0.5), Fig. 11 to 0.5 s at 3 1/s (1.5),
+// Fig. 12 to 3 s at 3 1/s (9). A shorter run meets nothing.
 struct StackStatement {
-  std::string statement;  // the paper's words
-  std::string measured;   // the measures against their thresholds, one line
-  bool met = false;
+  std::string figure;      // "Fig. 9"
+  std::string statement;   // the paper's words
+  double strain = 0.0;     // the run's: shear rate × duration
+  double required_strain = 0.0;  // the paper's
+  bool long_enough = false;
+  std::string measured;    // each measure against its threshold, "yes" or "NO" after each
+  bool met = false;        // long enough, and every measure within its threshold
 };
 StackStatement check_stack_statement(const StackMeasures& measures, double shear_rate, bool interaction,
-                                     double zero_force_length);
+                                     double zero_force_length, int columns = 1);
 
 }  // namespace rouleau

@@ -1,5 +1,6 @@
 #include "analysis/stack_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -43,8 +44,10 @@ StackStatement print_stack_report(const CaseConfig& config, const DiagnosticsRow
               shear_rate, end, shear_rate * end, m.largest_gap_growth, m.largest_separation_change,
               m.mean_inclination_deg, m.inclination_spread_deg, m.stack_axis_deg, m.intact ? "intact" : "broken up");
   // The paper's statement for this run, as measures against thresholds.
-  const StackStatement check = check_stack_statement(m, shear_rate, config.interaction.enabled, r0);
-  std::printf("check (%s): %s: %s\n", check.statement.c_str(), check.measured.c_str(), check.met ? "met" : "NOT MET");
+  const StackStatement check =
+      check_stack_statement(m, shear_rate, config.interaction.enabled, r0, cells / std::max(per_column, 1));
+  std::printf("check (%s, %s): %s: %s\n", check.figure.c_str(), check.statement.c_str(), check.measured.c_str(),
+              check.met ? "met" : (check.long_enough ? "NOT MET" : "NOT MET (the run is shorter than the paper's)"));
   return check;
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "analysis/scene_checks.hpp"
 
@@ -205,6 +206,29 @@ TEST(SceneChecks, CapillaryPassageRisesPlugsStretchesAndFalls) {
   const auto r = rouleau::check_capillary_passage(from_rest, 20.0, 40.0);
   EXPECT_DOUBLE_EQ(r.initial_pressure, 1.6);
   EXPECT_FALSE(r.rose);
+}
+
+TEST(SceneChecks, InteractionMainlyAtTheRimsWantsMostOfTheForceAtTwiceTheDensity) {
+  // Rows of (share, area share): the row with no force (share 0) is left out.
+  auto rows_of = [](std::vector<double> shares, double area_share) {
+    rouleau::DiagnosticsRows rows;
+    for (std::size_t r = 0; r < shares.size(); ++r)
+      rows.push_back({{"time_s", 0.01 * r}, {"interaction_rim_share", shares[r]}, {"rim_area_share", area_share}});
+    return rows;
+  };
+  const auto met = rouleau::check_interaction_at_rims(rows_of({0.0, 0.91, 0.88, 0.9}, 0.48));
+  EXPECT_TRUE(met.met);
+  EXPECT_DOUBLE_EQ(met.smallest_share, 0.88);
+  EXPECT_DOUBLE_EQ(met.smallest_share_time, 0.02);
+  EXPECT_NEAR(met.density_ratio, (0.88 / 0.48) / (0.12 / 0.52), 1e-12);
+  // Less than half the force in the bands at one row: not met.
+  EXPECT_FALSE(rouleau::check_interaction_at_rims(rows_of({0.9, 0.45, 0.9}, 0.3)).met);
+  // Most of the force, but the bands most of the surface: density ratio 1.23 < 2.
+  const auto spread = rouleau::check_interaction_at_rims(rows_of({0.6}, 0.55));
+  EXPECT_FALSE(spread.met);
+  EXPECT_NEAR(spread.density_ratio, (0.6 / 0.55) / (0.4 / 0.45), 1e-12);
+  // No force at all: nothing shown.
+  EXPECT_FALSE(rouleau::check_interaction_at_rims(rows_of({0.0, 0.0}, 0.48)).met);
 }
 
 }  // namespace

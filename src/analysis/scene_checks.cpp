@@ -137,6 +137,29 @@ CapillaryPassageCheck check_capillary_passage(const DiagnosticsRows& rows, doubl
   return check;
 }
 
+RimInteractionCheck check_interaction_at_rims(const DiagnosticsRows& rows) {
+  RimInteractionCheck check;
+  bool any = false;
+  for (const auto& row : rows) {
+    const double share = diagnostics_value(row, "interaction_rim_share");
+    if (share <= 0.0) continue;  // no force in this row
+    if (!any || share < check.smallest_share) {
+      check.smallest_share = share;
+      check.smallest_share_time = diagnostics_value(row, "time_s");
+      check.area_share = diagnostics_value(row, "rim_area_share");
+    }
+    any = true;
+  }
+  if (!any) return check;
+  // Force per area in the bands over that on the rest of the surface.
+  const double in_band = check.smallest_share / check.area_share;
+  const double elsewhere = (1.0 - check.smallest_share) / (1.0 - check.area_share);
+  check.density_ratio = elsewhere > 0.0 ? in_band / elsewhere : INFINITY;
+  check.met = check.smallest_share > RimInteractionCheck::least_share &&
+              check.density_ratio >= RimInteractionCheck::least_density_ratio;
+  return check;
+}
+
 StackMeasures measure_stack(const DiagnosticsRows& rows, int cells, int cells_per_stack, double zero_force_length) {
   if (rows.empty()) throw std::runtime_error("rouleau::measure_stack: no diagnostics rows");
   StackMeasures m;

@@ -109,6 +109,23 @@ struct CapillaryPassageCheck {
 };
 CapillaryPassageCheck check_capillary_passage(const DiagnosticsRows& rows, double entry, double exit);
 
+// Where the interaction acts (Liu et al. 2004, Fig. 7: "the interaction forces act mainly
+// at the rims"), from the columns interaction_rim_share (the rim bands' share of the Morse
+// forces' magnitude) and rim_area_share (their share of the surface; cells/rim_band.hpp).
+// Met when, in every row where the forces act, the bands carry more than least_share of
+// the force, at a force per area at least least_density_ratio times that over the rest
+// of the surface. Not met when no row has forces.
+struct RimInteractionCheck {
+  static constexpr double least_share = 0.5;
+  static constexpr double least_density_ratio = 2.0;
+  double smallest_share = 0.0;       // over the rows with forces
+  double smallest_share_time = 0.0;  // [s]
+  double area_share = 0.0;
+  double density_ratio = 0.0;        // (share / area share) / ((1 − share) / (1 − area share)), at the smallest share
+  bool met = false;
+};
+RimInteractionCheck check_interaction_at_rims(const DiagnosticsRows& rows);
+
 // Stacks of cells in simple shear (Liu et al. 2004, Figs. 7-12): columns of
 // `cells_per_stack` cells each, cells 0, 1, ... stacked along y in that order within a
 // column, columns one after the other; measured at the first and the last row. Neighbours

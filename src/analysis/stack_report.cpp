@@ -46,6 +46,18 @@ StackStatement print_stack_report(const CaseConfig& config, const DiagnosticsRow
   // The paper's statement for this run, as measures against thresholds.
   const StackStatement check =
       check_stack_statement(m, shear_rate, config.interaction.enabled, r0, cells / std::max(per_column, 1));
+  if (rows.front().count("interaction_rim_share")) {
+    // Fig. 7: where on the surfaces the interaction acts.
+    const RimInteractionCheck rims = check_interaction_at_rims(rows);
+    std::printf("check (Fig. 7, the interaction acts mainly at the rims): the rims' smallest share of the force "
+                "%.3f > %.1f: %s (t = %.3f s), force per area %.2f times that elsewhere >= %.1f: %s (the rims %.2f of "
+                "the surface): %s\n",
+                rims.smallest_share, RimInteractionCheck::least_share,
+                rims.smallest_share > RimInteractionCheck::least_share ? "yes" : "NO", rims.smallest_share_time,
+                rims.density_ratio, RimInteractionCheck::least_density_ratio,
+                rims.density_ratio >= RimInteractionCheck::least_density_ratio ? "yes" : "NO", rims.area_share,
+                rims.met ? "met" : "NOT MET");
+  }
   std::printf("check (%s, %s): %s: %s\n", check.figure.c_str(), check.statement.c_str(), check.measured.c_str(),
               check.met ? "met" : (check.long_enough ? "NOT MET" : "NOT MET (the run is shorter than the paper's)"));
   return check;

@@ -93,6 +93,7 @@ CellDiagnostics::CellDiagnostics(const CaseCells& cells, const CaseConfig& confi
   if (cells.population && cells.population->num_cells() > 1 &&
       cells.population->num_cells() <= config.output.cell_gaps_max_cells)
     gaps_ = std::make_unique<CellGaps>(*cells.population, config.interaction.morse.zero_force_length);
+  if (cells.population && cells.interaction) rim_band_ = std::make_unique<RimBand>(*cells.population);
 }
 
 std::vector<std::string> CellDiagnostics::columns() const {
@@ -110,6 +111,10 @@ std::vector<std::string> CellDiagnostics::columns() const {
       names.push_back("gap_" + pair + "_um");
       names.push_back("contact_area_" + pair + "_um2");
     }
+  if (rim_band_) {
+    names.push_back("interaction_rim_share");
+    names.push_back("rim_area_share");
+  }
   return names;
 }
 
@@ -135,6 +140,18 @@ std::vector<double> CellDiagnostics::row(const CaseCells& cells, const CellForce
   values[3] = largest_change;
   if (gaps_)
     for (const CellPairGap& pair : gaps_->measure()) values.insert(values.end(), {pair.gap, pair.contact_area});
+  if (rim_band_) {
+    // Node-major on the host, whatever the device's layout.
+    auto mirror = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), forces.interaction);
+    std::vector<double> interaction(3 * mirror.extent(0));
+    for (std::size_t n = 0; n < mirror.extent(0); ++n)
+      for (int i = 0; i < 3; ++i) interaction[3 * n + i] = mirror(n, i);
+    // Each rank's share of the cells' work: the forces are the sums of the shares.
+    if (ranks_ && cells.population->work_is_shared())
+      ranks_->sum(interaction.data(), static_cast<int>(interaction.size()));
+    const bool computed = interaction.size() == 3 * rim_band_->in_band().size();  // none when the stage is skipped
+    values.insert(values.end(), {computed ? rim_band_->force_share(interaction.data()) : 0.0, rim_band_->area_share()});
+  }
   return values;
 }
 

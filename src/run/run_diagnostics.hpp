@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cells/cell_gaps.hpp"
+#include "cells/rim_band.hpp"
 #include "cells/cells_from_case.hpp"
 #include "config/case_config.hpp"
 #include "coupling/immersed_coupling.hpp"
@@ -47,7 +48,9 @@ class FluidDiagnostics {
 // The energies are those the step computed at the current positions (CellForces).
 // With two cells or more (and at most output.cell_gaps_max_cells), each pair's gap and
 // contact area (cells/cell_gaps.hpp; contact: closer than the Morse law's zero-force
-// length r0).
+// length r0). With the interaction, the share of the Morse forces' magnitude that acts in
+// the cells' rim bands and the bands' share of the surface (cells/rim_band.hpp; the
+// paper's Fig. 7).
 class CellDiagnostics {
  public:
   // `ranks`: when the cells' work is shared across them (CellPopulation::share_work), the
@@ -59,6 +62,7 @@ class CellDiagnostics {
  private:
   std::vector<double> initial_volumes_;
   std::unique_ptr<CellGaps> gaps_;
+  std::unique_ptr<RimBand> rim_band_;
   const Communicator* ranks_;
 };
 

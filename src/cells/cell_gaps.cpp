@@ -100,14 +100,28 @@ void CellGaps::node_distances(int a, int b) const {
                        Kokkos::RangePolicy<ExecSpace>(0, population_.cell_node_count()[a]), f);
 }
 
-std::vector<CellPairGap> CellGaps::measure() const {
-  ProfilingRegion region("rouleau::CellGaps::measure");
-  std::vector<CellPairGap> pairs;
+void CellGaps::update_patch_bounds() const {
   if (patch_bounds_.extent(0) > 0)
     Kokkos::parallel_for("rouleau::CellGaps::patch_bounds", Kokkos::RangePolicy<ExecSpace>(0, patch_bounds_.extent(0)),
                          TrianglePatchBoundsFunctor<CellPopulation::ConstNodeVectors, Kokkos::View<const int* [3]>>{
                              population_.positions(), population_.surface_triangles(), patch_offsets_, patch_triangles_,
                              patch_bounds_});
+}
+
+std::vector<double> CellGaps::node_distances_to(int a, int b) const {
+  update_patch_bounds();
+  node_distances(a, b);
+  const int count = population_.cell_node_count()[a];
+  auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), distance_);
+  std::vector<double> distances(count);
+  for (int k = 0; k < count; ++k) distances[k] = host(k);  // +infinity off the outer surface (the kernel's)
+  return distances;
+}
+
+std::vector<CellPairGap> CellGaps::measure() const {
+  ProfilingRegion region("rouleau::CellGaps::measure");
+  std::vector<CellPairGap> pairs;
+  update_patch_bounds();
   const auto weights = population_.surface_area_weights();
   const auto distance = distance_;
   const double contact = contact_distance_;

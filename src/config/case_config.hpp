@@ -236,6 +236,11 @@ struct CouplingConfig {
   // seeps through cells where their membrane force makes ∇p large (a cell plugging a
   // throat: 60-90 % of the flow passed it in u' alone).   key subscale_velocity
   bool subscale_velocity = false;
+  // The sub-grid film model (coupling/film_drainage.hpp): where two cells' outer surfaces
+  // are closer than this [μm], the film between them opens or closes at the speed Reynolds'
+  // lubrication equation gives for the load it holds, which the fluid mesh cannot
+  // resolve. 0: off.   key film_open_gap_um
+  double film_open_gap = 0.0;
 };
 
 // What the scene builds and runs (docs/design.md, "The scene decides what runs").

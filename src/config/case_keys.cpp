@@ -219,6 +219,9 @@ std::vector<CaseKey> make_case_keys() {
       {"coupling", "subscale_velocity", Kind::boolean, "", "false", any, {},
        "the cells move with u_h + u', u' PSPG's subscale velocity; not with forces_in_stabilization under "
        "semi_implicit"},
+      {"coupling", "film_open_gap_um", Kind::number, "μm", "0", non_negative, {},
+       "the sub-grid film model: films between cells thinner than this open or close at Reynolds' lubrication "
+       "speed for the load they hold; 0: off"},
       {"scene", "skip_unneeded_stages", Kind::boolean, "", "true", any, {},
        "leave out the stages that cannot change the result; false runs them all"},
   };

@@ -18,7 +18,8 @@ void read_solver(const TableReader& root, SolverConfig& solver);
 void read_scales(const TableReader& root, ScalesConfig& scales);
 void read_output(const TableReader& root, OutputConfig& output);
 void read_checkpoint(const TableReader& root, CheckpointConfig& checkpoint);
-void read_coupling(const TableReader& root, CouplingConfig& coupling);
+// `interaction`: read before, for the checks that combine both sections.
+void read_coupling(const TableReader& root, CouplingConfig& coupling, const InteractionConfig& interaction);
 void read_scene(const TableReader& root, SceneConfig& scene);
 // The key density_kg_m3 of a table ([fluid], [cell_kinds.NAME]), converted to pN·s²/μm⁴.
 std::optional<double> read_density(const TableReader& section);

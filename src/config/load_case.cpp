@@ -81,7 +81,7 @@ CaseConfig load_case_document(toml::table document, const std::string& path, con
   read_cell_kinds(root, config.cell_kinds);
   read_cells(root, config);
   read_interaction(root, config);
-  read_coupling(root, config.coupling);
+  read_coupling(root, config.coupling, config.interaction);
   read_scene(root, config.scene);
   // The cells against the domain and each other (exact shapes, before any meshing).
   check_cell_placement(config);

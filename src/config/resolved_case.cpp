@@ -262,6 +262,7 @@ std::string resolved_case_toml(const CaseConfig& config, const DerivedQuantities
                 "the spread forces' density in SUPG/PSPG's strong residual");
   toml_file.key("subscale_velocity", coupling.subscale_velocity,
                 "the cells move with u_h + u', u' = -tau r the PSPG subscale velocity");
+  toml_file.key("film_open_gap_um", coupling.film_open_gap, "the sub-grid film model acts below this gap; 0: off");
   toml_file.key("gravity_m_s2", std::array<double, 3>{in_file_units(coupling.gravity[0], 1e6),
                                                       in_file_units(coupling.gravity[1], 1e6),
                                                       in_file_units(coupling.gravity[2], 1e6)});

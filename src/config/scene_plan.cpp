@@ -93,6 +93,7 @@ ScenePlan plan_scene(const CaseConfig& config, const DerivedQuantities& derived)
     const bool moving = config.time.mode == TimeMode::transient;
     plan.moves_cells = moving;
     plan.semi_implicit = moving && config.coupling.scheme == CouplingScheme::semi_implicit;
+    plan.film_drainage = moving && config.coupling.film_open_gap > 0.0 && config.cells.size() >= 2;
     if (plan.semi_implicit) {
       cells << ". Semi-implicit coupling: the fluid solved with the cells' forces at x^n plus their change "
                "over the step, linearized (K dt I u, K by one-sided differences of the forces inside each "
@@ -176,10 +177,21 @@ ScenePlan plan_scene(const CaseConfig& config, const DerivedQuantities& derived)
                                              "GMRES iteration"
                                            : "skipped: explicit coupling (coupling.scheme = \"explicit\")"});
       stages.push_back({stage_name::interpolate, true, "the fluid's new velocity at the cell nodes (the same shape functions)"});
+      if (plan.film_drainage) {
+        std::ostringstream film;
+        film << "films between cells thinner than " << config.coupling.film_open_gap
+             << " um open or close at the speed Reynolds' equation gives for the load they hold (each cell moved "
+                "as a whole)";
+        stages.push_back({stage_name::film_drainage, true, film.str()});
+      } else {
+        stages.push_back({stage_name::film_drainage, false,
+                          config.cells.size() < 2 ? "skipped: fewer than two cells"
+                                                  : "skipped: coupling.film_open_gap_um = 0"});
+      }
       stages.push_back({stage_name::move_cells, true, "x^(n+1) = x^n + dt v^(n+1), stopping on a speed that is not finite"});
     } else {
       for (const char* stage : {stage_name::spread, stage_name::cell_stiffness, stage_name::interpolate,
-                                stage_name::move_cells})
+                                stage_name::film_drainage, stage_name::move_cells})
         stages.push_back({stage, false, steady_only});
     }
   }

@@ -23,6 +23,7 @@ inline constexpr const char* spread = "RKPM spread";
 inline constexpr const char* cell_stiffness = "cell stiffness (semi-implicit)";
 inline constexpr const char* fluid_solve = "fluid solve";
 inline constexpr const char* interpolate = "RKPM interpolate";
+inline constexpr const char* film_drainage = "film drainage (sub-grid)";
 inline constexpr const char* move_cells = "move cells";
 }  // namespace stage_name
 
@@ -42,6 +43,7 @@ struct ScenePlan {
   bool wall_repulsion = false;  // a vessel wall's repulsion of cell surface nodes
   bool inertia = false;         // (ρ_s − ρ_f)(g − dv/dt) at the cell nodes
   bool semi_implicit = false;   // the cells' stiffness in the fluid solve
+  bool film_drainage = false;   // the sub-grid film model between close cells
   // Without skips (scene.skip_unneeded_stages = false): the Morse list rebuilt every step,
   // the RKPM correction everywhere.
   bool rebuild_morse_list_every_step = false;

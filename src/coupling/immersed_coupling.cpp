@@ -111,6 +111,14 @@ ImmersedCoupling::ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, C
   state_.fsi_forces = NodeVectors("rouleau::ImmersedCoupling::fsi_forces", nodes);
   state_.interpolated = NodeVectors("rouleau::ImmersedCoupling::interpolated", nodes);
   state_.previous_velocities = NodeVectors("rouleau::ImmersedCoupling::previous_velocities", nodes);
+  state_.cell_velocities = state_.interpolated;
+  if (plan.film_drainage) {
+    if (spans_ranks)
+      throw std::invalid_argument(
+          "rouleau::ImmersedCoupling: coupling.film_open_gap_um: the film model runs on one MPI rank");
+    films_ = std::make_unique<FilmDrainage>(population_, config.coupling.film_open_gap, config.fluid.viscosity);
+    state_.cell_velocities = NodeVectors("rouleau::ImmersedCoupling::cell_velocities", nodes);
+  }
   fluid_load_ = Kokkos::View<double*>("rouleau::ImmersedCoupling::fluid_load", fluid.num_global_unknowns());
   state_.fluid_terms.loads = fluid_load_;
   state_.fluid_terms.loads_in_stabilization = config.coupling.forces_in_stabilization;
@@ -244,13 +252,23 @@ ImmersedCoupling::ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, C
                        }
                        return true;
                      }});
-  // 5. Reads state_.interpolated; writes the cells' positions and velocities (their one
+  //    Films: reads state_.interpolated, state_.felt_forces and the positions x^n; writes
+  //    state_.cell_velocities (coupling/film_drainage.hpp). The velocities are scaled, so
+  //    the films' speeds are too.
+  if (films_)
+    stages_.push_back({film_stage, [this] {
+                         films_->add_opening_velocities(state_.felt_forces, state_.interpolated,
+                                                        state_.cell_velocities, state_.dt, fluid_.scales().velocity);
+                         return true;
+                       }});
+  // 5. Reads state_.cell_velocities; writes the cells' positions and velocities (their one
   //    writer in the step: CellPopulation::move), state_.previous_velocities,
   //    state_.previous_dt, and the step's powers and speeds (the power of the forces the
   //    fluid felt, on the fluid's side and on the cells': they agree, interpolation and
-  //    spreading being transposes of each other).
+  //    spreading being transposes of each other, except for the power of the films'
+  //    opening velocities when the film model runs).
   stages_.push_back({move_stage, [this] {
-                       const double largest_speed2 = population_.move(state_.interpolated, fluid_.scales().velocity,
+                       const double largest_speed2 = population_.move(state_.cell_velocities, fluid_.scales().velocity,
                                                                       state_.dt, state_.previous_velocities);
                        state_.previous_dt = state_.dt;
                        state_.finite = largest_speed2 < MoveCellsFunctor<NodeVectors>::non_finite_speed2;

@@ -32,6 +32,7 @@
 #include "config/scene_plan.hpp"
 #include "coupling/cell_forces.hpp"
 #include "coupling/cell_stiffness.hpp"
+#include "coupling/film_drainage.hpp"
 #include "coupling/rkpm_coupler.hpp"
 #include "coupling/step_stage.hpp"
 #include "fluid/fluid_solver.hpp"
@@ -64,6 +65,9 @@ struct CouplingState {
   ImmersedTerms felt_terms;
   // v̂_I, the scaled fluid velocity at the cell nodes: "RKPM interpolate".
   NodeVectors interpolated;
+  // The velocity the cells move with, scaled: v̂_I plus the sub-grid films' opening
+  // velocities, "film drainage (sub-grid)"; the same View as interpolated without films.
+  NodeVectors cell_velocities;
   // v^{n−1} (for dv/dt), the last Δt, and the step's powers and speeds: "move cells".
   NodeVectors previous_velocities;
   double previous_dt = 0.0;
@@ -85,6 +89,7 @@ class ImmersedCoupling {
   static constexpr const char* spread_stage = stage_name::spread;
   static constexpr const char* fluid_stage = stage_name::fluid_solve;
   static constexpr const char* interpolate_stage = stage_name::interpolate;
+  static constexpr const char* film_stage = stage_name::film_drainage;
   static constexpr const char* move_stage = stage_name::move_cells;
   static constexpr const char* stiffness_stage = stage_name::cell_stiffness;
 
@@ -150,6 +155,7 @@ class ImmersedCoupling {
   Kokkos::View<double*> excess_mass_;        // (ρ_s − ρ_f) V_I per node [pN·s²/μm]; the share's nodes' alone
   Kokkos::View<double*> every_excess_mass_;  // the same at every node (share_cells)
   std::unique_ptr<CellStiffness> stiffness_;  // the semi-implicit coupling's K, or null
+  std::unique_ptr<FilmDrainage> films_;       // the sub-grid film model, or null
   NodeVectors stiffness_scratch_;             // wall forces while K is differenced
   NodeVectors force_change_;                  // K Δt I u^{n+1} [pN] of the semi-implicit step
   CouplingState state_;

@@ -160,7 +160,7 @@ const std::vector<const char*> coupling_stages{
     ImmersedCoupling::elastic_stage, ImmersedCoupling::interaction_stage, ImmersedCoupling::wall_stage,
     ImmersedCoupling::inertia_stage,
     ImmersedCoupling::spread_stage,  ImmersedCoupling::stiffness_stage,   ImmersedCoupling::fluid_stage,
-    ImmersedCoupling::interpolate_stage, ImmersedCoupling::move_stage};
+    ImmersedCoupling::interpolate_stage, ImmersedCoupling::film_stage, ImmersedCoupling::move_stage};
 
 // "RKPM spread" → "time_rkpm_spread_s", "cell stiffness (semi-implicit)" →
 // "time_cell_stiffness_semi_implicit_s": letters and digits, one '_' for each run of others.

@@ -27,6 +27,8 @@ FilmDrainage::FilmDrainage(const CellPopulation& population, double open_gap, do
       cell_velocity_("rouleau::FilmDrainage::cell_velocity", population.num_cells()) {
   if (!(open_gap > 0.0)) throw std::invalid_argument("rouleau::FilmDrainage: the open gap must be > 0");
   auto triangle_cell = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), population.triangle_cell());
+  const auto triangles = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), population.surface_triangles());
+  for (std::size_t t = 0; t < triangles.extent(0); ++t) triangles_.push_back({triangles(t, 0), triangles(t, 1), triangles(t, 2)});
   cell_triangles_.assign(population.num_cells(), {});
   for (std::size_t t = 0; t < triangle_cell.extent(0); ++t) cell_triangles_[triangle_cell(t)].push_back(int(t));
 }
@@ -39,7 +41,6 @@ void FilmDrainage::add_opening_velocities(CellPopulation::ConstNodeVectors felt_
   const int cells = population_.num_cells();
   const auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), population_.positions());
   const auto f = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), felt_forces);
-  const auto triangles = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), population_.surface_triangles());
   const auto& first = population_.cell_first_node();
   const auto& count = population_.cell_node_count();
   // Each cell's centroid (of its nodes) and the radius of a sphere about it that holds it.
@@ -59,11 +60,11 @@ void FilmDrainage::add_opening_velocities(CellPopulation::ConstNodeVectors felt_
     std::vector<int> local(count[c], -1);
     for (const int t : cell_triangles_[c]) {
       bool near = true;
-      for (int k = 0; k < 3; ++k) near = near && distance[triangles(t, k) - first[c]] < 2.0 * open_gap_;
+      for (int k = 0; k < 3; ++k) near = near && distance[triangles_[t][k] - first[c]] < 2.0 * open_gap_;
       if (!near) continue;
       std::array<int, 3> corners{};
       for (int k = 0; k < 3; ++k) {
-        const int node = triangles(t, k), j = node - first[c];
+        const int node = triangles_[t][k], j = node - first[c];
         if (local[j] < 0) {
           local[j] = static_cast<int>(film.points.size());
           film.points.push_back({x(node, 0), x(node, 1), x(node, 2)});

@@ -21,6 +21,7 @@
 // (v_B − v_A) · n is its V; a lone pair moves by −V/2 n and +V/2 n. The model adds the relative normal motion the fluid cannot carry; tangential
 // sliding and rolling stay with the fluid. Host-side (a few thousand surface nodes per
 // pair), on the cells' current positions.
+#include <array>
 #include <vector>
 
 #include "cells/cell_gaps.hpp"
@@ -56,6 +57,7 @@ class FilmDrainage {
   double open_gap_, viscosity_;
   CellGaps gaps_;
   std::vector<std::vector<int>> cell_triangles_;  // per cell, its outer-surface triangles
+  std::vector<std::array<int, 3>> triangles_;     // the outer-surface triangles' nodes
   std::vector<Film> films_;
   Kokkos::View<double* [3]> cell_velocity_;       // per cell, the films' velocity
 };

@@ -110,7 +110,8 @@ TEST(ResolutionLong, StackInContactComesApartInShearWithTheFilmModel) {
       " {kind=\"normal\", center_um=[0,1.325,0], orientation_deg=[90,0,0]},"
       " {kind=\"normal\", center_um=[0,3.975,0], orientation_deg=[90,0,0]}]'";
   const rouleau::DiagnosticsRows locked = run_case("stack_shear", "contact", contact);
-  const rouleau::DiagnosticsRows films = run_case("stack_shear", "contact_films", contact + " --set coupling.film_open_gap_um=1.5");
+  const rouleau::DiagnosticsRows films =
+      run_case("stack_shear", "contact_films", contact + " --set coupling.film_open_gap_um=1.5");
   const double r0 = 0.25;
   const rouleau::StackMeasures before = rouleau::measure_stack(locked, 4, 4, r0);
   for (int c = 0; c < 3; ++c) {

@@ -60,7 +60,8 @@ double squeeze_resistance(const FilmPatch& film, double viscosity, double open_g
   Eigen::SparseMatrix<double> stiffness(unknowns, unknowns);
   stiffness.setFromTriplets(entries.begin(), entries.end());
   const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(stiffness);
-  if (solver.info() != Eigen::Success) throw std::runtime_error("rouleau::squeeze_resistance: the film's system is singular");
+  if (solver.info() != Eigen::Success)
+    throw std::runtime_error("rouleau::squeeze_resistance: the film's system is singular");
   const Eigen::VectorXd pressure = solver.solve(load);
   // F = ∫ p dA with the lumped area weights.
   double force = 0.0;

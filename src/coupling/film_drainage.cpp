@@ -28,7 +28,8 @@ FilmDrainage::FilmDrainage(const CellPopulation& population, double open_gap, do
   if (!(open_gap > 0.0)) throw std::invalid_argument("rouleau::FilmDrainage: the open gap must be > 0");
   auto triangle_cell = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), population.triangle_cell());
   const auto triangles = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), population.surface_triangles());
-  for (std::size_t t = 0; t < triangles.extent(0); ++t) triangles_.push_back({triangles(t, 0), triangles(t, 1), triangles(t, 2)});
+  for (std::size_t t = 0; t < triangles.extent(0); ++t)
+    triangles_.push_back({triangles(t, 0), triangles(t, 1), triangles(t, 2)});
   cell_triangles_.assign(population.num_cells(), {});
   for (std::size_t t = 0; t < triangle_cell.extent(0); ++t) cell_triangles_[triangle_cell(t)].push_back(int(t));
 }

@@ -18,8 +18,9 @@
 // Each cell then moves, on top of the velocity interpolated from the fluid, with a velocity
 // of its own, as a whole (so its shape and volume do not change): the smallest such
 // velocities, in the least-squares sense, for which each film's relative normal speed
-// (v_B − v_A) · n is its V; a lone pair moves by −V/2 n and +V/2 n. The model adds the relative normal motion the fluid cannot carry; tangential
-// sliding and rolling stay with the fluid. Host-side (a few thousand surface nodes per
+// (v_B − v_A) · n is its V; a lone pair moves by −V/2 n and +V/2 n. The model adds the
+// relative normal motion the fluid cannot carry; tangential sliding and rolling stay with
+// the fluid. Host-side (a few thousand surface nodes per
 // pair), on the cells' current positions.
 #include <array>
 #include <vector>

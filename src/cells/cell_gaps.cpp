@@ -100,7 +100,7 @@ void CellGaps::node_distances(int a, int b) const {
                        Kokkos::RangePolicy<ExecSpace>(0, population_.cell_node_count()[a]), f);
 }
 
-void CellGaps::update_patch_bounds() const {
+void CellGaps::locate_surfaces() const {
   if (patch_bounds_.extent(0) > 0)
     Kokkos::parallel_for("rouleau::CellGaps::patch_bounds", Kokkos::RangePolicy<ExecSpace>(0, patch_bounds_.extent(0)),
                          TrianglePatchBoundsFunctor<CellPopulation::ConstNodeVectors, Kokkos::View<const int* [3]>>{
@@ -109,7 +109,6 @@ void CellGaps::update_patch_bounds() const {
 }
 
 std::vector<double> CellGaps::node_distances_to(int a, int b) const {
-  update_patch_bounds();
   node_distances(a, b);
   const int count = population_.cell_node_count()[a];
   auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), distance_);
@@ -121,7 +120,7 @@ std::vector<double> CellGaps::node_distances_to(int a, int b) const {
 std::vector<CellPairGap> CellGaps::measure() const {
   ProfilingRegion region("rouleau::CellGaps::measure");
   std::vector<CellPairGap> pairs;
-  update_patch_bounds();
+  locate_surfaces();
   const auto weights = population_.surface_area_weights();
   const auto distance = distance_;
   const double contact = contact_distance_;

@@ -25,14 +25,15 @@ class CellGaps {
   // visits only the patches of 8 to 16 nearby triangles that may hold its nearest point
   // (kernels/surface_gap.hpp), with the same result as a loop over every triangle.
   std::vector<CellPairGap> measure() const;
-  // The distance from each of cell a's nodes to cell b's outer surface at the current
-  // positions, in a's node order, on the host (as measure() finds it; nodes off a's outer
-  // surface are not measured and hold +infinity).
+  // The surface patches' bounding spheres at the current positions: once after the cells
+  // moved, before node_distances_to (measure() does it itself).
+  void locate_surfaces() const;
+  // The distance from each of cell a's nodes to cell b's outer surface, at the positions
+  // of the last locate_surfaces(), in a's node order, on the host (as measure() finds it;
+  // nodes off a's outer surface are not measured and hold +infinity).
   std::vector<double> node_distances_to(int a, int b) const;
 
  private:
-  // The patches' bounding spheres at the current positions.
-  void update_patch_bounds() const;
   // The distance from each of cell a's nodes to cell b's surface, into distance_.
   void node_distances(int a, int b) const;
 

@@ -90,6 +90,7 @@ void FilmDrainage::add_opening_velocities(CellPopulation::ConstNodeVectors felt_
 
   films_.clear();
   std::vector<std::array<double, 3>> normals;  // per film, n from a to b
+  gaps_.locate_surfaces();
   for (int a = 0; a < cells; ++a)
     for (int b = a + 1; b < cells; ++b) {
       std::array<double, 3> n{centroid[b][0] - centroid[a][0], centroid[b][1] - centroid[a][1],

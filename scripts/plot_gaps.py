@@ -45,7 +45,7 @@ def main():
     ax.set_xlabel("strain γ̇t" if shear_rate else "time (s)")
     ax.set_ylabel("gap between neighbouring cells (µm)")
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=7, ncol=1, loc="upper left")
+    ax.legend(fontsize=7, ncol=1, loc="best")
     fig.tight_layout()
     fig.savefig(out, dpi=130)
     print(out)

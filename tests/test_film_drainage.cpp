@@ -2,12 +2,16 @@
 // 2.82 μm) 0.1 μm apart along x, with loads placed by hand on their film nodes: the load
 // it reads, the squeeze resistance against the Reynolds solution for two spheres, the
 // opening speed V = w T / ζ, its split (each capsule moved as a whole by ∓V/2 along the
-// line of centres), the step's limit, and nothing at all beyond the open gap.
+// line of centres), the step's limit, and nothing at all beyond the open gap; and the
+// deforming films' node velocities on the same pair (only the films' nodes and those below
+// them move, away from the other capsule when pulled, linearly in the loads, with positive
+// power, limited by one factor for all).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <vector>
 
 #include "cells/cells_from_case.hpp"
 #include "config/load_case.hpp"
@@ -33,15 +37,18 @@ rouleau::CaseCells two_capsules(double gap) {
 struct Outcome {
   rouleau::FilmDrainage::Film film;
   bool has_film = false;
+  std::vector<double> velocity;         // every node's, x, y, z
+  double power = 0.0;                   // Σ f · (v − v_interpolated) [pN μm/s]
   double speed_a = 0.0, speed_b = 0.0;  // each capsule's x-velocity (every node's the same)
   double spread = 0.0;                  // the largest deviation of a node from its capsule's velocity
 };
 
 // Each capsule pulled away from the other by `pull` [pN], spread evenly over its surface
 // nodes within half the open gap of the other.
-Outcome pulled_apart(const rouleau::CaseCells& cells, double pull, double dt) {
+Outcome pulled_apart(const rouleau::CaseCells& cells, double pull, double dt,
+                     rouleau::FilmModel model = rouleau::FilmModel::rigid) {
   const rouleau::CellPopulation& population = *cells.population;
-  rouleau::FilmDrainage films(population, open_gap, viscosity);
+  rouleau::FilmDrainage films(population, open_gap, viscosity, model);
   const int nodes = population.num_nodes();
   rouleau::CellPopulation::NodeVectors forces("forces", nodes), interpolated("interpolated", nodes),
       velocities("velocities", nodes);
@@ -80,6 +87,11 @@ Outcome pulled_apart(const rouleau::CaseCells& cells, double pull, double dt) {
   const int first_b = population.cell_first_node()[1];
   outcome.speed_a = v(0, 0);
   outcome.speed_b = v(first_b, 0);
+  for (int n = 0; n < nodes; ++n)
+    for (int i = 0; i < 3; ++i) {
+      outcome.velocity.push_back(v(n, i));
+      outcome.power += f(n, i) * v(n, i);
+    }
   for (int n = 0; n < nodes; ++n) {
     const double expected = cell(n) == 0 ? outcome.speed_a : outcome.speed_b;
     outcome.spread = std::fmax(outcome.spread, std::fabs(v(n, 0) - expected) + std::fabs(v(n, 1)) + std::fabs(v(n, 2)));
@@ -127,6 +139,69 @@ TEST(FilmDrainage, NothingHappensBeyondTheOpenGap) {
   EXPECT_EQ(o.speed_a, 0.0);
   EXPECT_EQ(o.speed_b, 0.0);
   EXPECT_EQ(o.spread, 0.0);
+}
+
+TEST(FilmDrainage, DeformingFilmsMoveTheirFacesApartWhenPulled) {
+  const rouleau::CaseCells cells = two_capsules(0.1);
+  const rouleau::CellPopulation& population = *cells.population;
+  const double pull = 0.5, dt = 1e-3;
+  const Outcome o = pulled_apart(cells, pull, dt, rouleau::FilmModel::deforming);
+  ASSERT_TRUE(o.has_film);
+  std::printf("deforming film: load %.4f pN, resistance %.4f pN s/um, mean opening %.4f um/s, power %.4g\n",
+              o.film.load, o.film.resistance, o.film.opening_speed, o.power);
+  EXPECT_GT(o.film.opening_speed, 0.0);
+  EXPECT_GT(o.power, 0.0);  // the loads do work on the films, which dissipate it
+  // Only nodes near the film move: none farther than the open gap plus the membrane's depth
+  // (0.6 μm) from the other capsule. The loaded nodes (outer surface, within half the open
+  // gap) move away from it along x on the (area) mean, and so do all moving nodes; not each
+  // one: where the film is thinnest its plasma follows slowest, and the faces may dimple
+  // there, as draining films do.
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), population.positions());
+  auto cell = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), population.node_cell());
+  const double centre_distance = diameter + 0.1;
+  auto w = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), population.surface_area_weights());
+  int moved = 0;
+  double mean_away = 0.0, loaded_away = 0.0;
+  for (int n = 0; n < population.num_nodes(); ++n) {
+    const double vx = o.velocity[3 * n];
+    const double speed = std::hypot(vx, o.velocity[3 * n + 1], o.velocity[3 * n + 2]);
+    const double other_x = cell(n) == 0 ? 0.5 * centre_distance : -0.5 * centre_distance;
+    const double distance = std::hypot(x(n, 0) - other_x, x(n, 1), x(n, 2)) - 0.5 * diameter;
+    const double away = cell(n) == 0 ? -vx : vx;
+    if (w(n) > 0.0 && distance < 0.5 * open_gap) loaded_away += w(n) * away;
+    if (speed == 0.0) continue;
+    ++moved;
+    mean_away += away;
+    EXPECT_LT(distance, open_gap + 0.6 + 0.05);
+  }
+  EXPECT_GT(moved, 20);
+  EXPECT_GT(mean_away, 0.0);
+  EXPECT_GT(loaded_away, 0.0);
+  // Linear in the loads: pushed instead, every velocity reverses.
+  const Outcome pushed = pulled_apart(cells, -pull, dt, rouleau::FilmModel::deforming);
+  double largest = 0.0;
+  for (std::size_t k = 0; k < o.velocity.size(); ++k) {
+    largest = std::fmax(largest, std::fabs(o.velocity[k]));
+    EXPECT_NEAR(pushed.velocity[k], -o.velocity[k], 1e-12 * (1.0 + std::fabs(o.velocity[k])));
+  }
+  // A load so large that a film node would cross its gap in one step: every speed is scaled
+  // by one factor, below 1.
+  const double factor = 1e4;
+  const Outcome limited = pulled_apart(cells, factor * pull, dt, rouleau::FilmModel::deforming);
+  double scale = 0.0;
+  for (std::size_t k = 0; k < o.velocity.size(); ++k)
+    if (std::fabs(o.velocity[k]) > 1e-3 * largest) {
+      const double ratio = limited.velocity[k] / (factor * o.velocity[k]);
+      if (scale == 0.0) scale = ratio;
+      EXPECT_NEAR(ratio, scale, 1e-9);
+    }
+  EXPECT_GT(scale, 0.0);
+  EXPECT_LT(scale, 1.0);
+  // Beyond the open gap, nothing.
+  const rouleau::CaseCells apart = two_capsules(1.2);
+  const Outcome far = pulled_apart(apart, pull, dt, rouleau::FilmModel::deforming);
+  EXPECT_FALSE(far.has_film);
+  for (const double v : far.velocity) EXPECT_EQ(v, 0.0);
 }
 
 }  // namespace

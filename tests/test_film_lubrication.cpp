@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <vector>
 
 #include "cells/film_lubrication.hpp"
 
@@ -65,6 +66,35 @@ TEST(FilmLubrication, SquareFilmOfUniformGapMatchesTheSeriesSolution) {
     std::printf("square film, %d x %d: error %.3f %%\n", n, n, 100.0 * error);
     EXPECT_LT(error, previous_error);
     previous_error = error;
+  }
+  EXPECT_LT(previous_error, 0.005);
+}
+
+TEST(FilmLubrication, SquareFilmTiltingMatchesTheSeriesSolution) {
+  // The same film closing at the rate V(x) = x (the faces tilting about the y axis):
+  // −∇²p = (12 μ / h³) x, p = 0 at the edge; with u = x + s/2 and the sine series on [0, s]²,
+  // Z_xx = ∫ p x dA = (12 μ / h³) (16 s⁶ / π⁶) Σ_{m even, n odd} 1 / (m² n² (m² + n²)).
+  // The modes 1 and x are orthogonal in the film's dissipation (Z_1x = 0 by symmetry), and
+  // Z_11 is the uniform closing's resistance.
+  const double h = 0.1, side = 2.0, viscosity = 1.2e-3;
+  double sum = 0.0;
+  for (int m = 2; m < 4000; m += 2)
+    for (int n = 1; n < 4000; n += 2) sum += 1.0 / (double(m) * m * n * n * (double(m) * m + double(n) * n));
+  const double exact = 12.0 * viscosity / (h * h * h) * 16.0 * std::pow(side, 6) / std::pow(pi, 6) * sum;
+  double previous_error = INFINITY;
+  for (const int n : {16, 32, 64}) {
+    const auto film = square_patch(0.5 * side, n, [&](double, double) { return h; });
+    std::vector<double> uniform(film.points.size(), 1.0), tilt(film.points.size());
+    for (std::size_t p = 0; p < film.points.size(); ++p) tilt[p] = film.points[p][0];
+    const auto z = rouleau::squeeze_resistances(film, viscosity, 1.0, {uniform, tilt});
+    const double error = std::fabs(z[1][1] / exact - 1.0);
+    std::printf("square film tilting, %d x %d: Z_xx = %.6f pN s um, exact %.6f, error %.3f %%\n", n, n, z[1][1],
+                exact, 100.0 * error);
+    EXPECT_LT(error, previous_error);
+    previous_error = error;
+    EXPECT_NEAR(z[0][0], rouleau::squeeze_resistance(film, viscosity, 1.0), 1e-12 * z[0][0]);
+    EXPECT_NEAR(z[0][1], z[1][0], 1e-9 * z[0][0]);
+    EXPECT_LT(std::fabs(z[0][1]), 1e-9 * z[0][0]);
   }
   EXPECT_LT(previous_error, 0.005);
 }

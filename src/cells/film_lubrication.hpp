@@ -27,4 +27,14 @@ struct FilmPatch {
 // out of range; 0 when no node is inside the film.
 double squeeze_resistance(const FilmPatch& film, double viscosity, double open_gap);
 
+// The film closing at a rate that varies over it: for closing rates V_m (one value per
+// point, [μm/s], m = 1..M), the resistance matrix Z_mn = ∫ p_m V_n dA [pN·s/μm], p_m the
+// pressure of Reynolds' equation with V_m on its right-hand side (same boundary conditions).
+// Z is symmetric positive semi-definite; squeeze_resistance is Z for the one rate V = 1.
+// For loads F_i on the points (> 0 closing) the film closes, within the span of the V_m,
+// at Σ_m q_m V_m with Z q = Q, Q_m = Σ_i F_i V_m,i: the rates that dissipate what the loads
+// do work, as Stokes' equations do (Galerkin on the modes).
+std::vector<std::vector<double>> squeeze_resistances(const FilmPatch& film, double viscosity, double open_gap,
+                                                     const std::vector<std::vector<double>>& rates);
+
 }  // namespace rouleau

@@ -210,6 +210,14 @@ struct InteractionConfig {
 //                  no longer bounds the step (coupling/cell_stiffness.hpp).
 enum class CouplingScheme { explicit_forces, semi_implicit };
 
+// How the sub-grid film model moves the cells (coupling/film_drainage.hpp):
+//   rigid:     each film opens at V = w T / ζ for the load T its nodes hold, the cells moved
+//              as wholes (shapes kept);
+//   deforming: each film's faces move by smooth modes (a uniform opening, two tilts, three
+//              dishings) at the speeds that balance the films' squeeze resistance with the
+//              cells' forces, backward Euler in the cells' stiffness; the cells deform.
+enum class FilmModel { rigid, deforming };
+
 struct CouplingConfig {
   CouplingScheme scheme = CouplingScheme::explicit_forces;  // key scheme
   // RKPM support radius a_J = support_elements × the local element size at fluid node J.
@@ -241,6 +249,7 @@ struct CouplingConfig {
   // lubrication equation gives for the load it holds, which the fluid mesh cannot
   // resolve. 0: off.   key film_open_gap_um
   double film_open_gap = 0.0;
+  FilmModel film_model = FilmModel::rigid;  // key film_model
 };
 
 // What the scene builds and runs (docs/design.md, "The scene decides what runs").

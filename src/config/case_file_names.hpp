@@ -45,6 +45,8 @@ inline constexpr std::array<NamedChoice<InteractionQuadrature>, 4> interaction_q
      {InteractionQuadrature::gauss6, "gauss6"}}};
 inline constexpr std::array<NamedChoice<CouplingScheme>, 2> coupling_scheme_names{
     {{CouplingScheme::explicit_forces, "explicit"}, {CouplingScheme::semi_implicit, "semi_implicit"}}};
+inline constexpr std::array<NamedChoice<FilmModel>, 2> film_model_names{
+    {{FilmModel::rigid, "rigid"}, {FilmModel::deforming, "deforming"}}};
 
 // The table of each enum, found by the enum's type.
 constexpr const auto& named_choices(BoundaryType) { return boundary_type_names; }
@@ -56,6 +58,7 @@ constexpr const auto& named_choices(PreconditionerType) { return preconditioner_
 constexpr const auto& named_choices(MultigridSmoother) { return multigrid_smoother_names; }
 constexpr const auto& named_choices(InteractionQuadrature) { return interaction_quadrature_names; }
 constexpr const auto& named_choices(CouplingScheme) { return coupling_scheme_names; }
+constexpr const auto& named_choices(FilmModel) { return film_model_names; }
 constexpr const auto& named_choices(CellShape) { return cell_shape_names; }
 constexpr const auto& named_choices(CellBody) { return cell_body_names; }
 constexpr const auto& named_choices(MeshResolution) { return mesh_resolution_names; }

@@ -93,6 +93,7 @@ void read_coupling(const TableReader& root, CouplingConfig& coupling, const Inte
   assign(coupling.forces_in_stabilization, section.boolean("forces_in_stabilization"));
   assign(coupling.subscale_velocity, section.boolean("subscale_velocity"));
   assign(coupling.film_open_gap, section.number("film_open_gap_um"));
+  assign(coupling.film_model, section.choice<FilmModel>("film_model"));
   assign(coupling.volume_tolerance, section.number("volume_tolerance"));
   // With the loads in the stabilization, u' = −τ (r − f_h) holds τ f_h: the cells would
   // move with their own forces times a mobility the semi-implicit step does not linearize,
@@ -104,13 +105,20 @@ void read_coupling(const TableReader& root, CouplingConfig& coupling, const Inte
                  "cannot be combined with subscale_velocity under scheme = \"semi_implicit\": the subscale velocity "
                  "then carries the cells' own forces, which the semi-implicit step does not linearize (use one of "
                  "the two, or scheme = \"explicit\")");
-  // With the Morse law the film's load holds the adhesion, whose stiffness near contact
-  // the film's explicit update does not follow: the four-cell stack in contact closed its
-  // rim films from 0.085 to 0.02 um in 6 steps of 2e-3 s, then sprang 6.7 um apart.
-  if (coupling.film_open_gap > 0.0 && interaction.enabled)
-    section.fail("film_open_gap_um",
-                 "the film model does not yet run with the Morse interaction (interaction.enabled = true): its "
-                 "explicit film update does not follow the adhesion's stiffness near contact");
+  // With the Morse law the rigid film's load holds the adhesion, which rigid cells cannot
+  // balance short of overlap: the four-cell stack in contact closed its rim films from
+  // 0.085 to 0.02 um in 6 steps of 2e-3 s, then sprang 6.7 um apart. Deforming films let
+  // the faces flatten instead, implicit in the cells' stiffness (which only the
+  // semi-implicit coupling has).
+  if (coupling.film_open_gap > 0.0 && interaction.enabled && coupling.film_model == FilmModel::rigid)
+    section.fail("film_model",
+                 "rigid films do not run with the Morse interaction (interaction.enabled = true): rigid cells cannot "
+                 "balance the adhesion short of overlap; use film_model = \"deforming\"");
+  if (coupling.film_open_gap > 0.0 && coupling.film_model == FilmModel::deforming &&
+      coupling.scheme != CouplingScheme::semi_implicit)
+    section.fail("film_model",
+                 "deforming films need scheme = \"semi_implicit\": their update is implicit in the cells' stiffness, "
+                 "which only the semi-implicit coupling linearizes");
   if (const auto gravity = section.number3("gravity_m_s2"))
     for (int d = 0; d < 3; ++d) coupling.gravity[d] = (*gravity)[d] * 1e6;  // m/s² → μm/s²
 }

@@ -263,6 +263,7 @@ std::string resolved_case_toml(const CaseConfig& config, const DerivedQuantities
   toml_file.key("subscale_velocity", coupling.subscale_velocity,
                 "the cells move with u_h + u', u' = -tau r the PSPG subscale velocity");
   toml_file.key("film_open_gap_um", coupling.film_open_gap, "the sub-grid film model acts below this gap; 0: off");
+  toml_file.key("film_model", toml_name(coupling.film_model));
   toml_file.key("gravity_m_s2", std::array<double, 3>{in_file_units(coupling.gravity[0], 1e6),
                                                       in_file_units(coupling.gravity[1], 1e6),
                                                       in_file_units(coupling.gravity[2], 1e6)});

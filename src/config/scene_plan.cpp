@@ -180,8 +180,11 @@ ScenePlan plan_scene(const CaseConfig& config, const DerivedQuantities& derived)
       if (plan.film_drainage) {
         std::ostringstream film;
         film << "films between cells thinner than " << config.coupling.film_open_gap
-             << " um open or close at the speed Reynolds' equation gives for the load they hold (each cell moved "
-                "as a whole)";
+             << (config.coupling.film_model == FilmModel::rigid
+                     ? " um open or close at the speed Reynolds' equation gives for the load they hold (each cell "
+                       "moved as a whole)"
+                     : " um open, close, tilt or dish at the speeds that balance Reynolds' squeeze resistance with "
+                       "the cells' forces, implicit in their stiffness (the films' faces deform)");
         stages.push_back({stage_name::film_drainage, true, film.str()});
       } else {
         stages.push_back({stage_name::film_drainage, false,

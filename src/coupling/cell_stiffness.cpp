@@ -55,29 +55,39 @@ void CellStiffness::linearize(const ConstNodeVectors& positions, double dt) {
 void CellStiffness::force_change(const Kokkos::View<const double*>& x, const NodeVectors& change) const {
   ProfilingRegion region("rouleau::CellStiffness::force_change");
   if (dt_ <= 0.0) throw std::logic_error("rouleau::CellStiffness: linearize() first");
-  // δx_I = Δt U (I û)_I [μm], and its largest node displacement.
+  // δx_I = Δt U (I û)_I [μm]
   rkpm_.interpolate(x, 4, displacement_);
   const NodeVectors displacement = displacement_;
   const double to_displacement = dt_ * scales_.velocity;
+  Kokkos::parallel_for(
+      "rouleau::CellStiffness::displacement", Kokkos::RangePolicy<ExecSpace>(0, displacement.extent(0)),
+      KOKKOS_LAMBDA(const int n) {
+        for (int d = 0; d < 3; ++d) displacement(n, d) *= to_displacement;
+      });
+  moves_force_change(displacement_, change);
+}
+
+void CellStiffness::moves_force_change(const NodeVectors& moves, const NodeVectors& change) const {
+  if (dt_ <= 0.0) throw std::logic_error("rouleau::CellStiffness: linearize() first");
+  // The largest node move.
   double largest = 0.0;
   Kokkos::parallel_reduce(
-      "rouleau::CellStiffness::displacement", Kokkos::RangePolicy<ExecSpace>(0, displacement.extent(0)),
+      "rouleau::CellStiffness::largest_move", Kokkos::RangePolicy<ExecSpace>(0, moves.extent(0)),
       KOKKOS_LAMBDA(const int n, double& m) {
         for (int d = 0; d < 3; ++d) {
-          displacement(n, d) *= to_displacement;
-          const double a = displacement(n, d) < 0 ? -displacement(n, d) : displacement(n, d);
+          const double a = moves(n, d) < 0 ? -moves(n, d) : moves(n, d);
           if (a > m) m = a;
         }
       },
       Kokkos::Max<double>(largest));
-  if (!(largest > 0.0)) {  // û = 0 on the cells (or not finite: the solve reports it)
+  if (!(largest > 0.0)) {  // no move (or not finite: the solve reports it)
     Kokkos::deep_copy(change, 0.0);
     return;
   }
 
   // K δx ≈ [f(x^n + σ δx) − f(x^n)] / σ,   σ = h / max |δx|
   const double sigma = difference_step / largest;
-  displace(displaced_positions_, base_positions_, displacement_, sigma);
+  displace(displaced_positions_, base_positions_, moves, sigma);
   forces_(displaced_positions_, displaced_forces_);
   ++evaluations_;
   const NodeVectors displaced = displaced_forces_, base = base_forces_;
@@ -89,7 +99,7 @@ void CellStiffness::force_change(const Kokkos::View<const double*>& x, const Nod
       });
   // + K_interaction δx, exact
   if (interaction_) {
-    interaction_->force_change(displacement_, interaction_change_);
+    interaction_->force_change(moves, interaction_change_);
     add_node_vectors(change, interaction_change_);
   }
 }

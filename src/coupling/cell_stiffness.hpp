@@ -73,6 +73,9 @@ class CellStiffness final : public LinearOperator {
   // force_change(n) = (K δx)_n [pN], δx = Δt U I x: the change of the cells' forces over the
   // step when the fluid's scaled state is x (apply() spreads −force_change / (P L²)).
   void force_change(const Kokkos::View<const double*>& x, const NodeVectors& force_change) const;
+  // change(n) = (K δx)_n [pN] for node moves δx = `moves` [μm] (the same difference and
+  // exact interaction part; the sub-grid film model's implicit update uses it).
+  void moves_force_change(const NodeVectors& moves, const NodeVectors& change) const;
 
   // Evaluations of the differenced forces made so far (one per action and one per
   // linearization).

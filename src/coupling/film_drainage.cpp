@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <cmath>
 #include <stdexcept>
 
 #include <Eigen/Dense>
 
 #include "cells/film_lubrication.hpp"
+#include "coupling/cell_stiffness.hpp"
 #include "util/profiling_region.hpp"
 
 namespace rouleau {
@@ -17,12 +19,25 @@ using ExecSpace = Kokkos::DefaultExecutionSpace;
 // A node's gap is taken as at least this [μm] in Reynolds' equation: surfaces that touch
 // or overlap leave a film of molecular size, not none.
 constexpr double least_gap = 1e-3;
+// How deep below the outer surface a node follows its film [μm]: the shell's 0.36 μm and more.
+constexpr double membrane_depth = 0.6;
+// velocities = interpolated + node_velocity (a free function: CUDA's device lambdas may not
+// sit in a private member).
+void add_node_velocities(CellPopulation::ConstNodeVectors interpolated, Kokkos::View<const double* [3]> node_velocity,
+                         CellPopulation::NodeVectors velocities) {
+  Kokkos::parallel_for(
+      "rouleau::FilmDrainage::add_node_velocities", Kokkos::RangePolicy<ExecSpace>(0, velocities.extent(0)),
+      KOKKOS_LAMBDA(const int n) {
+        for (int i = 0; i < 3; ++i) velocities(n, i) = interpolated(n, i) + node_velocity(n, i);
+      });
+}
 }  // namespace
 
-FilmDrainage::FilmDrainage(const CellPopulation& population, double open_gap, double viscosity)
+FilmDrainage::FilmDrainage(const CellPopulation& population, double open_gap, double viscosity, FilmModel model)
     : population_(population),
       open_gap_(open_gap),
       viscosity_(viscosity),
+      model_(model),
       gaps_(population, open_gap),
       cell_velocity_("rouleau::FilmDrainage::cell_velocity", population.num_cells()) {
   if (!(open_gap > 0.0)) throw std::invalid_argument("rouleau::FilmDrainage: the open gap must be > 0");
@@ -32,12 +47,84 @@ FilmDrainage::FilmDrainage(const CellPopulation& population, double open_gap, do
     triangles_.push_back({triangles(t, 0), triangles(t, 1), triangles(t, 2)});
   cell_triangles_.assign(population.num_cells(), {});
   for (std::size_t t = 0; t < triangle_cell.extent(0); ++t) cell_triangles_[triangle_cell(t)].push_back(int(t));
+  if (model_ == FilmModel::deforming) find_followed_nodes();
+}
+
+void FilmDrainage::find_followed_nodes() {
+  const CellPopulation& population = population_;
+  // Which way the triangles face: outward when the volume they enclose is positive.
+  const auto x0 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), population.reference_positions());
+  const auto w = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), population.surface_area_weights());
+  area_weight_.assign(w.data(), w.data() + w.extent(0));
+  outward_.assign(population.num_cells(), 1.0);
+  for (int c = 0; c < population.num_cells(); ++c) {
+    double volume = 0.0;
+    for (const int t : cell_triangles_[c]) {
+      const auto& k = triangles_[t];
+      const double a[3] = {x0(k[0], 0), x0(k[0], 1), x0(k[0], 2)};
+      const double b[3] = {x0(k[1], 0), x0(k[1], 1), x0(k[1], 2)};
+      const double d[3] = {x0(k[2], 0), x0(k[2], 1), x0(k[2], 2)};
+      volume += a[0] * (b[1] * d[2] - b[2] * d[1]) - a[1] * (b[0] * d[2] - b[2] * d[0]) +
+                a[2] * (b[0] * d[1] - b[1] * d[0]);
+    }
+    outward_[c] = volume >= 0.0 ? 1.0 : -1.0;
+  }
+  // Each node follows the nearest outer-surface node of its cell (in the reference
+  // configuration) within the membrane's depth, so a film moves the membrane's whole
+  // thickness, not its outer face alone.
+  const auto& first = population.cell_first_node();
+  const auto& count = population.cell_node_count();
+  surface_node_.assign(population.num_nodes(), -1);
+  for (int c = 0; c < population.num_cells(); ++c) {
+    std::vector<int> surface;
+    for (int n = first[c]; n < first[c] + count[c]; ++n)
+      if (w(n) > 0.0) surface.push_back(n);
+    for (int n = first[c]; n < first[c] + count[c]; ++n) {
+      double nearest = membrane_depth * membrane_depth;
+      for (const int s : surface) {
+        double d2 = 0.0;
+        for (int k = 0; k < 3; ++k) d2 += (x0(n, k) - x0(s, k)) * (x0(n, k) - x0(s, k));
+        if (d2 <= nearest) {
+          nearest = d2;
+          surface_node_[n] = s;
+        }
+      }
+    }
+  }
+  node_velocity_ = Kokkos::View<double* [3]>("rouleau::FilmDrainage::node_velocity", population.num_nodes());
+}
+
+// Cell c's film patch: its outer-surface triangles whose nodes are all within twice the
+// open gap of the other cell (distance[k] for c's node first[c] + k), at positions_;
+// node_of (when given) receives each patch point's node.
+FilmPatch FilmDrainage::film_patch(int c, const std::vector<double>& distance, std::vector<int>* node_of) const {
+  const int first = population_.cell_first_node()[c], count = population_.cell_node_count()[c];
+  FilmPatch film;
+  std::vector<int> local(count, -1);
+  for (const int t : cell_triangles_[c]) {
+    bool near = true;
+    for (int k = 0; k < 3; ++k) near = near && distance[triangles_[t][k] - first] < 2.0 * open_gap_;
+    if (!near) continue;
+    std::array<int, 3> corners{};
+    for (int k = 0; k < 3; ++k) {
+      const int node = triangles_[t][k], j = node - first;
+      if (local[j] < 0) {
+        local[j] = static_cast<int>(film.points.size());
+        film.points.push_back(positions_[node]);
+        film.gap.push_back(std::max(distance[j], least_gap));
+        if (node_of) node_of->push_back(node);
+      }
+      corners[k] = local[j];
+    }
+    film.triangles.push_back(corners);
+  }
+  return film;
 }
 
 void FilmDrainage::add_opening_velocities(CellPopulation::ConstNodeVectors felt_forces,
                                           CellPopulation::ConstNodeVectors interpolated,
                                           CellPopulation::NodeVectors velocities, double dt,
-                                          double velocity_scale) {
+                                          double velocity_scale, const CellStiffness* stiffness) {
   ProfilingRegion region("rouleau::FilmDrainage::add_opening_velocities");
   const int cells = population_.num_cells();
   const auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), population_.positions());
@@ -54,29 +141,11 @@ void FilmDrainage::add_opening_velocities(CellPopulation::ConstNodeVectors felt_
       radius[c] = std::max(radius[c], std::hypot(x(n, 0) - centroid[c][0], x(n, 1) - centroid[c][1],
                                                  x(n, 2) - centroid[c][2]));
   }
-  // Cell c's film patch: its outer-surface triangles whose nodes are all within twice the
-  // open gap of the other cell (distance[k] for c's node first[c] + k).
-  const auto patch = [&](int c, const std::vector<double>& distance) {
-    FilmPatch film;
-    std::vector<int> local(count[c], -1);
-    for (const int t : cell_triangles_[c]) {
-      bool near = true;
-      for (int k = 0; k < 3; ++k) near = near && distance[triangles_[t][k] - first[c]] < 2.0 * open_gap_;
-      if (!near) continue;
-      std::array<int, 3> corners{};
-      for (int k = 0; k < 3; ++k) {
-        const int node = triangles_[t][k], j = node - first[c];
-        if (local[j] < 0) {
-          local[j] = static_cast<int>(film.points.size());
-          film.points.push_back({x(node, 0), x(node, 1), x(node, 2)});
-          film.gap.push_back(std::max(distance[j], least_gap));
-        }
-        corners[k] = local[j];
-      }
-      film.triangles.push_back(corners);
-    }
-    return film;
-  };
+  positions_.resize(x.extent(0));
+  for (std::size_t n = 0; n < x.extent(0); ++n) positions_[n] = {x(n, 0), x(n, 1), x(n, 2)};
+  forces_.resize(f.extent(0));
+  for (std::size_t n = 0; n < f.extent(0); ++n) forces_[n] = {f(n, 0), f(n, 1), f(n, 2)};
+  const auto patch = [&](int c, const std::vector<double>& distance) { return film_patch(c, distance, nullptr); };
   // T_c = −Σ f_i · n over c's nodes inside the film, n pointing to the other cell.
   const auto load = [&](int c, const std::vector<double>& distance, const std::array<double, 3>& n) {
     double sum = 0.0;
@@ -88,6 +157,8 @@ void FilmDrainage::add_opening_velocities(CellPopulation::ConstNodeVectors felt_
     return sum;
   };
 
+  const bool deforming = model_ == FilmModel::deforming;
+  std::vector<std::vector<double>> film_distances;  // deforming: per film, from_a then from_b
   films_.clear();
   std::vector<std::array<double, 3>> normals;  // per film, n from a to b
   gaps_.locate_surfaces();
@@ -103,6 +174,12 @@ void FilmDrainage::add_opening_velocities(CellPopulation::ConstNodeVectors felt_
       if (!(smallest_gap < open_gap_)) continue;
       const std::vector<double> from_b = gaps_.node_distances_to(b, a);
       Film film{a, b, smallest_gap};
+      if (deforming) {
+        films_.push_back(film);
+        film_distances.push_back(from_a);
+        film_distances.push_back(from_b);
+        continue;
+      }
       const std::array<double, 3> reversed{-n[0], -n[1], -n[2]};
       film.load = 0.5 * (load(a, from_a, n) + load(b, from_b, reversed));
       const double resistance_a = squeeze_resistance(patch(a, from_a), viscosity_, open_gap_);
@@ -117,6 +194,10 @@ void FilmDrainage::add_opening_velocities(CellPopulation::ConstNodeVectors felt_
       films_.push_back(film);
       normals.push_back(n);
     }
+  if (deforming) {
+    deform_films(film_distances, interpolated, velocities, dt, velocity_scale, stiffness);
+    return;
+  }
   // The cells' velocities v_c: each film's (v_b − v_a) · n = V_ab, and the least Σ |v_c|²
   // (no common motion: the fluid carries that). With A the films' rows, v = Aᵀ λ,
   // (A Aᵀ) λ = V; a chain or tree of films gets its speeds exactly, a closed loop of them
@@ -150,6 +231,239 @@ void FilmDrainage::add_opening_velocities(CellPopulation::ConstNodeVectors felt_
       "rouleau::FilmDrainage::add", Kokkos::RangePolicy<ExecSpace>(0, velocities.extent(0)), KOKKOS_LAMBDA(const int n) {
         for (int i = 0; i < 3; ++i) velocities(n, i) = interpolated(n, i) + cell_velocity(node_cell(n), i);
       });
+}
+
+// Each outer-surface node's unit outward normal at positions_: the mean of its triangles'
+// area vectors.
+std::vector<std::array<double, 3>> FilmDrainage::outward_normals() const {
+  std::vector<std::array<double, 3>> normal(positions_.size(), {0.0, 0.0, 0.0});
+  for (int c = 0; c < population_.num_cells(); ++c)
+    for (const int t : cell_triangles_[c]) {
+      const auto& k = triangles_[t];
+      double e1[3], e2[3];
+      for (int i = 0; i < 3; ++i) {
+        e1[i] = positions_[k[1]][i] - positions_[k[0]][i];
+        e2[i] = positions_[k[2]][i] - positions_[k[0]][i];
+      }
+      const double area_vector[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                                     e1[0] * e2[1] - e1[1] * e2[0]};
+      for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i) normal[k[j]][i] += outward_[c] * area_vector[i];
+    }
+  for (auto& n : normal) {
+    const double length = std::hypot(n[0], n[1], n[2]);
+    if (length > 0.0)
+      for (double& component : n) component /= length;
+  }
+  return normal;
+}
+
+// A film's frame: the area-weighted centre of both sides' film nodes (gap below the open
+// gap), the unit axis from side A to side B (their outward normals' weighted difference),
+// tangent axes e1, e2 and the rms radius about the centre; none for an empty film.
+std::optional<FilmDrainage::FilmFrame> FilmDrainage::film_frame(
+    const int (&side_cell)[2], const std::vector<double>* const (&side_distance)[2],
+    const std::vector<std::array<double, 3>>& normal) const {
+  const auto& first = population_.cell_first_node();
+  const auto& count = population_.cell_node_count();
+  FilmFrame frame;
+  double area = 0.0;
+  std::array<double, 3> axis{0.0, 0.0, 0.0};
+  for (int side = 0; side < 2; ++side) {
+    const int c = side_cell[side];
+    for (int k = 0; k < count[c]; ++k)
+      if ((*side_distance[side])[k] < open_gap_) {
+        const int node = first[c] + k;
+        area += area_weight_[node];
+        for (int i = 0; i < 3; ++i) {
+          frame.centre[i] += area_weight_[node] * positions_[node][i];
+          axis[i] += (side == 0 ? 1.0 : -1.0) * area_weight_[node] * normal[node][i];
+        }
+      }
+  }
+  const double axis_length = std::hypot(axis[0], axis[1], axis[2]);
+  if (!(area > 0.0) || !(axis_length > 0.0)) return std::nullopt;
+  for (int i = 0; i < 3; ++i) {
+    frame.centre[i] /= area;
+    axis[i] /= axis_length;
+  }
+  // e1: the coordinate axis least along the film's axis, made normal to it; e2 = axis × e1.
+  int least = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::abs(axis[i]) < std::abs(axis[least])) least = i;
+  frame.e1[least] = 1.0;
+  const double along = frame.e1[0] * axis[0] + frame.e1[1] * axis[1] + frame.e1[2] * axis[2];
+  for (int i = 0; i < 3; ++i) frame.e1[i] -= along * axis[i];
+  const double e1_length = std::hypot(frame.e1[0], frame.e1[1], frame.e1[2]);
+  for (double& component : frame.e1) component /= e1_length;
+  frame.e2 = {axis[1] * frame.e1[2] - axis[2] * frame.e1[1], axis[2] * frame.e1[0] - axis[0] * frame.e1[2],
+              axis[0] * frame.e1[1] - axis[1] * frame.e1[0]};
+  double radius2 = 0.0;
+  for (int side = 0; side < 2; ++side) {
+    const int c = side_cell[side];
+    for (int k = 0; k < count[c]; ++k)
+      if ((*side_distance[side])[k] < open_gap_) {
+        const int node = first[c] + k;
+        for (int i = 0; i < 3; ++i)
+          radius2 += area_weight_[node] * (positions_[node][i] - frame.centre[i]) *
+                     (positions_[node][i] - frame.centre[i]);
+      }
+  }
+  frame.radius = std::sqrt(std::max(radius2 / area, 1e-12));
+  return frame;
+}
+
+// w ψ_m at `point`, gap h: w = (1 − h/h_o)², ψ = 1, ξ, η, ξ², ξη, η² (zero beyond h_o).
+FilmDrainage::FilmFrame::Modes FilmDrainage::FilmFrame::faded_modes(const std::array<double, 3>& point, double h,
+                                                                    double open_gap) const {
+  Modes value{};
+  if (!(h < open_gap)) return value;
+  double xi = 0.0, eta = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    xi += (point[i] - centre[i]) * e1[i] / radius;
+    eta += (point[i] - centre[i]) * e2[i] / radius;
+  }
+  const double fade = (1.0 - h / open_gap) * (1.0 - h / open_gap);
+  value = {fade, fade * xi, fade * eta, fade * xi * xi, fade * xi * eta, fade * eta * eta};
+  return value;
+}
+
+// The deforming films (coupling/film_drainage.hpp): the modes Φ_j, the films' resistance Z,
+// the loads Φᵀ f, the stiffness Φᵀ K Φ by one action of K per mode, then q and the velocities.
+void FilmDrainage::deform_films(const std::vector<std::vector<double>>& distances,
+                                CellPopulation::ConstNodeVectors interpolated, CellPopulation::NodeVectors velocities,
+                                double dt, double velocity_scale, const CellStiffness* stiffness) {
+  constexpr int modes_per_film = FilmFrame::modes;
+  const int nodes = population_.num_nodes();
+  const int films = static_cast<int>(films_.size());
+  const int modes = modes_per_film * films;
+  const auto& first = population_.cell_first_node();
+  const auto& count = population_.cell_node_count();
+  const std::vector<std::array<double, 3>> normal = outward_normals();
+  // Φ_j per node (3 per node), Z block per film, and for the step's limit the film nodes'
+  // (mode j's opening rate, gap) pairs.
+  std::vector<std::vector<double>> shapes(modes, std::vector<double>(3 * nodes, 0.0));
+  Eigen::MatrixXd resistance = Eigen::MatrixXd::Zero(modes, modes);
+  struct RatePoint {
+    int film;
+    double gap;
+    FilmFrame::Modes rate;  // w ψ_m
+  };
+  std::vector<RatePoint> rate_points;
+  for (int film = 0; film < films; ++film) {
+    const int side_cell[2] = {films_[film].a, films_[film].b};
+    const std::vector<double>* side_distance[2] = {&distances[2 * film], &distances[2 * film + 1]};
+    const std::optional<FilmFrame> frame = film_frame(side_cell, side_distance, normal);
+    if (!frame) continue;
+    for (int side = 0; side < 2; ++side) {
+      const int c = side_cell[side];
+      const std::vector<double>& distance = *side_distance[side];
+      // Z from this side's patch, half of the film's.
+      std::vector<int> node_of;
+      const FilmPatch patch = film_patch(c, distance, &node_of);
+      std::vector<std::vector<double>> rates(modes_per_film, std::vector<double>(node_of.size(), 0.0));
+      for (std::size_t p = 0; p < node_of.size(); ++p) {
+        const auto value = frame->faded_modes(patch.points[p], patch.gap[p], open_gap_);
+        for (int m = 0; m < modes_per_film; ++m) rates[m][p] = value[m];
+      }
+      const auto side_resistance = squeeze_resistances(patch, viscosity_, open_gap_, rates);
+      for (int m = 0; m < modes_per_film; ++m)
+        for (int k = 0; k < modes_per_film; ++k)
+          resistance(modes_per_film * film + m, modes_per_film * film + k) += 0.5 * side_resistance[m][k];
+      // Φ: the film node and the nodes that follow it.
+      std::vector<FilmFrame::Modes> node_rate(count[c]);
+      std::vector<char> in_film(count[c], 0);
+      for (int k = 0; k < count[c]; ++k) {
+        const int node = first[c] + k;
+        const double h = std::max(distance[k], least_gap);
+        if (!(h < open_gap_)) continue;
+        in_film[k] = 1;
+        node_rate[k] = frame->faded_modes(positions_[node], h, open_gap_);
+        if (side == 0) rate_points.push_back({film, h, node_rate[k]});
+      }
+      for (int k = 0; k < count[c]; ++k) {
+        const int node = first[c] + k, followed = surface_node_[node];
+        if (followed < 0 || !in_film[followed - first[c]]) continue;
+        for (int m = 0; m < modes_per_film; ++m)
+          for (int i = 0; i < 3; ++i)
+            shapes[modes_per_film * film + m][3 * node + i] =
+                -0.5 * node_rate[followed - first[c]][m] * normal[followed][i];
+      }
+    }
+  }
+  // Q = Φᵀ f, and the stiffness Φᵀ K Φ.
+  Eigen::VectorXd loads = Eigen::VectorXd::Zero(modes);
+  for (int j = 0; j < modes; ++j)
+    for (int n = 0; n < nodes; ++n)
+      for (int i = 0; i < 3; ++i) loads[j] += shapes[j][3 * n + i] * forces_[n][i];
+  Eigen::MatrixXd system = resistance;
+  if (stiffness && modes > 0) {
+    CellPopulation::NodeVectors moves("rouleau::FilmDrainage::moves", nodes),
+        change("rouleau::FilmDrainage::change", nodes);
+    auto host_moves = Kokkos::create_mirror_view(moves);
+    Eigen::MatrixXd coupling(modes, modes);
+    for (int j = 0; j < modes; ++j) {
+      for (int n = 0; n < nodes; ++n)
+        for (int i = 0; i < 3; ++i) host_moves(n, i) = shapes[j][3 * n + i];
+      Kokkos::deep_copy(moves, host_moves);
+      stiffness->moves_force_change(moves, change);
+      const auto host_change = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), change);
+      for (int k = 0; k < modes; ++k) {
+        double sum = 0.0;
+        for (int n = 0; n < nodes; ++n)
+          for (int i = 0; i < 3; ++i) sum += shapes[k][3 * n + i] * host_change(n, i);
+        coupling(k, j) = sum;
+      }
+    }
+    system -= dt * 0.5 * (coupling + coupling.transpose());
+  }
+  // Solve in the span of Z's well-resolved combinations (per film: eigenvalues above 1e-8
+  // of the film's largest), which the stiffness then couples.
+  std::vector<Eigen::VectorXd> basis;
+  for (int film = 0; film < films; ++film) {
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(
+        resistance.block(modes_per_film * film, modes_per_film * film, modes_per_film, modes_per_film));
+    const double largest = eigen.eigenvalues().maxCoeff();
+    for (int m = 0; m < modes_per_film; ++m)
+      if (largest > 0.0 && eigen.eigenvalues()[m] > 1e-8 * largest) {
+        Eigen::VectorXd v = Eigen::VectorXd::Zero(modes);
+        v.segment(modes_per_film * film, modes_per_film) = eigen.eigenvectors().col(m);
+        basis.push_back(v);
+      }
+  }
+  Eigen::VectorXd speeds = Eigen::VectorXd::Zero(modes);
+  if (!basis.empty()) {
+    Eigen::MatrixXd u(modes, basis.size());
+    for (std::size_t b = 0; b < basis.size(); ++b) u.col(b) = basis[b];
+    const Eigen::MatrixXd reduced = u.transpose() * system * u;
+    speeds = u * reduced.fullPivLu().solve(u.transpose() * loads);
+  }
+  // The step's limit: |V_k| Δt ≤ h_k / 4 at every film node.
+  double excess = 1.0;
+  std::vector<double> mean_rate(films, 0.0), rate_count(films, 0.0);
+  for (const auto& point : rate_points) {
+    double rate = 0.0;
+    for (int m = 0; m < modes_per_film; ++m) rate += speeds[modes_per_film * point.film + m] * point.rate[m];
+    excess = std::max(excess, std::abs(rate) * dt / (0.25 * point.gap));
+    mean_rate[point.film] += rate;
+    rate_count[point.film] += 1.0;
+  }
+  speeds /= excess;
+  for (int film = 0; film < films; ++film) {
+    films_[film].load = loads[modes_per_film * film];
+    films_[film].resistance = resistance(modes_per_film * film, modes_per_film * film);
+    films_[film].opening_speed = rate_count[film] > 0.0 ? mean_rate[film] / rate_count[film] / excess : 0.0;
+  }
+  // v_n = I u (n) + Σ_j q_j Φ_j(n).
+  auto host_node_velocity = Kokkos::create_mirror_view(node_velocity_);
+  for (int n = 0; n < nodes; ++n)
+    for (int i = 0; i < 3; ++i) {
+      double sum = 0.0;
+      for (int j = 0; j < modes; ++j) sum += speeds[j] * shapes[j][3 * n + i];
+      host_node_velocity(n, i) = sum / velocity_scale;
+    }
+  Kokkos::deep_copy(node_velocity_, host_node_velocity);
+  add_node_velocities(interpolated, node_velocity_, velocities);
 }
 
 }  // namespace rouleau

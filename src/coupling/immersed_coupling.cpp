@@ -116,7 +116,8 @@ ImmersedCoupling::ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, C
     if (spans_ranks)
       throw std::invalid_argument(
           "rouleau::ImmersedCoupling: coupling.film_open_gap_um: the film model runs on one MPI rank");
-    films_ = std::make_unique<FilmDrainage>(population_, config.coupling.film_open_gap, config.fluid.viscosity);
+    films_ = std::make_unique<FilmDrainage>(population_, config.coupling.film_open_gap, config.fluid.viscosity,
+                                            config.coupling.film_model);
     state_.cell_velocities = NodeVectors("rouleau::ImmersedCoupling::cell_velocities", nodes);
   }
   fluid_load_ = Kokkos::View<double*>("rouleau::ImmersedCoupling::fluid_load", fluid.num_global_unknowns());
@@ -258,7 +259,8 @@ ImmersedCoupling::ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, C
   if (films_)
     stages_.push_back({film_stage, [this] {
                          films_->add_opening_velocities(state_.felt_forces, state_.interpolated,
-                                                        state_.cell_velocities, state_.dt, fluid_.scales().velocity);
+                                                        state_.cell_velocities, state_.dt, fluid_.scales().velocity,
+                                                        stiffness_.get());
                          return true;
                        }});
   // 5. Reads state_.cell_velocities; writes the cells' positions and velocities (their one

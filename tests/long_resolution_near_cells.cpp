@@ -130,8 +130,8 @@ TEST(ResolutionLong, AdhesiveStackInContactHoldsWithDeformingFilms) {
   // the films drain to contact: every rim gap ends below 0.01 μm. With β = 8/μm and the
   // depth for the same 1 μJ/m² (De = 1.8145 pN/μm³), whose repulsion between flat faces
   // peaks at 8.4 Pa against 3.1 Pa of attraction, the rims hold near the law's balance: every
-  // gap stays within [0.05, 0.1] μm. Measured: below 2e-4 μm at 0.2 s; 0.072-0.077 μm.
-  // About 9 min (the stiffer law samples 3 Gauss points per surface triangle).
+  // gap stays within [0.05, 0.1] μm. Measured: 7e-5 to 1.4e-4 μm at 0.2 s; 0.0716-0.0852 μm.
+  // 654 s on 2 threads (the stiffer law samples 3 Gauss points per surface triangle).
   const std::string contact =
       " --set coupling.film_open_gap_um=1.5 --set coupling.film_model=\"deforming\""
       " --set boundary.y_min.velocity_um_s=[-30,0,0] --set boundary.y_max.velocity_um_s=[30,0,0]"

@@ -34,9 +34,9 @@
 // Z the resistance matrix of Reynolds' equation for the modes' closing rates (the mean of
 // both sides' patches; cells/film_lubrication.hpp), f the forces the fluid felt and
 // K = ∂f/∂x the cells' stiffness about x^n, elastic and interaction (the semi-implicit
-// coupling's, coupling/cell_stiffness.hpp). The power of the loads Φᵀf · q is then what
-// the films dissipate plus the change of the cells' energy over the step, and the faces can
-// flatten against each other where the adhesion pulls them. The largest node rate is held
+// coupling's, coupling/cell_stiffness.hpp). So q minimizes ½ Δt qᵀZq + E(x^n + Δt Φq),
+// the films' dissipation over the step plus the cells' energy at its end (E to second
+// order, f = −∂E/∂x), and the faces can flatten against each other where an adhesion pulls. The largest node rate is held
 // to a quarter of the node's gap per step (all speeds scaled alike).
 //
 // Host-side (a few thousand surface nodes per pair), on the cells' current positions.

@@ -92,6 +92,8 @@ void FilmDrainage::find_followed_nodes() {
     }
   }
   node_velocity_ = Kokkos::View<double* [3]>("rouleau::FilmDrainage::node_velocity", population.num_nodes());
+  mode_moves_ = Kokkos::View<double* [3]>("rouleau::FilmDrainage::mode_moves", population.num_nodes());
+  mode_force_change_ = Kokkos::View<double* [3]>("rouleau::FilmDrainage::mode_force_change", population.num_nodes());
 }
 
 // Cell c's film patch: its outer-surface triangles whose nodes are all within twice the
@@ -398,8 +400,7 @@ void FilmDrainage::deform_films(const std::vector<std::vector<double>>& distance
       for (int i = 0; i < 3; ++i) loads[j] += shapes[j][3 * n + i] * forces_[n][i];
   Eigen::MatrixXd system = resistance;
   if (stiffness && modes > 0) {
-    CellPopulation::NodeVectors moves("rouleau::FilmDrainage::moves", nodes),
-        change("rouleau::FilmDrainage::change", nodes);
+    const CellPopulation::NodeVectors moves = mode_moves_, change = mode_force_change_;
     auto host_moves = Kokkos::create_mirror_view(moves);
     Eigen::MatrixXd coupling(modes, modes);
     for (int j = 0; j < modes; ++j) {

@@ -113,6 +113,8 @@ class FilmDrainage {
   std::vector<double> outward_;                   // per cell, +1 when its triangles face outward, else −1
   std::vector<int> surface_node_;                 // per node, the outer-surface node it follows (−1: none)
   Kokkos::View<double* [3]> node_velocity_;       // per node, the films' velocity
+  // Deforming films: a mode's node moves Φ_j and the force change K Φ_j (scratch).
+  Kokkos::View<double* [3]> mode_moves_, mode_force_change_;
   std::vector<std::array<double, 3>> positions_, forces_;  // this step's, on the host
 };
 

@@ -147,14 +147,13 @@ void FilmDrainage::add_opening_velocities(CellPopulation::ConstNodeVectors felt_
   for (std::size_t n = 0; n < x.extent(0); ++n) positions_[n] = {x(n, 0), x(n, 1), x(n, 2)};
   forces_.resize(f.extent(0));
   for (std::size_t n = 0; n < f.extent(0); ++n) forces_[n] = {f(n, 0), f(n, 1), f(n, 2)};
-  const auto patch = [&](int c, const std::vector<double>& distance) { return film_patch(c, distance, nullptr); };
   // T_c = −Σ f_i · n over c's nodes inside the film, n pointing to the other cell.
   const auto load = [&](int c, const std::vector<double>& distance, const std::array<double, 3>& n) {
     double sum = 0.0;
     for (int k = 0; k < count[c]; ++k)
       if (distance[k] < open_gap_) {
         const int node = first[c] + k;
-        sum -= f(node, 0) * n[0] + f(node, 1) * n[1] + f(node, 2) * n[2];
+        sum -= forces_[node][0] * n[0] + forces_[node][1] * n[1] + forces_[node][2] * n[2];
       }
     return sum;
   };
@@ -184,8 +183,8 @@ void FilmDrainage::add_opening_velocities(CellPopulation::ConstNodeVectors felt_
       }
       const std::array<double, 3> reversed{-n[0], -n[1], -n[2]};
       film.load = 0.5 * (load(a, from_a, n) + load(b, from_b, reversed));
-      const double resistance_a = squeeze_resistance(patch(a, from_a), viscosity_, open_gap_);
-      const double resistance_b = squeeze_resistance(patch(b, from_b), viscosity_, open_gap_);
+      const double resistance_a = squeeze_resistance(film_patch(a, from_a, nullptr), viscosity_, open_gap_);
+      const double resistance_b = squeeze_resistance(film_patch(b, from_b, nullptr), viscosity_, open_gap_);
       film.resistance = resistance_a > 0.0 && resistance_b > 0.0 ? 0.5 * (resistance_a + resistance_b)
                                                                  : std::max(resistance_a, resistance_b);
       if (film.resistance > 0.0) {

@@ -242,10 +242,10 @@ TEST(Scenes, StackInContactOpensWithTheFilmModelAndNotWithout) {
   // cases/stack_shear started in contact (centres 2.65 μm apart, rims 0.085 μm apart) at
   // 3.0 1/s without the interaction, coarse cells and h_f = 1.33 μm, 0.1 s (50 steps of
   // 2e-3 s). Without the film model the rim films, far thinner than the fluid resolves,
-  // stay as they are (the stack turns as one body); with it (open gap 1.5 μm) the load
-  // the sheared stack puts on them opens every one (coupling/film_drainage.hpp).
-  // Thresholds: with the model each gap grows by more than 0.005 μm; without, by less
-  // than 0.002 μm in either direction.
+  // stay as they are (the stack turns as one body); with it (open gap 1.5 μm), rigid or
+  // deforming films, the load the sheared stack puts on them opens every one
+  // (coupling/film_drainage.hpp). Thresholds: with either model each gap grows by more than
+  // 0.005 μm; without, by less than 0.002 μm in either direction.
   const std::string contact =
       " --set cell_kinds.normal.resolution=coarse --set domain.elements=[18,15,12] --set output.fields=false"
       " --set interaction.enabled=false --set time.end_s=0.1"
@@ -256,15 +256,21 @@ TEST(Scenes, StackInContactOpensWithTheFilmModelAndNotWithout) {
       " {kind=\"normal\", center_um=[0,3.975,0], orientation_deg=[90,0,0]}]'";
   const auto locked = run_scene("stack_shear", "_contact", contact);
   const auto films = run_scene("stack_shear", "_contact_films", contact + " --set coupling.film_open_gap_um=1.5");
+  const auto deforming = run_scene("stack_shear", "_contact_deforming",
+                                   contact + " --set coupling.film_open_gap_um=1.5 --set coupling.film_model=\"deforming\"");
   ASSERT_FALSE(locked.empty());
   ASSERT_FALSE(films.empty());
+  ASSERT_FALSE(deforming.empty());
   for (int c = 0; c < 3; ++c) {
     const std::string gap = "gap_" + std::to_string(c) + "_" + std::to_string(c + 1) + "_um";
     const double start = locked.front().at(gap);
     const double without = locked.back().at(gap) - start, with = films.back().at(gap) - films.front().at(gap);
-    std::printf("stack in contact, 3.0 1/s, 0.1 s: %s from %.4f um grows %.4f um with the film model, %.4f without\n",
-                gap.c_str(), start, with, without);
+    const double with_deforming = deforming.back().at(gap) - deforming.front().at(gap);
+    std::printf("stack in contact, 3.0 1/s, 0.1 s: %s from %.4f um grows %.4f um with rigid films, %.4f with deforming "
+                "films, %.4f without\n",
+                gap.c_str(), start, with, with_deforming, without);
     EXPECT_GT(with, 0.005) << gap;
+    EXPECT_GT(with_deforming, 0.005) << gap;
     EXPECT_LT(std::fabs(without), 0.002) << gap;
   }
 }

@@ -311,29 +311,58 @@ std::optional<FilmDrainage::FilmFrame> FilmDrainage::film_frame(
       }
   }
   frame.radius = std::sqrt(std::max(radius2 / area, 1e-12));
+  // The face modes' means over the film, weighed by area and fade, taken off them: they
+  // then move no net volume of plasma, which the opening mode alone does.
+  double weight = 0.0;
+  FilmFrame::Modes sum{};
+  for (int side = 0; side < 2; ++side) {
+    const int c = side_cell[side];
+    for (int k = 0; k < count[c]; ++k) {
+      const double h = (*side_distance[side])[k];
+      if (!(h < open_gap_)) continue;
+      const int node = first[c] + k;
+      const double w = area_weight_[node] * (1.0 - h / open_gap_) * (1.0 - h / open_gap_);
+      const FilmFrame::Modes psi = frame.shapes(positions_[node]);
+      weight += w;
+      for (int m = 1; m < FilmFrame::modes; ++m) sum[m] += w * psi[m];
+    }
+  }
+  if (weight > 0.0)
+    for (int m = 1; m < FilmFrame::modes; ++m) frame.mean[m] = sum[m] / weight;
   return frame;
 }
 
-// w ψ_m at `point`, gap h: w = (1 − h/h_o)², ψ = 1, ξ, η, ξ², ξη, η² (zero beyond h_o).
-FilmDrainage::FilmFrame::Modes FilmDrainage::FilmFrame::faded_modes(const std::array<double, 3>& point, double h,
-                                                                    double open_gap) const {
-  Modes value{};
-  if (!(h < open_gap)) return value;
+// ψ_m at `point`: 0 for the opening, then ξ, η, ξ², ξη, η².
+FilmDrainage::FilmFrame::Modes FilmDrainage::FilmFrame::shapes(const std::array<double, 3>& point) const {
   double xi = 0.0, eta = 0.0;
   for (int i = 0; i < 3; ++i) {
     xi += (point[i] - centre[i]) * e1[i] / radius;
     eta += (point[i] - centre[i]) * e2[i] / radius;
   }
+  return {0.0, xi, eta, xi * xi, xi * eta, eta * eta};
+}
+
+// A film's local rates at `point`, gap h: the opening's 1 and the face modes'
+// w (ψ_m − ψ̄_m), w = (1 − h/h_o)² (all zero beyond h_o).
+FilmDrainage::FilmFrame::Modes FilmDrainage::FilmFrame::local_rates(const std::array<double, 3>& point, double h,
+                                                                    double open_gap) const {
+  Modes value{};
+  if (!(h < open_gap)) return value;
   const double fade = (1.0 - h / open_gap) * (1.0 - h / open_gap);
-  value = {fade, fade * xi, fade * eta, fade * xi * xi, fade * xi * eta, fade * eta * eta};
+  const Modes psi = shapes(point);
+  value[0] = 1.0;
+  for (int m = 1; m < modes; ++m) value[m] = fade * (psi[m] - mean[m]);
   return value;
 }
 
-// The deforming films (coupling/film_drainage.hpp): the modes Φ_j, the films' resistance Z,
-// the loads Φᵀ f, the stiffness Φᵀ K Φ by one action of K per mode, then q and the velocities.
+// The deforming films (coupling/film_drainage.hpp): per film its opening mode (the two cells
+// moved apart as wholes along the film's axis) and five face modes; the films' resistance
+// Z, the loads Ψᵀ f, the stiffness Ψᵀ K Φ by one action of K per mode, then q and the
+// velocities.
 void FilmDrainage::deform_films(const std::vector<std::vector<double>>& distances,
                                 CellPopulation::ConstNodeVectors interpolated, CellPopulation::NodeVectors velocities,
                                 double dt, double velocity_scale, const CellStiffness* stiffness) {
+  // Per film: mode 0 the opening (rigid), modes 1..5 the faces' ξ, η, ξ², ξη, η².
   constexpr int modes_per_film = FilmFrame::modes;
   const int nodes = population_.num_nodes();
   const int films = static_cast<int>(films_.size());
@@ -341,14 +370,18 @@ void FilmDrainage::deform_films(const std::vector<std::vector<double>>& distance
   const auto& first = population_.cell_first_node();
   const auto& count = population_.cell_node_count();
   const std::vector<std::array<double, 3>> normal = outward_normals();
-  // Φ_j per node (3 per node), Z block per film, and for the step's limit the film nodes'
-  // (mode j's opening rate, gap) pairs.
+  // Φ_j per node (3 per node); per film its axis (from A to B), its fade w̄ and its local
+  // resistance Z_f over the rates (1, w ψ_1, ..., w ψ_5); per node the fade of the film it
+  // lies in (0 outside every film), which weighs the opening modes' loads; for the step's
+  // limit the film nodes' local rates and gaps.
   std::vector<std::vector<double>> shapes(modes, std::vector<double>(3 * nodes, 0.0));
-  Eigen::MatrixXd resistance = Eigen::MatrixXd::Zero(modes, modes);
+  std::vector<std::array<double, 3>> axis(films, {0.0, 0.0, 0.0});
+  std::vector<double> film_fade(films, 0.0), load_weight(nodes, 0.0);
+  std::vector<Eigen::MatrixXd> local_resistance(films, Eigen::MatrixXd::Zero(modes_per_film, modes_per_film));
   struct RatePoint {
     int film;
     double gap;
-    FilmFrame::Modes rate;  // w ψ_m
+    FilmFrame::Modes rate;  // 1, w ψ_1, ..., w ψ_5
   };
   std::vector<RatePoint> rate_points;
   for (int film = 0; film < films; ++film) {
@@ -356,22 +389,30 @@ void FilmDrainage::deform_films(const std::vector<std::vector<double>>& distance
     const std::vector<double>* side_distance[2] = {&distances[2 * film], &distances[2 * film + 1]};
     const std::optional<FilmFrame> frame = film_frame(side_cell, side_distance, normal);
     if (!frame) continue;
+    const auto& e1 = frame->e1;
+    const auto& e2 = frame->e2;
+    axis[film] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+    const double open_fraction = films_[film].smallest_gap / open_gap_;
+    film_fade[film] = (1.0 - open_fraction) * (1.0 - open_fraction);
     for (int side = 0; side < 2; ++side) {
       const int c = side_cell[side];
       const std::vector<double>& distance = *side_distance[side];
+      // The opening mode: every node of A by −½ axis, of B by +½ axis.
+      const double sign = side == 0 ? -0.5 : 0.5;
+      for (int n = first[c]; n < first[c] + count[c]; ++n)
+        for (int i = 0; i < 3; ++i) shapes[modes_per_film * film][3 * n + i] = sign * axis[film][i];
       // Z from this side's patch, half of the film's.
       std::vector<int> node_of;
       const FilmPatch patch = film_patch(c, distance, &node_of);
       std::vector<std::vector<double>> rates(modes_per_film, std::vector<double>(node_of.size(), 0.0));
       for (std::size_t p = 0; p < node_of.size(); ++p) {
-        const auto value = frame->faded_modes(patch.points[p], patch.gap[p], open_gap_);
+        const auto value = frame->local_rates(patch.points[p], patch.gap[p], open_gap_);
         for (int m = 0; m < modes_per_film; ++m) rates[m][p] = value[m];
       }
       const auto side_resistance = squeeze_resistances(patch, viscosity_, open_gap_, rates);
       for (int m = 0; m < modes_per_film; ++m)
-        for (int k = 0; k < modes_per_film; ++k)
-          resistance(modes_per_film * film + m, modes_per_film * film + k) += 0.5 * side_resistance[m][k];
-      // Φ: the film node and the nodes that follow it.
+        for (int k = 0; k < modes_per_film; ++k) local_resistance[film](m, k) += 0.5 * side_resistance[m][k];
+      // The face modes: the film node and the nodes that follow it.
       std::vector<FilmFrame::Modes> node_rate(count[c]);
       std::vector<char> in_film(count[c], 0);
       for (int k = 0; k < count[c]; ++k) {
@@ -379,29 +420,55 @@ void FilmDrainage::deform_films(const std::vector<std::vector<double>>& distance
         const double h = std::max(distance[k], least_gap);
         if (!(h < open_gap_)) continue;
         in_film[k] = 1;
-        node_rate[k] = frame->faded_modes(positions_[node], h, open_gap_);
+        load_weight[node] = std::max(load_weight[node], film_fade[film]);
+        node_rate[k] = frame->local_rates(positions_[node], h, open_gap_);
         if (side == 0) rate_points.push_back({film, h, node_rate[k]});
       }
       for (int k = 0; k < count[c]; ++k) {
         const int node = first[c] + k, followed = surface_node_[node];
         if (followed < 0 || !in_film[followed - first[c]]) continue;
-        for (int m = 0; m < modes_per_film; ++m)
+        for (int m = 1; m < modes_per_film; ++m)
           for (int i = 0; i < 3; ++i)
             shapes[modes_per_film * film + m][3 * node + i] =
                 -0.5 * node_rate[followed - first[c]][m] * normal[followed][i];
       }
     }
   }
-  // Q = Φᵀ f, and the stiffness Φᵀ K Φ.
+  // The local rates of film f from the speeds q: r_f = P_f q, its opening rate from every
+  // opening mode that moves one of its cells, r_f0 = Σ_g ((t_g(B_f) − t_g(A_f)) · axis_f) q_g0
+  // (t_g(c) = ∓½ axis_g for g's cells), and its own face modes.
+  std::vector<Eigen::MatrixXd> to_local(films, Eigen::MatrixXd::Zero(modes_per_film, modes));
+  const auto moves_cell = [&](int g, int c) {
+    const double sign = c == films_[g].a ? -0.5 : c == films_[g].b ? 0.5 : 0.0;
+    return std::array<double, 3>{sign * axis[g][0], sign * axis[g][1], sign * axis[g][2]};
+  };
+  for (int film = 0; film < films; ++film) {
+    for (int g = 0; g < films; ++g) {
+      const auto on_b = moves_cell(g, films_[film].b), on_a = moves_cell(g, films_[film].a);
+      double rate = 0.0;
+      for (int i = 0; i < 3; ++i) rate += (on_b[i] - on_a[i]) * axis[film][i];
+      to_local[film](0, modes_per_film * g) = rate;
+    }
+    for (int m = 1; m < modes_per_film; ++m) to_local[film](m, modes_per_film * film + m) = 1.0;
+  }
+  // Z = Σ_f P_fᵀ Z_f P_f.
+  Eigen::MatrixXd resistance = Eigen::MatrixXd::Zero(modes, modes);
+  for (int film = 0; film < films; ++film)
+    resistance += to_local[film].transpose() * local_resistance[film] * to_local[film];
+  // Ψ_j: Φ_j for a face mode; for an opening mode Φ_j on the films' nodes alone, each
+  // weighed by its film's fade, so its load is the force the films hold (w̄ T for a lone pair).
+  const auto load_shape = [&](int j, int n, int i) {
+    return j % modes_per_film == 0 ? load_weight[n] * shapes[j][3 * n + i] : shapes[j][3 * n + i];
+  };
+  // Q = Ψᵀ f, and the stiffness Ψᵀ K Φ.
   Eigen::VectorXd loads = Eigen::VectorXd::Zero(modes);
   for (int j = 0; j < modes; ++j)
     for (int n = 0; n < nodes; ++n)
-      for (int i = 0; i < 3; ++i) loads[j] += shapes[j][3 * n + i] * forces_[n][i];
+      for (int i = 0; i < 3; ++i) loads[j] += load_shape(j, n, i) * forces_[n][i];
   Eigen::MatrixXd system = resistance;
   if (stiffness && modes > 0) {
     const CellPopulation::NodeVectors moves = mode_moves_, change = mode_force_change_;
     auto host_moves = Kokkos::create_mirror_view(moves);
-    Eigen::MatrixXd coupling(modes, modes);
     for (int j = 0; j < modes; ++j) {
       for (int n = 0; n < nodes; ++n)
         for (int i = 0; i < 3; ++i) host_moves(n, i) = shapes[j][3 * n + i];
@@ -411,39 +478,35 @@ void FilmDrainage::deform_films(const std::vector<std::vector<double>>& distance
       for (int k = 0; k < modes; ++k) {
         double sum = 0.0;
         for (int n = 0; n < nodes; ++n)
-          for (int i = 0; i < 3; ++i) sum += shapes[k][3 * n + i] * host_change(n, i);
-        coupling(k, j) = sum;
+          for (int i = 0; i < 3; ++i) sum += load_shape(k, n, i) * host_change(n, i);
+        system(k, j) -= dt * sum;
       }
     }
-    system -= dt * 0.5 * (coupling + coupling.transpose());
   }
-  // Solve in the span of Z's well-resolved combinations (per film: eigenvalues above 1e-8
-  // of the film's largest), which the stiffness then couples.
-  std::vector<Eigen::VectorXd> basis;
-  for (int film = 0; film < films; ++film) {
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(
-        resistance.block(modes_per_film * film, modes_per_film * film, modes_per_film, modes_per_film));
-    const double largest = eigen.eigenvalues().maxCoeff();
-    for (int m = 0; m < modes_per_film; ++m)
-      if (largest > 0.0 && eigen.eigenvalues()[m] > 1e-8 * largest) {
-        Eigen::VectorXd v = Eigen::VectorXd::Zero(modes);
-        v.segment(modes_per_film * film, modes_per_film) = eigen.eigenvectors().col(m);
-        basis.push_back(v);
-      }
-  }
+  // Solve in the span of Z's well-resolved combinations (eigenvalues above 1e-10 of the
+  // largest), which the stiffness then couples.
   Eigen::VectorXd speeds = Eigen::VectorXd::Zero(modes);
-  if (!basis.empty()) {
-    Eigen::MatrixXd u(modes, basis.size());
-    for (std::size_t b = 0; b < basis.size(); ++b) u.col(b) = basis[b];
-    const Eigen::MatrixXd reduced = u.transpose() * system * u;
-    speeds = u * reduced.fullPivLu().solve(u.transpose() * loads);
+  if (modes > 0) {
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(resistance);
+    const double largest = eigen.eigenvalues().maxCoeff();
+    std::vector<int> kept;
+    for (int m = 0; m < modes; ++m)
+      if (largest > 0.0 && eigen.eigenvalues()[m] > 1e-10 * largest) kept.push_back(m);
+    if (!kept.empty()) {
+      Eigen::MatrixXd u(modes, kept.size());
+      for (std::size_t b = 0; b < kept.size(); ++b) u.col(b) = eigen.eigenvectors().col(kept[b]);
+      const Eigen::MatrixXd reduced = u.transpose() * system * u;
+      speeds = u * reduced.fullPivLu().solve(u.transpose() * loads);
+    }
   }
   // The step's limit: |V_k| Δt ≤ h_k / 4 at every film node.
+  std::vector<Eigen::VectorXd> local_speeds(films);
+  for (int film = 0; film < films; ++film) local_speeds[film] = to_local[film] * speeds;
   double excess = 1.0;
   std::vector<double> mean_rate(films, 0.0), rate_count(films, 0.0);
   for (const auto& point : rate_points) {
     double rate = 0.0;
-    for (int m = 0; m < modes_per_film; ++m) rate += speeds[modes_per_film * point.film + m] * point.rate[m];
+    for (int m = 0; m < modes_per_film; ++m) rate += local_speeds[point.film][m] * point.rate[m];
     excess = std::max(excess, std::abs(rate) * dt / (0.25 * point.gap));
     mean_rate[point.film] += rate;
     rate_count[point.film] += 1.0;
@@ -451,7 +514,7 @@ void FilmDrainage::deform_films(const std::vector<std::vector<double>>& distance
   speeds /= excess;
   for (int film = 0; film < films; ++film) {
     films_[film].load = loads[modes_per_film * film];
-    films_[film].resistance = resistance(modes_per_film * film, modes_per_film * film);
+    films_[film].resistance = local_resistance[film](0, 0);
     films_[film].opening_speed = rate_count[film] > 0.0 ? mean_rate[film] / rate_count[film] / excess : 0.0;
   }
   // v_n = I u (n) + Σ_j q_j Φ_j(n).

@@ -24,20 +24,30 @@
 // relative normal motion the fluid cannot carry; tangential sliding and rolling stay with
 // the fluid.
 //
-// Deforming films: the faces of each film move instead of the whole cells, by six smooth
-// modes ψ_m = 1, ξ, η, ξ², ξη, η² of the film's tangent coordinates (ξ, η about its centre,
-// in units of its rms radius): it may open, tilt and dish. Mode j moves side A's film node
-// k, and the nodes within the membrane's depth below it, by Φ_j = −½ w_k ψ_m(x_k) n_k (n_k
-// the node's outward normal, w_k = (1 − h_k/h_o)²; side B alike), and its speeds q solve
-// the backward-Euler balance of the films' squeeze resistance with the cells' forces,
-//     (Z − Δt Φᵀ K Φ) q = Φᵀ f,
-// Z the resistance matrix of Reynolds' equation for the modes' closing rates (the mean of
-// both sides' patches; cells/film_lubrication.hpp), f the forces the fluid felt and
+// Deforming films: each film opens as rigid films do, its two cells moved apart as wholes
+// along the film's axis, and its faces deform besides, by five smooth modes
+// ψ_m = ξ, η, ξ², ξη, η² of the film's tangent coordinates (ξ, η about its centre, in units
+// of its rms radius), each less its mean ψ̄_m over the film (weighed by area and w below) so
+// that it moves no net volume: the film may open, tilt and dish. The opening mode moves every node of A by
+// −½ a and of B by +½ a (a the film's axis, from A to B); face mode m moves side A's film node
+// k, and the nodes within the membrane's depth below it, by −½ w_k (ψ_m(x_k) − ψ̄_m) n_k (n_k the
+// node's outward normal, w_k = (1 − h_k/h_o)²; side B alike). With Φ the modes' node moves,
+// their speeds q solve the backward-Euler balance of the films' squeeze resistance with the
+// cells' forces,
+//     (Z − Δt Ψᵀ K Φ) q = Ψᵀ f,
+// Z the resistance matrix of Reynolds' equation for the films' local rates (1 and the
+// w (ψ_m − ψ̄_m): a film's opening rate gathers every opening mode that moves one of its cells; the
+// mean of both sides' patches; cells/film_lubrication.hpp), f the forces the fluid felt and
 // K = ∂f/∂x the cells' stiffness about x^n, elastic and interaction (the semi-implicit
-// coupling's, coupling/cell_stiffness.hpp). So q minimizes ½ Δt qᵀZq + E(x^n + Δt Φq),
-// the films' dissipation over the step plus the cells' energy at its end (E to second
-// order, f = −∂E/∂x), and the faces can flatten against each other where an adhesion pulls. The largest node rate is held
-// to a quarter of the node's gap per step (all speeds scaled alike).
+// coupling's, coupling/cell_stiffness.hpp). Ψ is Φ for the face modes, so for them q
+// minimizes ½ Δt qᵀZq + E(x^n + Δt Φq), the films' dissipation over the step plus the cells'
+// energy at its end (E to second order, f = −∂E/∂x). For an opening mode Ψ is its move on
+// the films' nodes alone, weighed by each film's fade w̄ = (1 − h_min/h_o)²: its load is the
+// force the film holds, w̄ T as rigid films read it, since the flow pulls on a locked film
+// through the plasma in it, which no energy of the cells' sees (a cell moved as a whole keeps
+// its elastic energy). The faces can flatten against each other where an adhesion pulls, and
+// the cells part where the flow pulls harder. The largest node rate is held to a quarter of
+// the node's gap per step (all speeds scaled alike).
 //
 // Host-side (a few thousand surface nodes per pair), on the cells' current positions.
 #include <array>
@@ -58,10 +68,10 @@ class FilmDrainage {
   struct Film {
     int a = 0, b = 0;
     double smallest_gap = 0.0;   // [μm]
-    double load = 0.0;           // T [pN], > 0 pulling open (deforming: the uniform mode's Φᵀ f)
-    double resistance = 0.0;     // ζ [pN·s/μm] (deforming: the uniform mode's Z)
+    double load = 0.0;           // T [pN], > 0 pulling open (deforming: the opening mode's Ψᵀ f, w̄ T)
+    double resistance = 0.0;     // ζ [pN·s/μm] (deforming: the film's Z for the opening rate 1)
     double opening_speed = 0.0;  // V [μm/s], after fading and the step's limit (deforming: the
-                                 // mean over A's film nodes)
+                                 // mean local rate over A's film nodes)
   };
 
   // `open_gap` [μm] > 0, `viscosity` [Pa·s].
@@ -81,13 +91,17 @@ class FilmDrainage {
   const std::vector<Film>& films() const { return films_; }
 
  private:
-  // A film's tangent frame and its modes (deforming films).
+  // A film's tangent frame and its local rates (deforming films).
   struct FilmFrame {
     static constexpr int modes = 6;
     using Modes = std::array<double, modes>;
     std::array<double, 3> centre{0.0, 0.0, 0.0}, e1{0.0, 0.0, 0.0}, e2{0.0, 0.0, 0.0};
     double radius = 1.0;  // rms radius [μm]
-    Modes faded_modes(const std::array<double, 3>& point, double h, double open_gap) const;
+    Modes mean{};         // the face modes' ψ̄_m over the film (area and fade weighed)
+    // ψ_m at a point (0 for the opening).
+    Modes shapes(const std::array<double, 3>& point) const;
+    // The local rates (the opening's 1, the face modes' w (ψ_m − ψ̄_m)) at a point of gap h.
+    Modes local_rates(const std::array<double, 3>& point, double h, double open_gap) const;
   };
   std::optional<FilmFrame> film_frame(const int (&side_cell)[2], const std::vector<double>* const (&side_distance)[2],
                                       const std::vector<std::array<double, 3>>& normal) const;

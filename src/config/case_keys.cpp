@@ -223,8 +223,9 @@ std::vector<CaseKey> make_case_keys() {
        "the sub-grid film model: films between cells thinner than this open or close at Reynolds' lubrication "
        "speed for the load they hold; 0: off"},
       {"coupling", "film_model", Kind::choice, "", "\"rigid\"", any, spellings<FilmModel>(),
-       "how films move the cells: rigid (each cell as a whole) or deforming (the films' faces, smoothly, implicit in "
-       "the cells' stiffness; needs scheme = \"semi_implicit\"; the one that runs with the interaction)"},
+       "how films move the cells: rigid (each cell as a whole) or deforming (the cells as wholes and the films' faces, "
+       "smoothly, implicit in the cells' stiffness; needs scheme = \"semi_implicit\"; the one that runs with the "
+       "interaction)"},
       {"scene", "skip_unneeded_stages", Kind::boolean, "", "true", any, {},
        "leave out the stages that cannot change the result; false runs them all"},
   };

@@ -21,6 +21,9 @@ using ExecSpace = Kokkos::DefaultExecutionSpace;
 constexpr double least_gap = 1e-3;
 // How deep below the outer surface a node follows its film [μm]: the shell's 0.36 μm and more.
 constexpr double membrane_depth = 0.6;
+// The fade w = (1 − h/h_o)² by which the model hands a film of gap h to the fluid as it
+// nears the open gap h_o.
+double fade(double h, double open_gap) { return (1.0 - h / open_gap) * (1.0 - h / open_gap); }
 // velocities = interpolated + node_velocity (a free function: CUDA's device lambdas may not
 // sit in a private member).
 void add_node_velocities(CellPopulation::ConstNodeVectors interpolated, Kokkos::View<const double* [3]> node_velocity,
@@ -188,9 +191,8 @@ void FilmDrainage::add_opening_velocities(CellPopulation::ConstNodeVectors felt_
       film.resistance = resistance_a > 0.0 && resistance_b > 0.0 ? 0.5 * (resistance_a + resistance_b)
                                                                  : std::max(resistance_a, resistance_b);
       if (film.resistance > 0.0) {
-        const double fade = (1.0 - smallest_gap / open_gap_) * (1.0 - smallest_gap / open_gap_);
         const double limit = 0.25 * smallest_gap / dt;
-        film.opening_speed = std::clamp(fade * film.load / film.resistance, -limit, limit);
+        film.opening_speed = std::clamp(fade(smallest_gap, open_gap_) * film.load / film.resistance, -limit, limit);
       }
       films_.push_back(film);
       normals.push_back(n);
@@ -321,7 +323,7 @@ std::optional<FilmDrainage::FilmFrame> FilmDrainage::film_frame(
       const double h = (*side_distance[side])[k];
       if (!(h < open_gap_)) continue;
       const int node = first[c] + k;
-      const double w = area_weight_[node] * (1.0 - h / open_gap_) * (1.0 - h / open_gap_);
+      const double w = area_weight_[node] * fade(h, open_gap_);
       const FilmFrame::Modes psi = frame.shapes(positions_[node]);
       weight += w;
       for (int m = 1; m < FilmFrame::modes; ++m) sum[m] += w * psi[m];
@@ -348,10 +350,10 @@ FilmDrainage::FilmFrame::Modes FilmDrainage::FilmFrame::local_rates(const std::a
                                                                     double open_gap) const {
   Modes value{};
   if (!(h < open_gap)) return value;
-  const double fade = (1.0 - h / open_gap) * (1.0 - h / open_gap);
+  const double w = fade(h, open_gap);
   const Modes psi = shapes(point);
   value[0] = 1.0;
-  for (int m = 1; m < modes; ++m) value[m] = fade * (psi[m] - mean[m]);
+  for (int m = 1; m < modes; ++m) value[m] = w * (psi[m] - mean[m]);
   return value;
 }
 
@@ -392,8 +394,7 @@ void FilmDrainage::deform_films(const std::vector<std::vector<double>>& distance
     const auto& e1 = frame->e1;
     const auto& e2 = frame->e2;
     axis[film] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
-    const double open_fraction = films_[film].smallest_gap / open_gap_;
-    film_fade[film] = (1.0 - open_fraction) * (1.0 - open_fraction);
+    film_fade[film] = fade(films_[film].smallest_gap, open_gap_);
     for (int side = 0; side < 2; ++side) {
       const int c = side_cell[side];
       const std::vector<double>& distance = *side_distance[side];

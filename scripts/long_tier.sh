@@ -9,5 +9,5 @@ root_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 export OMP_NUM_THREADS="${OMP_NUM_THREADS:-$(nproc)}"
 start=$(date +%s)
 ctest --test-dir "${BUILD_DIR:-$root_dir/build}" -L long --output-on-failure -V "$@" |
-  grep -E "^[0-9]+: (capsule|small|published|Jeffery|plug|pair|contraction|\[ *(OK|FAILED) *\])|tests passed|Failure|Expected|Which is|actual|Test +#"
+  grep -E "^[0-9]+: (capsule|small|published|Jeffery|plug|pair|paper|stack|contraction|\[ *(OK|FAILED) *\])|tests passed|Failure|Expected|Which is|actual|Test +#"
 echo "long tier: $(( $(date +%s) - start )) s on ${OMP_NUM_THREADS} threads"

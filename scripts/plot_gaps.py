@@ -1,12 +1,16 @@
 #!/usr/bin/python3
 """The gaps between neighbouring cells of a stack over one or more runs, side by side.
 
-    scripts/plot_gaps.py OUT.png [--shear-rate G] LABEL=RUN_DIR [LABEL=RUN_DIR]...   (split at the last "=")
+    scripts/plot_gaps.py OUT.png [--shear-rate G] [--separations] LABEL=RUN_DIR [LABEL=RUN_DIR]...
+                                                                           (split at the last "=")
 
 Draws every column gap_i_(i+1)_um of each run's diagnostics.csv (the least distance
 between neighbouring cells' outer surfaces) against time, or against the strain G t with
---shear-rate G [1/s], on a logarithmic axis (films of 1e-4 to a few um). One colour per
-run, one line style per pair. Needs matplotlib: run it with /usr/bin/python3.
+--shear-rate G [1/s], on a logarithmic axis (films of 1e-4 to a few um). With
+--separations it draws instead the change of each neighbour pair's vertical separation,
+the difference of their centroids' y less its first value, on a linear axis (the paper's
+Fig. 8: cells that "keep their vertical separations"). One colour per run, one line style
+per pair. Needs matplotlib: run it with /usr/bin/python3.
 """
 import csv
 import os
@@ -27,6 +31,9 @@ def main():
     if args and args[0] == "--shear-rate":
         shear_rate = float(args[1])
         args = args[2:]
+    separations = bool(args) and args[0] == "--separations"
+    if separations:
+        args = args[1:]
     if not args:
         sys.exit(__doc__)
     fig, ax = plt.subplots(figsize=(7.5, 4.2))
@@ -38,12 +45,20 @@ def main():
         t = [float(r["time_s"]) * (shear_rate or 1.0) for r in rows]
         pairs = sorted(k for k in rows[0] if k.startswith("gap_") and int(k.split("_")[2]) == int(k.split("_")[1]) + 1)
         for i, column in enumerate(pairs):
-            gaps = [max(float(r[column]), 1e-5) for r in rows]
-            ax.plot(t, gaps, styles[i % len(styles)], color=f"C{colour}", lw=1.4,
-                    label=f"{label}: cells {column.split('_')[1]}-{column.split('_')[2]}")
-    ax.set_yscale("log")
+            a, b = column.split("_")[1:3]
+            if separations:
+                dy = [float(r[f"cell{b}_centroid_y_um"]) - float(r[f"cell{a}_centroid_y_um"]) for r in rows]
+                values = [d - dy[0] for d in dy]
+            else:
+                values = [max(float(r[column]), 1e-5) for r in rows]
+            ax.plot(t, values, styles[i % len(styles)], color=f"C{colour}", lw=1.4, label=f"{label}: cells {a}-{b}")
+    if separations:
+        ax.axhline(0.0, color="k", lw=0.6)
+        ax.set_ylabel("change of the vertical separation (µm)")
+    else:
+        ax.set_yscale("log")
+        ax.set_ylabel("gap between neighbouring cells (µm)")
     ax.set_xlabel("strain γ̇t" if shear_rate else "time (s)")
-    ax.set_ylabel("gap between neighbouring cells (µm)")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7, ncol=1, loc="best")
     fig.tight_layout()

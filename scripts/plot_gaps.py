@@ -27,13 +27,15 @@ def main():
     if len(args) < 2:
         sys.exit(__doc__)
     out = args.pop(0)
-    shear_rate = None
-    if args and args[0] == "--shear-rate":
-        shear_rate = float(args[1])
-        args = args[2:]
-    separations = bool(args) and args[0] == "--separations"
-    if separations:
-        args = args[1:]
+    shear_rate, separations = None, False
+    while args and args[0].startswith("--"):
+        option = args.pop(0)
+        if option == "--shear-rate" and args:
+            shear_rate = float(args.pop(0))
+        elif option == "--separations":
+            separations = True
+        else:
+            sys.exit(__doc__)
     if not args:
         sys.exit(__doc__)
     fig, ax = plt.subplots(figsize=(7.5, 4.2))

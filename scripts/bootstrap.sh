@@ -4,6 +4,7 @@
 #   scripts/bootstrap.sh            # Debian packages + Kokkos/KokkosKernels 3.4.01 if none is found
 #   scripts/bootstrap.sh --cuda     # the same with CUDA: Debian's CUDA 11.8 toolkit, Kokkos for sm_80
 #   scripts/bootstrap.sh --fuzz     # Debian packages and clang with libFuzzer only (scripts/fuzz.sh)
+#   scripts/bootstrap.sh --paraview # also ParaView and Xvfb, to render runs (scripts/reproduce_paper.sh)
 #   Kokkos_ROOT=/path scripts/bootstrap.sh   # use an existing Kokkos (Spack, modules, a site CUDA build)
 #
 # Debian packages come through apt (with sudo when not root). When no Kokkos is
@@ -27,11 +28,14 @@ deps="${ROULEAU_DEPS_DIR:-$root_dir/.deps}"
 jobs="${ROULEAU_JOBS:-$(nproc)}"
 cuda=0
 fuzz=0
+paraview=0
 for argument in "$@"; do
   case "$argument" in
     --cuda) cuda=1 ;;
     --fuzz) fuzz=1 ;;
-    *) printf 'bootstrap: unknown argument %s (usage: bootstrap.sh [--cuda | --fuzz])\n' "$argument" >&2; exit 2 ;;
+    --paraview) paraview=1 ;;
+    *) printf 'bootstrap: unknown argument %s (usage: bootstrap.sh [--cuda | --fuzz | --paraview])\n' "$argument" >&2
+       exit 2 ;;
   esac
 done
 prefix="$deps/install"
@@ -92,6 +96,9 @@ packages=(
 )
 # The fuzzing build: clang and its runtime libraries (libFuzzer, AddressSanitizer, UBSan).
 [ "$fuzz" = 1 ] && packages+=(clang libclang-rt-dev)
+# Pictures of runs: ParaView's pvpython under a virtual X server (Debian's ParaView has no
+# offscreen build).
+[ "$paraview" = 1 ] && packages+=(paraview python3-paraview xvfb)
 if [ "$cuda" = 1 ]; then
   packages+=(nvidia-cuda-toolkit g++-11 gcc-11)
   # The toolkit lives in contrib/non-free: add those components of this machine's own

@@ -77,6 +77,7 @@ TEST(RunFolder, NewRunRefusesAFileAndAFolderThatHoldsFiles) {
   const fs::path earlier = root / "earlier";
   write_text(earlier / "run.log", rouleau::run_log_first_line("00000000000000aa", "case a") + "\nmore\n");
   write_text(earlier / "diagnostics.csv", "step\n0\n");
+  write_text(earlier / "paper_checks.csv", "figure,statement,metric,value,relation,threshold,unit,met\n");
   write_text(earlier / "figures" / "gaps.png", "png");
   write_run_file(earlier / "fields_000010.h5", "00000000000000aa");
   write_text(earlier / "fields_cells.xdmf", "<Xdmf/>");

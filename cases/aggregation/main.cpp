@@ -5,6 +5,7 @@
 //   case_aggregation [CASE.toml] [--out DIR] [--set KEY=VALUE]... (the options of `rouleau run`)
 #include <cstdio>
 
+#include "analysis/paper_checks.hpp"
 #include "analysis/scene_checks.hpp"
 #include "io/diagnostics_reader.hpp"
 #include "run/run_case.hpp"
@@ -32,5 +33,6 @@ int main(int argc, char** argv) {
     std::printf("check (interaction off): final gap %.4f um %s %.2f x initial %.4f um: %s\n", check.final_gap,
                 check.open ? ">=" : "<", Check::open_fraction, check.initial_gap, check.open ? "open" : "CLOSED");
   }
+  rouleau::write_paper_checks(run.options.output_dir, rouleau::paper_rows(check, r0, run.config.interaction.enabled));
   return 0;
 }

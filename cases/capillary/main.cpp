@@ -5,6 +5,7 @@
 //   case_capillary [CASE.toml] [--out DIR] [--set KEY=VALUE]... (the options of `rouleau run`)
 #include <cstdio>
 
+#include "analysis/paper_checks.hpp"
 #include "analysis/scene_checks.hpp"
 #include "geometry/vessel_profile.hpp"
 #include "io/diagnostics_reader.hpp"
@@ -50,5 +51,6 @@ int main(int argc, char** argv) {
   else
     std::printf("check (inside, the capsule is longer than its free diameter): its centroid never entered the "
                 "capillary: NOT MET\n");
+  rouleau::write_paper_checks(run.options.output_dir, rouleau::paper_rows(c, entry, exit));
   return 0;
 }

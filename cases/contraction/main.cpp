@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/paper_checks.hpp"
 #include "analysis/scene_checks.hpp"
 #include "geometry/vessel_profile.hpp"
 #include "io/diagnostics_reader.hpp"
@@ -55,6 +56,7 @@ int main(int argc, char** argv) {
                 passage.smallest_volume_ratio, passage.smallest_volume_ratio_time,
                 passage.no_element_crushed ? "none crushed" : "CRUSHED",
                 rouleau::ContractionPassageCheck::crushed_volume_ratio);
+    rouleau::write_paper_checks(run.options.output_dir, rouleau::paper_rows(passage, kinds, throat_exit));
   }
   const auto& last = rows.back();
   const double inflow = last.at("flow_rate_inlet_um3_s"), outflow = last.at("flow_rate_outlet_um3_s");

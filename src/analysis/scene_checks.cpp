@@ -77,13 +77,14 @@ ContractionPassageCheck check_contraction_passage(const DiagnosticsRows& rows, c
       if (x[r] > throat_exit) check.passage_time[c] = time[r];
     check.final_position.push_back(x.back());
     check.passed.push_back(x.back() > throat_exit);
-    bool blocked = false;
-    if (!check.passed.back() && rows.size() >= 3) {
-      const double front = x.back() + 0.5 * diagnostics_value(rows.back(), cell + "_extent_x_um");
-      const double early = mean_speed(x, 0, first_end), late = mean_speed(x, last_begin, rows.size() - 1);
-      blocked = front >= throat_entry - ContractionPassageCheck::blocked_front_distance && early > 0.0 &&
-                late < ContractionPassageCheck::stalled_speed_fraction * early;
-    }
+    const double front = x.back() + 0.5 * diagnostics_value(rows.back(), cell + "_extent_x_um");
+    check.front_before_entry.push_back(throat_entry - front);
+    const double early = rows.size() >= 3 ? mean_speed(x, 0, first_end) : 0.0;
+    const double late = rows.size() >= 3 ? mean_speed(x, last_begin, rows.size() - 1) : 0.0;
+    check.late_speed_ratio.push_back(early > 0.0 ? late / early : INFINITY);
+    const bool blocked = !check.passed.back() && rows.size() >= 3 &&
+                         check.front_before_entry.back() <= ContractionPassageCheck::blocked_front_distance &&
+                         check.late_speed_ratio.back() < ContractionPassageCheck::stalled_speed_fraction;
     check.blocked.push_back(blocked);
     if (kinds[c] == "sickle") {
       ++check.sickle_cells;
@@ -196,62 +197,47 @@ StackMeasures measure_stack(const DiagnosticsRows& rows, int cells, int cells_pe
   return m;
 }
 
-namespace {
-
-// "NAME VALUE OP THRESHOLD UNIT: yes" (or NO), and whether it holds.
-struct Against {
-  std::string text;
-  bool holds;
-};
-Against against(const char* name, double value, const char* op, double threshold, const char* unit) {
-  const bool holds = op[0] == '<' ? value < threshold : value > threshold;
-  char text[160];
-  std::snprintf(text, sizeof(text), "%s %.4f %s %.4g %s: %s", name, value, op, threshold, unit, holds ? "yes" : "NO");
-  return {text, holds};
-}
-
-}  // namespace
-
 StackStatement check_stack_statement(const StackMeasures& m, double shear_rate, bool interaction,
                                      double zero_force_length, int columns) {
   StackStatement result;
-  std::vector<Against> parts;
+  std::vector<PaperMeasure> parts;
   if (!interaction) {
     result.figure = "Fig. 8";
     result.statement = "no interaction: the cells keep their vertical separations";
     result.required_strain = 0.25 * 4.0;
-    parts.push_back(against("largest separation change", m.largest_separation_change, "<", 0.5, "um"));
+    parts.push_back(measure_against("largest separation change", m.largest_separation_change, "<", 0.5, "um"));
   } else if (shear_rate <= 0.3) {
     result.figure = "Fig. 9";
     result.statement = "0.25 1/s: the stack rotates as one body";
     result.required_strain = 0.25 * 4.0;
-    parts.push_back(against("largest gap growth", m.largest_gap_growth, "<", zero_force_length, "um (r0)"));
-    parts.push_back(against("|axis + inclination|", std::fabs(m.stack_axis_deg + m.mean_inclination_deg), "<", 10.0,
+    parts.push_back(measure_against("largest gap growth", m.largest_gap_growth, "<", zero_force_length, "um (r0)"));
+    parts.push_back(measure_against("|axis + inclination|", std::fabs(m.stack_axis_deg + m.mean_inclination_deg), "<", 10.0,
                             "deg"));
   } else if (shear_rate <= 1.0) {
     result.figure = "Fig. 10";
     result.statement = "0.5 1/s: the stack aligns with the flow and starts to separate";
     result.required_strain = 0.5 * 1.0;
-    parts.push_back(against("largest gap growth", m.largest_gap_growth, ">", zero_force_length, "um (r0)"));
-    parts.push_back(against("|mean inclination|", std::fabs(m.mean_inclination_deg), "<", 20.0, "deg"));
+    parts.push_back(measure_against("largest gap growth", m.largest_gap_growth, ">", zero_force_length, "um (r0)"));
+    parts.push_back(measure_against("|mean inclination|", std::fabs(m.mean_inclination_deg), "<", 20.0, "deg"));
   } else {
     const bool twelve = columns > 1;
     result.figure = twelve ? "Fig. 12" : "Fig. 11";
     result.statement = twelve ? "3.0 1/s: the aggregate breaks up into parallel layers"
                               : "3.0 1/s: the stack breaks up into parallel layers";
     result.required_strain = twelve ? 3.0 * 3.0 : 3.0 * 0.5;
-    parts.push_back(against("largest gap growth", m.largest_gap_growth, ">", zero_force_length, "um (r0)"));
-    parts.push_back(against("inclination spread", m.inclination_spread_deg, "<", 10.0, "deg"));
+    parts.push_back(measure_against("largest gap growth", m.largest_gap_growth, ">", zero_force_length, "um (r0)"));
+    parts.push_back(measure_against("inclination spread", m.inclination_spread_deg, "<", 10.0, "deg"));
   }
   result.strain = shear_rate * m.duration;
-  // The strain's threshold is reached within round-off of the last row's time.
-  const Against duration = against("strain", result.strain, ">", result.required_strain * (1.0 - 1e-6), "(the paper's)");
-  result.long_enough = duration.holds;
-  result.met = result.long_enough;
-  result.measured = duration.text;
-  for (const Against& part : parts) {
-    result.met = result.met && part.holds;
-    result.measured += ", " + part.text;
+  // The strain to 1e-6, so that the last row's time reaches the paper's within round-off.
+  const double strain = std::round(result.strain * 1e6) / 1e6;
+  result.measures.push_back(measure_against("strain", strain, ">=", result.required_strain, "(the paper's)"));
+  result.long_enough = result.measures.front().met;
+  result.measures.insert(result.measures.end(), parts.begin(), parts.end());
+  result.met = true;
+  for (const PaperMeasure& measure : result.measures) {
+    result.met = result.met && measure.met;
+    result.measured += (result.measured.empty() ? "" : ", ") + measure.text();
   }
   return result;
 }

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "analysis/paper_measure.hpp"
+
 namespace rouleau {
 
 using DiagnosticsRows = std::vector<std::map<std::string, double>>;
@@ -61,6 +63,10 @@ struct ContractionPassageCheck {
   std::vector<bool> blocked;         // per cell, at the last row
   std::vector<double> passage_time;  // [s] per cell, the first row with it past the exit; −1: never
   std::vector<double> final_position;  // [μm] per cell, its centroid's x at the last row
+  std::vector<double> front_before_entry;  // [μm] per cell, last row: the throat's entry minus the cell's
+                                           // front (centroid + half its x-extent); negative beyond it
+  std::vector<double> late_speed_ratio;    // per cell: its mean speed over the last quarter over that over
+                                           // the first (infinite when it did not move forward at first)
   double end_time = 0.0;             // [s]
   int normal_cells = 0;              // cells not of kind "sickle"
   int sickle_cells = 0;
@@ -170,7 +176,8 @@ struct StackStatement {
   double strain = 0.0;     // the run's: shear rate × duration
   double required_strain = 0.0;  // the paper's
   bool long_enough = false;
-  std::string measured;    // each measure against its threshold, "yes" or "NO" after each
+  std::vector<PaperMeasure> measures;  // the strain against the paper's, then each measure of the statement
+  std::string measured;    // the measures' text, joined by ", "
   bool met = false;        // long enough, and every measure within its threshold
 };
 StackStatement check_stack_statement(const StackMeasures& measures, double shear_rate, bool interaction,

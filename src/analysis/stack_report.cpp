@@ -14,7 +14,7 @@ int cells_per_column(const CaseConfig& config) {
   return count;
 }
 
-StackStatement print_stack_report(const CaseConfig& config, const DiagnosticsRows& rows) {
+std::vector<PaperCheckRow> print_stack_report(const CaseConfig& config, const DiagnosticsRows& rows) {
   const int cells = static_cast<int>(config.cells.size());
   const int per_column = cells_per_column(config);
   // A gap is reported between neighbours in the same column.
@@ -46,6 +46,7 @@ StackStatement print_stack_report(const CaseConfig& config, const DiagnosticsRow
   // The paper's statement for this run, as measures against thresholds.
   const StackStatement check =
       check_stack_statement(m, shear_rate, config.interaction.enabled, r0, cells / std::max(per_column, 1));
+  std::vector<PaperCheckRow> paper;
   if (rows.front().count("interaction_rim_share")) {
     // Fig. 7: where on the surfaces the interaction acts.
     const RimInteractionCheck rims = check_interaction_at_rims(rows);
@@ -57,10 +58,13 @@ StackStatement print_stack_report(const CaseConfig& config, const DiagnosticsRow
                 rims.density_ratio, RimInteractionCheck::least_density_ratio,
                 rims.density_ratio >= RimInteractionCheck::least_density_ratio ? "yes" : "NO", rims.area_share,
                 rims.met ? "met" : "NOT MET");
+    paper = paper_rows(rims, rims.smallest_share > 0.0);
   }
   std::printf("check (%s, %s): %s: %s\n", check.figure.c_str(), check.statement.c_str(), check.measured.c_str(),
               check.met ? "met" : (check.long_enough ? "NOT MET" : "NOT MET (the run is shorter than the paper's)"));
-  return check;
+  const std::vector<PaperCheckRow> stack = paper_rows(check);
+  paper.insert(paper.end(), stack.begin(), stack.end());
+  return paper;
 }
 
 }  // namespace rouleau

@@ -3,6 +3,7 @@
 // cases/twelve_cells, Fig. 12): each cell's inclination and the neighbour gaps within a
 // column over time, then the measures of the paper's statement for the run's shear rate
 // (measure_stack, check_stack_statement) and whether they meet its thresholds. Host-only.
+#include "analysis/paper_checks.hpp"
 #include "analysis/scene_checks.hpp"
 #include "config/case_config.hpp"
 
@@ -12,7 +13,8 @@ namespace rouleau {
 // columns one after the other, each bottom to top.
 int cells_per_column(const CaseConfig& config);
 
-// Prints the report to stdout and returns the statement it checked.
-StackStatement print_stack_report(const CaseConfig& config, const DiagnosticsRows& rows);
+// Prints the report to stdout and returns the rows of the paper's statements it checked
+// (Fig. 7 when the diagnostics hold the rims' share, then the stack's statement).
+std::vector<PaperCheckRow> print_stack_report(const CaseConfig& config, const DiagnosticsRows& rows);
 
 }  // namespace rouleau

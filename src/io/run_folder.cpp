@@ -21,13 +21,14 @@ constexpr const char* who = "rouleau::run_folder";
 // The first line of run.log starts with this, then the id, then ':'.
 constexpr const char* log_id_prefix = "rouleau run id ";
 
-// The names a run writes at the top of its folder: its log, resolved case, diagnostics,
-// the fields' XDMF and HDF5 files, each also as NAME.tmp while it is written; checkpoints/
-// holds checkpoint_SSSSSSSSS.h5 files, and figures/ the plot script's PNG files.
+// The names a run writes at the top of its folder: its log, resolved case, diagnostics, the
+// paper's checks (a case driver's, after the run), the fields' XDMF and HDF5 files, each
+// also as NAME.tmp while it is written; checkpoints/ holds checkpoint_SSSSSSSSS.h5 files,
+// and figures/ the plot and render scripts' PNG files.
 const std::regex& run_file_name() {
   static const std::regex name(
-      "(run\\.log|case\\.resolved\\.toml|diagnostics\\.csv|fields(_[A-Za-z0-9.-]+)?\\.xdmf|fields_mesh\\.h5|"
-      "fields_[0-9]{6,}\\.h5)(\\.tmp)?");
+      "(run\\.log|case\\.resolved\\.toml|diagnostics\\.csv|paper_checks\\.csv|fields(_[A-Za-z0-9.-]+)?\\.xdmf|"
+      "fields_mesh\\.h5|fields_[0-9]{6,}\\.h5)(\\.tmp)?");
   return name;
 }
 

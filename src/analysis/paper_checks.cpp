@@ -1,0 +1,123 @@
+#include "analysis/paper_checks.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "io/atomic_file.hpp"
+
+namespace rouleau {
+
+std::vector<PaperCheckRow> paper_rows(const AggregationCheck& check, double zero_force_length, bool interaction) {
+  if (!interaction) return {};
+  const std::string figure = "Fig. 6", statement = "two cells aggregate: the gap closes to the order of r0 and stays";
+  return {
+      {figure, statement,
+       measure_against("final gap", check.final_gap, "<", AggregationCheck::closed_gap_r0 * zero_force_length,
+                       "um (1.5 r0)")},
+      {figure, statement,
+       measure_against("gap's range over the run's last quarter", check.settled_gap_range, "<",
+                       AggregationCheck::settled_range_r0 * zero_force_length, "um (0.2 r0)")},
+  };
+}
+
+std::vector<PaperCheckRow> paper_rows(const RimInteractionCheck& check, bool forces_acted) {
+  if (!forces_acted) return {};
+  const std::string figure = "Fig. 7", statement = "the interaction forces act mainly at the rims";
+  return {
+      {figure, statement,
+       measure_against("the rims' smallest share of the interaction force", check.smallest_share, ">",
+                       RimInteractionCheck::least_share, "")},
+      {figure, statement,
+       measure_against("force per area at the rims over that elsewhere", check.density_ratio, ">=",
+                       RimInteractionCheck::least_density_ratio, "")},
+  };
+}
+
+std::vector<PaperCheckRow> paper_rows(const StackStatement& statement) {
+  std::vector<PaperCheckRow> rows;
+  for (const PaperMeasure& measure : statement.measures) rows.push_back({statement.figure, statement.statement, measure});
+  return rows;
+}
+
+std::vector<PaperCheckRow> paper_rows(const ContractionPassageCheck& check, const std::vector<std::string>& kinds,
+                                      double throat_exit) {
+  using Check = ContractionPassageCheck;
+  std::vector<PaperCheckRow> rows;
+  for (std::size_t c = 0; c < kinds.size(); ++c) {
+    const std::string cell = "cell " + std::to_string(c);
+    if (kinds[c] != "sickle") {
+      rows.push_back({"Fig. 14", "normal cells pass the throat",
+                      measure_against(cell + ": centroid's x at the end, past the throat's exit", check.final_position[c],
+                                      ">", throat_exit, "um")});
+      continue;
+    }
+    const std::string figure = "Fig. 15", statement = "sickle cells block the throat's entrance";
+    rows.push_back({figure, statement,
+                    measure_against(cell + ": centroid's x at the end, before the throat's exit", check.final_position[c],
+                                    "<=", throat_exit, "um")});
+    rows.push_back({figure, statement,
+                    measure_against(cell + ": its front's distance before the throat's entry",
+                                    check.front_before_entry[c], "<=", Check::blocked_front_distance, "um")});
+    rows.push_back({figure, statement,
+                    measure_against(cell + ": its speed over the last quarter over that over the first",
+                                    check.late_speed_ratio[c], "<", Check::stalled_speed_fraction, "")});
+  }
+  return rows;
+}
+
+std::vector<PaperCheckRow> paper_rows(const CapillaryPassageCheck& check, double entry, double exit) {
+  using Check = CapillaryPassageCheck;
+  std::vector<PaperCheckRow> rows;
+  rows.push_back({"Fig. 16", "inside the capillary the capsule is longer than its free diameter",
+                  measure_against("longest x-extent inside over the free one",
+                                  check.free_length > 0.0 ? check.longest_inside / check.free_length : 0.0, ">", 1.0,
+                                  "")});
+  const std::string figure = "Fig. 17",
+                    statement = "the driving pressure rises while the capsule plugs the capillary and falls after it leaves";
+  const double rise = check.peak_pressure - check.initial_pressure;
+  rows.push_back({figure, statement,
+                  measure_against("peak pressure's rise over the initial pressure",
+                                  check.initial_pressure > 0.0 ? rise / check.initial_pressure : 0.0, ">=",
+                                  Check::rise_fraction, "")});
+  rows.push_back({figure, statement,
+                  measure_against("capsule's centroid's distance from the capillary at the peak",
+                                  std::max({0.0, entry - check.peak_position, check.peak_position - exit}), "<=",
+                                  check.free_length, "um (a free diameter)")});
+  rows.push_back({figure, statement,
+                  measure_against("capsule's centroid at the end, past the exit", check.final_position, ">",
+                                  exit + 0.5 * check.free_length, "um")});
+  rows.push_back({figure, statement,
+                  measure_against("pressure's fall at the end over its rise",
+                                  rise > 0.0 ? (check.peak_pressure - check.final_pressure) / rise : 0.0, ">=",
+                                  Check::fall_fraction, "")});
+  return rows;
+}
+
+namespace {
+
+// A CSV field: quoted, with its quotes doubled.
+std::string quoted(const std::string& text) {
+  std::string field = "\"";
+  for (char c : text) field += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return field + "\"";
+}
+
+}  // namespace
+
+std::string paper_checks_csv(const std::vector<PaperCheckRow>& rows) {
+  std::string csv = "figure,statement,metric,value,relation,threshold,unit,met\n";
+  for (const PaperCheckRow& row : rows) {
+    char numbers[96];
+    std::snprintf(numbers, sizeof(numbers), "%.6g,%s,%.6g", row.measure.value, quoted(row.measure.relation).c_str(),
+                  row.measure.threshold);
+    csv += quoted(row.figure) + "," + quoted(row.statement) + "," + quoted(row.measure.metric) + "," + numbers + "," +
+           quoted(row.measure.unit) + "," + (row.measure.met ? "1" : "0") + "\n";
+  }
+  return csv;
+}
+
+void write_paper_checks(const std::string& run_dir, const std::vector<PaperCheckRow>& rows) {
+  write_file_atomically(run_dir + "/" + paper_checks_name, paper_checks_csv(rows));
+}
+
+}  // namespace rouleau

@@ -3,7 +3,7 @@
 
     DISPLAY=:N pvpython --disable-xdisplay-test scripts/render_fields.py RUN_DIR OUT.png
         [--time T] [--plasma-velocity magnitude|x|y|z] [--cell-field NAME]
-        [--view x|y|z] [--oblique] [--size W H]
+        [--view x|y|z] [--oblique] [--size W H] [--caption TEXT]
 
 Opens RUN_DIR/fields_fluid.xdmf and, when the case has cells, RUN_DIR/fields_cells.xdmf
 (the per-mesh files a run writes; docs/paraview.md) with ParaView's Xdmf3ReaderT, and
@@ -15,7 +15,7 @@ draws at time T (seconds; default: the last step written, otherwise the nearest 
     displacement_um, um, from the cells' shape as placed; also velocity_um_s,
     internal_force_pN, interaction_force_pN, or cell_id);
   - a colour bar for each, and a title: the case's name (the run's provenance), the time
-    and the case's description (case.resolved.toml).
+    and the case's description (case.resolved.toml), or --caption.
 --view z (default) looks along -z at the x-y plane (the shear plane of the shear cases),
 y along -y, x along -x (parallel projection); --oblique turns the camera 25 degrees about
 the vertical and 20 degrees up, to show the cells' thickness. Prints the path of the PNG.
@@ -54,6 +54,7 @@ def parse_arguments():
     parser.add_argument("--view", default="z", choices=["x", "y", "z"])
     parser.add_argument("--oblique", action="store_true")
     parser.add_argument("--size", type=int, nargs=2, default=[1400, 1000], metavar=("W", "H"))
+    parser.add_argument("--caption", help="the line below the title (default: the case's description)")
     return parser.parse_args()
 
 
@@ -202,7 +203,7 @@ def main():
     heading_display.FontSize = 30
     heading_display.Bold = 1
     heading_display.Color = INK
-    description = resolved_case_entry(run_dir, "description")
+    description = args.caption or resolved_case_entry(run_dir, "description")
     if description:  # a line below the title, at the same anchor
         subtitle_display = pv.Show(pv.Text(registrationName="description", Text="\n\n" + description), view)
         subtitle_display.WindowLocation = "Upper Center"

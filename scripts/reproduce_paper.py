@@ -140,7 +140,8 @@ def render_scene(scene, display):
         out = snapshot_path(scene['id'], seconds)
         command = ['pvpython', '--disable-xdisplay-test', os.path.join(ROOT, 'scripts', 'render_fields.py'),
                    run_dir(scene['id']), out, '--time', str(seconds), '--size', '900', '650',
-                   '--plasma-velocity', scene['plasma'], '--view', 'z' if view == 'oblique' else view]
+                   '--plasma-velocity', scene['plasma'], '--view', 'z' if view == 'oblique' else view,
+                   '--caption', scene['caption']]
         if view == 'oblique':
             command.append('--oblique')
         status = subprocess.call(command, env=dict(os.environ, DISPLAY=display.display),

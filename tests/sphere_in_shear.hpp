@@ -63,16 +63,18 @@ struct SphereInShear {
 
 // The sphere between walls `walls_apart` radii apart (the cube's side), `n` elements per
 // side, its mesh at `resolution` (a preset); the case file and the mesh cache go into
-// `folder`.
+// `folder`. With `subscale_velocity` false the sphere moves with u_h alone instead of the
+// default u_h + u' (coupling.subscale_velocity).
 inline SphereInShear run_sphere_in_shear(double walls_apart, int n, const std::string& folder,
-                                         const std::string& resolution = "coarse") {
+                                         const std::string& resolution = "coarse", bool subscale_velocity = true) {
   const double radius = 2.0, shear_rate = 1.0, side = walls_apart * radius;
   const std::string path = folder + "/sphere_in_shear.toml";
   std::ofstream(path) << shear_box(side, n, 0.5 * side * shear_rate)
                       << "[time]\ndt_s = 1.2e-5\nend_s = 1\n"
                          "[cell_kinds.ball]\nshape = \"sphere\"\nbody = \"filled\"\ndiameter_um = 4.0\n"
                          "shear_modulus_Pa = 50.0\nresolution = \"" << resolution << "\"\n"
-                         "[[cells]]\nkind = \"ball\"\ncenter_um = [0, 0, 0]\n";
+                         "[[cells]]\nkind = \"ball\"\ncenter_um = [0, 0, 0]\n"
+                         "[coupling]\nsubscale_velocity = " << (subscale_velocity ? "true" : "false") << "\n";
   Simulation simulation(load_case(path), folder + "/meshes");
   for (int step = 0; step < 30; ++step) simulation.advance();
   const auto& population = *simulation.cells().population;

@@ -68,7 +68,7 @@ TEST(PaperChecks, StackRowsAreTheStatementsMeasuresWithTheStrainFirst) {
   const auto met = rouleau::check_stack_statement(held, 0.25, true, 0.25);
   const auto rows = rouleau::paper_rows(met);
   ASSERT_EQ(rows.size(), 3u);  // strain, gap growth, |axis + inclination|
-  EXPECT_EQ(rows[0].measure.metric, "strain");
+  EXPECT_EQ(rows[0].measure.metric, "strain (threshold: the paper's)");
   EXPECT_DOUBLE_EQ(rows[0].measure.threshold, 1.0);
   for (const auto& row : rows) EXPECT_EQ(row.figure, "Fig. 9");
   EXPECT_TRUE(met.met);

@@ -90,13 +90,13 @@ TEST(SceneChecks, EachShearRateHasThePapersStatementWithItsThresholds) {
   EXPECT_FALSE(aggregate.met);
   EXPECT_TRUE(rouleau::check_stack_statement(twelve, 3.0, true, r0, 1).met);  // one column: Fig. 11, strain 1.5
   // Each measure is printed with the relation it was held to and whether it holds: a gap
-  // that closed by 0.88 um at 3.0 1/s reads "-0.8800 > 0.25 um (r0): NO".
+  // that closed by 0.88 um at 3.0 1/s reads "-0.8800 > 0.25 um: NO".
   rouleau::StackMeasures closed = parted;
   closed.largest_gap_growth = -0.88;
   closed.intact = true;
   const auto not_apart = rouleau::check_stack_statement(closed, 3.0, true, r0);
   EXPECT_FALSE(not_apart.met);
-  EXPECT_NE(not_apart.measured.find("largest gap growth -0.8800 > 0.25 um (r0): NO"), std::string::npos)
+  EXPECT_NE(not_apart.measured.find("largest gap growth (threshold r0) -0.8800 > 0.25 um: NO"), std::string::npos)
       << not_apart.measured;
   EXPECT_NE(not_apart.measured.find("inclination spread 2.0000 < 10 deg: yes"), std::string::npos)
       << not_apart.measured;

@@ -12,11 +12,11 @@ std::vector<PaperCheckRow> paper_rows(const AggregationCheck& check, double zero
   const std::string figure = "Fig. 6", statement = "two cells aggregate: the gap closes to the order of r0 and stays";
   return {
       {figure, statement,
-       measure_against("final gap", check.final_gap, "<", AggregationCheck::closed_gap_r0 * zero_force_length,
-                       "um (1.5 r0)")},
+       measure_against("final gap (threshold 1.5 r0)", check.final_gap, "<",
+                       AggregationCheck::closed_gap_r0 * zero_force_length, "um")},
       {figure, statement,
-       measure_against("gap's range over the run's last quarter", check.settled_gap_range, "<",
-                       AggregationCheck::settled_range_r0 * zero_force_length, "um (0.2 r0)")},
+       measure_against("gap's range over the run's last quarter (threshold 0.2 r0)", check.settled_gap_range, "<",
+                       AggregationCheck::settled_range_r0 * zero_force_length, "um")},
   };
 }
 
@@ -80,9 +80,9 @@ std::vector<PaperCheckRow> paper_rows(const CapillaryPassageCheck& check, double
                                   check.initial_pressure > 0.0 ? rise / check.initial_pressure : 0.0, ">=",
                                   Check::rise_fraction, "")});
   rows.push_back({figure, statement,
-                  measure_against("capsule's centroid's distance from the capillary at the peak",
+                  measure_against("capsule's centroid's distance from the capillary at the peak (threshold: its free length)",
                                   std::max({0.0, entry - check.peak_position, check.peak_position - exit}), "<=",
-                                  check.free_length, "um (a free diameter)")});
+                                  check.free_length, "um")});
   rows.push_back({figure, statement,
                   measure_against("capsule's centroid at the end, past the exit", check.final_position, ">",
                                   exit + 0.5 * check.free_length, "um")});

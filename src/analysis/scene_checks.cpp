@@ -210,14 +210,14 @@ StackStatement check_stack_statement(const StackMeasures& m, double shear_rate, 
     result.figure = "Fig. 9";
     result.statement = "0.25 1/s: the stack rotates as one body";
     result.required_strain = 0.25 * 4.0;
-    parts.push_back(measure_against("largest gap growth", m.largest_gap_growth, "<", zero_force_length, "um (r0)"));
+    parts.push_back(measure_against("largest gap growth (threshold r0)", m.largest_gap_growth, "<", zero_force_length, "um"));
     parts.push_back(measure_against("|axis + inclination|", std::fabs(m.stack_axis_deg + m.mean_inclination_deg), "<", 10.0,
                             "deg"));
   } else if (shear_rate <= 1.0) {
     result.figure = "Fig. 10";
     result.statement = "0.5 1/s: the stack aligns with the flow and starts to separate";
     result.required_strain = 0.5 * 1.0;
-    parts.push_back(measure_against("largest gap growth", m.largest_gap_growth, ">", zero_force_length, "um (r0)"));
+    parts.push_back(measure_against("largest gap growth (threshold r0)", m.largest_gap_growth, ">", zero_force_length, "um"));
     parts.push_back(measure_against("|mean inclination|", std::fabs(m.mean_inclination_deg), "<", 20.0, "deg"));
   } else {
     const bool twelve = columns > 1;
@@ -225,13 +225,13 @@ StackStatement check_stack_statement(const StackMeasures& m, double shear_rate, 
     result.statement = twelve ? "3.0 1/s: the aggregate breaks up into parallel layers"
                               : "3.0 1/s: the stack breaks up into parallel layers";
     result.required_strain = twelve ? 3.0 * 3.0 : 3.0 * 0.5;
-    parts.push_back(measure_against("largest gap growth", m.largest_gap_growth, ">", zero_force_length, "um (r0)"));
+    parts.push_back(measure_against("largest gap growth (threshold r0)", m.largest_gap_growth, ">", zero_force_length, "um"));
     parts.push_back(measure_against("inclination spread", m.inclination_spread_deg, "<", 10.0, "deg"));
   }
   result.strain = shear_rate * m.duration;
   // The strain to 1e-6, so that the last row's time reaches the paper's within round-off.
   const double strain = std::round(result.strain * 1e6) / 1e6;
-  result.measures.push_back(measure_against("strain", strain, ">=", result.required_strain, "(the paper's)"));
+  result.measures.push_back(measure_against("strain (threshold: the paper's)", strain, ">=", result.required_strain, ""));
   result.long_enough = result.measures.front().met;
   result.measures.insert(result.measures.end(), parts.begin(), parts.end());
   result.met = true;

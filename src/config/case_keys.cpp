@@ -216,7 +216,7 @@ std::vector<CaseKey> make_case_keys() {
        "a cell whose volume changed by more than this fraction stops the run as diverged"},
       {"coupling", "forces_in_stabilization", Kind::boolean, "", "false", any, {},
        "the spread forces' density enters SUPG/PSPG's strong residual"},
-      {"coupling", "subscale_velocity", Kind::boolean, "", "false", any, {},
+      {"coupling", "subscale_velocity", Kind::boolean, "", "true", any, {},
        "the cells move with u_h + u', u' PSPG's subscale velocity; not with forces_in_stabilization under "
        "semi_implicit"},
       {"coupling", "film_open_gap_um", Kind::number, "μm", "0", non_negative, {},

@@ -18,8 +18,8 @@ namespace {
 
 // A tiny graded, partly periodic box of hexahedra or of tetrahedra (the hexahedra cut in
 // six), with walls, a moving lid and a traction side.
-FluidMesh tiny_mesh(FluidElementType type) {
-  FluidMesh mesh = make_box_mesh({0.0, 0.0, 0.0}, {2.0, 1.0, 1.5}, {3, 3, 2}, {1.0, 2.0, 1.0}, {true, false, false});
+FluidMesh tiny_mesh(FluidElementType type, std::array<int, 3> elements = {3, 3, 2}) {
+  FluidMesh mesh = make_box_mesh({0.0, 0.0, 0.0}, {2.0, 1.0, 1.5}, elements, {1.0, 2.0, 1.0}, {true, false, false});
   return type == FluidElementType::tetrahedron4 ? split_into_tetrahedra(mesh) : mesh;
 }
 
@@ -35,7 +35,9 @@ struct TinyProblemOn {
   Vector history{"history", static_cast<size_t>(mesh.num_unknowns())};
   Vector force{"force", static_cast<size_t>(mesh.num_unknowns())};
 
-  TinyProblemOn(FluidElementType type, int convection, int viscous_reconstruction = 0) : mesh(tiny_mesh(type)) {
+  TinyProblemOn(FluidElementType type, int convection, int viscous_reconstruction = 0,
+                std::array<int, 3> elements = {3, 3, 2})
+      : mesh(tiny_mesh(type, elements)) {
     FluidCoefficients c;
     c.viscous_reconstruction = viscous_reconstruction;
     c.reynolds = 3.0;
@@ -195,6 +197,49 @@ TEST_P(FluidOperatorOn, SubscaleVelocityActionIsTheLinearPartOfTheSubscaleVeloci
                 reconstruction, KokkosBlas::nrm2(action), testing::relativeDifference(action, expected));
     EXPECT_GT(KokkosBlas::nrm2(action), 1e-3 * KokkosBlas::nrm2(at_state));  // not trivially zero
     testing::expectAllClose(action, expected, 1e-11, 1e-13);
+  }
+}
+
+TEST_P(FluidOperatorOn, SubscaleVelocityInItsRegionEqualsTheWholeMeshsAtTheRegionsNodes) {
+  // On a box of 8 x 6 x 6 elements, u' and its derivative computed on the two rings of
+  // elements around a few nodes (subscale_region_around) equal the whole mesh's at those
+  // nodes, with and without the projected viscous term, while the rings leave most
+  // elements out.
+  for (int reconstruction : {0, 1}) {
+    TinyProblem p(GetParam(), 1, reconstruction, {8, 6, 6});
+    const int n = p.mesh.num_unknowns();
+    const std::vector<int> picked{p.mesh.num_dof_nodes / 2, p.mesh.num_dof_nodes / 2 + 1, 3};
+    Kokkos::View<int*> nodes("nodes", picked.size());
+    auto h = Kokkos::create_mirror_view(nodes);
+    for (std::size_t i = 0; i < picked.size(); ++i) h(i) = picked[i];
+    Kokkos::deep_copy(nodes, h);
+    const SubscaleRegion region = p.op.subscale_region_around(nodes);
+    ASSERT_TRUE(region.restricted);
+    EXPECT_LT(region.elements.extent(0), static_cast<std::size_t>(p.mesh.num_elements) / 4);
+    // The second ring, whatever the coefficients (a run sets them after the region).
+    EXPECT_GT(region.gradient_elements.extent(0), region.elements.extent(0));
+    EXPECT_LT(region.gradient_elements.extent(0), static_cast<std::size_t>(p.mesh.num_elements));
+    Vector whole("whole", n), part("part", n), whole_action("whole_action", n), part_action("part_action", n);
+    p.op.subscale_velocity(p.state, whole);
+    p.op.subscale_velocity(p.state, part, region);
+    p.op.subscale_velocity_action(p.state, p.direction, whole_action);
+    p.op.subscale_velocity_action(p.state, p.direction, part_action, region);
+    const auto w = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), whole);
+    const auto q = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), part);
+    const auto wa = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), whole_action);
+    const auto qa = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), part_action);
+    double largest = 0.0;
+    for (int k = 0; k < n; ++k) largest = std::max({largest, std::fabs(w(k)), std::fabs(wa(k))});
+    for (int node : picked)
+      for (int i = 0; i < 3; ++i) {
+        const int k = 4 * node + i;
+        EXPECT_NEAR(q(k), w(k), 1e-13 * largest) << "node " << node << " component " << i;
+        EXPECT_NEAR(qa(k), wa(k), 1e-13 * largest) << "node " << node << " component " << i;
+      }
+    // Away from the nodes the region's result is zero or partial, not the whole mesh's.
+    int differ = 0;
+    for (int k = 0; k < n; ++k) differ += std::fabs(q(k) - w(k)) > 1e-9 * largest ? 1 : 0;
+    EXPECT_GT(differ, n / 4) << "reconstruction " << reconstruction;
   }
 }
 

@@ -116,6 +116,31 @@ TEST(PaperChecks, ContractionRowsFollowTheCellsKinds) {
   EXPECT_TRUE(all_met(paper));
 }
 
+TEST(PaperChecks, OutletRowsWantEveryCellSlowerAndThemCloser) {
+  rouleau::ContractionOutletCheck check;
+  check.cells = {0, 1};
+  check.throat_speed = {7.5, 8.0};
+  check.diffuser_speed = {5.0, 5.0};
+  check.spacing_ratio = 0.6;
+  auto rows = rouleau::paper_rows(check);
+  ASSERT_EQ(rows.size(), 3u);
+  for (const auto& row : rows) EXPECT_EQ(row.figure, "Fig. 14");
+  EXPECT_NEAR(rows[0].measure.value, 5.0 / 7.5, 1e-12);
+  EXPECT_TRUE(all_met(rows));
+  check.spacing_ratio = 1.8;  // not piled up
+  EXPECT_FALSE(all_met(rouleau::paper_rows(check)));
+  check.spacing_ratio = 0.6;
+  check.diffuser_speed[1] = 7.5;  // 7.5 / 8 = 0.94: not slower by a tenth
+  EXPECT_FALSE(all_met(rouleau::paper_rows(check)));
+  check.throat_speed[1] = 0.0;  // never crossed the throat
+  EXPECT_FALSE(rouleau::paper_rows(check)[1].measure.met);
+  // One normal cell: no spacing to measure, no row for it.
+  check.cells = {0};
+  check.throat_speed = {7.5};
+  check.diffuser_speed = {5.0};
+  EXPECT_EQ(rouleau::paper_rows(check).size(), 1u);
+}
+
 TEST(PaperChecks, CapillaryRowsAreMetExactlyWhenThePassageIs) {
   auto capsule_row = [](double x, double length, double pressure) {
     return std::map<std::string, double>{

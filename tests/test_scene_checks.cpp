@@ -170,6 +170,45 @@ TEST(SceneChecks, ContractionPassageWantsNormalCellsThroughAndSickleCellsHeld) {
   EXPECT_TRUE(rouleau::check_contraction_passage(rows, {"normal", "normal"}, 30.0, 40.0).no_element_crushed);
 }
 
+TEST(SceneChecks, ContractionOutletWantsCellsSlowerInTheDiffuserAndCloserAfterIt) {
+  // A throat from x = 30 to 40 um, a diffuser to 50 um; seven rows 1 s apart. Cells 0 and 1
+  // start 5 um apart; cell 2, a sickle cell, stays behind and does not count.
+  auto rows_of = [](const std::vector<double>& x0, const std::vector<double>& x1) {
+    DiagnosticsRows rows;
+    for (std::size_t r = 0; r < x0.size(); ++r)
+      rows.push_back({{"time_s", double(r)},
+                      {"cell0_centroid_x_um", x0[r]},
+                      {"cell1_centroid_x_um", x1[r]},
+                      {"cell2_centroid_x_um", 0.0}});
+    return rows;
+  };
+  const std::vector<std::string> kinds{"normal", "normal", "sickle"};
+  // Cell 0 crosses the throat from 30 (t = 2) to 45 (t = 4): 7.5 um/s; the diffuser from 40
+  // (t = 3) to 55 (t = 6): 5 um/s. Cell 1: 8 and 5 um/s. Both past 40 um first at t = 5,
+  // 50 and 41 um: 9 um apart against 5 at the start, not piled up.
+  const auto apart = rouleau::check_contraction_outlet(rows_of({10, 20, 30, 40, 45, 50, 55}, {5, 12, 19, 26, 33, 41, 46}),
+                                                       kinds, 30.0, 40.0, 50.0);
+  ASSERT_EQ(apart.cells.size(), 2u);
+  EXPECT_DOUBLE_EQ(apart.throat_speed[0], 7.5);
+  EXPECT_DOUBLE_EQ(apart.diffuser_speed[0], 5.0);
+  EXPECT_DOUBLE_EQ(apart.throat_speed[1], 8.0);
+  EXPECT_DOUBLE_EQ(apart.diffuser_speed[1], 5.0);
+  EXPECT_DOUBLE_EQ(apart.initial_spacing, 5.0);
+  EXPECT_DOUBLE_EQ(apart.time_all_passed, 5.0);
+  EXPECT_DOUBLE_EQ(apart.spacing_ratio, 9.0 / 5.0);
+  // Cell 0 nearly stops after the diffuser and cell 1 catches up: 3 um apart at t = 5.
+  const auto piled = rouleau::check_contraction_outlet(rows_of({10, 20, 30, 40, 44, 46, 47}, {5, 12, 19, 28, 36, 43, 47}),
+                                                       kinds, 30.0, 40.0, 50.0);
+  EXPECT_DOUBLE_EQ(piled.spacing_ratio, 3.0 / 5.0);
+  EXPECT_NEAR(piled.diffuser_speed[0], 7.0 / 3.0, 1e-12);  // 40 -> 47 over 3 s (never past 50)
+  // A cell that never reached the throat has no speed there, and nobody passed: no spacing.
+  const auto held = rouleau::check_contraction_outlet(rows_of({10, 20, 30, 40, 45, 50, 55}, {5, 6, 7, 8, 9, 10, 11}),
+                                                      kinds, 30.0, 40.0, 50.0);
+  EXPECT_DOUBLE_EQ(held.throat_speed[1], 0.0);
+  EXPECT_DOUBLE_EQ(held.time_all_passed, -1.0);
+  EXPECT_TRUE(std::isinf(held.spacing_ratio));
+}
+
 TEST(SceneChecks, CapillaryPassageRisesPlugsStretchesAndFalls) {
   // A capillary from x = 20 to 40 um; a capsule of free length 6 um.
   const DiagnosticsRows passage{capsule_row(7, 6.0, 1.6), capsule_row(18, 6.4, 2.5), capsule_row(30, 9.0, 4.0),

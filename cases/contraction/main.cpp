@@ -56,7 +56,20 @@ int main(int argc, char** argv) {
                 passage.smallest_volume_ratio, passage.smallest_volume_ratio_time,
                 passage.no_element_crushed ? "none crushed" : "CRUSHED",
                 rouleau::ContractionPassageCheck::crushed_volume_ratio);
-    rouleau::write_paper_checks(run.options.output_dir, rouleau::paper_rows(passage, kinds, throat_exit));
+    // Fig. 14 after the throat: slower in the diffuser, closer together at the outlet.
+    const double diffuser_exit = throat_exit + profile.diffuser_length;
+    const auto outlet = rouleau::check_contraction_outlet(rows, kinds, throat_entry, throat_exit, diffuser_exit);
+    for (std::size_t i = 0; i < outlet.cells.size(); ++i)
+      std::printf("cell %d: %.3f um/s across the throat, %.3f um/s across the diffuser\n", outlet.cells[i],
+                  outlet.throat_speed[i], outlet.diffuser_speed[i]);
+    if (outlet.time_all_passed >= 0.0)
+      std::printf("normal cells' neighbour spacing %.3f um at the start, %.3f um at t = %.3f s when the last passed "
+                  "the throat (ratio %.3f)\n",
+                  outlet.initial_spacing, outlet.spacing_after, outlet.time_all_passed, outlet.spacing_ratio);
+    auto paper = rouleau::paper_rows(passage, kinds, throat_exit);
+    const auto after = rouleau::paper_rows(outlet);
+    paper.insert(paper.end(), after.begin(), after.end());
+    rouleau::write_paper_checks(run.options.output_dir, paper);
   }
   const auto& last = rows.back();
   const double inflow = last.at("flow_rate_inlet_um3_s"), outflow = last.at("flow_rate_outlet_um3_s");

@@ -1,11 +1,16 @@
 #include "analysis/paper_checks.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "io/atomic_file.hpp"
 
 namespace rouleau {
+
+namespace {
+const char* const fig14_statement = "normal cells pass the throat, slow down in the diffuser and pile up at the outlet";
+}  // namespace
 
 std::vector<PaperCheckRow> paper_rows(const AggregationCheck& check, double zero_force_length, bool interaction) {
   if (!interaction) return {};
@@ -46,7 +51,7 @@ std::vector<PaperCheckRow> paper_rows(const ContractionPassageCheck& check, cons
   for (std::size_t c = 0; c < kinds.size(); ++c) {
     const std::string cell = "cell " + std::to_string(c);
     if (kinds[c] != "sickle") {
-      rows.push_back({"Fig. 14", "normal cells pass the throat",
+      rows.push_back({"Fig. 14", fig14_statement,
                       measure_against(cell + ": centroid's x at the end, past the throat's exit", check.final_position[c],
                                       ">", throat_exit, "um")});
       continue;
@@ -62,6 +67,25 @@ std::vector<PaperCheckRow> paper_rows(const ContractionPassageCheck& check, cons
                     measure_against(cell + ": its speed over the last quarter over that over the first",
                                     check.late_speed_ratio[c], "<", Check::stalled_speed_fraction, "")});
   }
+  return rows;
+}
+
+std::vector<PaperCheckRow> paper_rows(const ContractionOutletCheck& check) {
+  using Check = ContractionOutletCheck;
+  std::vector<PaperCheckRow> rows;
+  for (std::size_t i = 0; i < check.cells.size(); ++i) {
+    const double throat = check.throat_speed[i];
+    rows.push_back({"Fig. 14", fig14_statement,
+                    measure_against("cell " + std::to_string(check.cells[i]) +
+                                        ": its speed across the diffuser over that across the throat",
+                                    throat > 0.0 ? check.diffuser_speed[i] / throat : INFINITY, "<",
+                                    Check::slower_fraction, "")});
+  }
+  if (check.cells.size() >= 2)
+    rows.push_back({"Fig. 14", fig14_statement,
+                    measure_against("the normal cells' neighbour spacing when the last has passed the throat, over "
+                                    "the initial spacing",
+                                    check.spacing_ratio, "<", Check::closer_fraction, "")});
   return rows;
 }
 

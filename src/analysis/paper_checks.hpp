@@ -41,6 +41,11 @@ std::vector<PaperCheckRow> paper_rows(const StackStatement& statement);
 std::vector<PaperCheckRow> paper_rows(const ContractionPassageCheck& check, const std::vector<std::string>& kinds,
                                       double throat_exit);
 
+// Fig. 14 after the throat: each normal cell's diffuser speed over its throat speed below
+// slower_fraction, and with two or more normal cells their neighbour spacing when the last
+// has passed over the initial one below closer_fraction.
+std::vector<PaperCheckRow> paper_rows(const ContractionOutletCheck& check);
+
 // Fig. 16 (inside, the capsule is longer than its free diameter) and Fig. 17 (the driving
 // pressure rises while the capsule enters and falls after it leaves), for a capillary from
 // x = `entry` to `exit` [μm].

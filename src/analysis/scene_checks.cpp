@@ -106,6 +106,60 @@ ContractionPassageCheck check_contraction_passage(const DiagnosticsRows& rows, c
   return check;
 }
 
+namespace {
+
+// The mean speed along x of `x` (over `time`) while it crosses [start, end]: from the first
+// row at or past `start` to the first row past `end`, or the last row; 0 when it never
+// reached `start` or stayed in one row.
+double crossing_speed(const std::vector<double>& x, const std::vector<double>& time, double start, double end) {
+  std::size_t first = 0;
+  while (first < x.size() && x[first] < start) ++first;
+  if (first >= x.size()) return 0.0;
+  std::size_t last = first;
+  while (last + 1 < x.size() && x[last] <= end) ++last;
+  return time[last] > time[first] ? (x[last] - x[first]) / (time[last] - time[first]) : 0.0;
+}
+
+// The mean distance between neighbours of `positions` once sorted.
+double mean_neighbour_distance(std::vector<double> positions) {
+  std::sort(positions.begin(), positions.end());
+  return (positions.back() - positions.front()) / static_cast<double>(positions.size() - 1);
+}
+
+}  // namespace
+
+ContractionOutletCheck check_contraction_outlet(const DiagnosticsRows& rows, const std::vector<std::string>& kinds,
+                                                double throat_entry, double throat_exit, double diffuser_exit) {
+  if (rows.empty()) throw std::runtime_error("rouleau::check_contraction_outlet: no diagnostics rows");
+  ContractionOutletCheck check;
+  const std::vector<double> time = diagnostics_column(rows, "time_s");
+  std::vector<std::vector<double>> x;
+  for (std::size_t c = 0; c < kinds.size(); ++c) {
+    if (kinds[c] == "sickle") continue;
+    check.cells.push_back(static_cast<int>(c));
+    x.push_back(diagnostics_column(rows, "cell" + std::to_string(c) + "_centroid_x_um"));
+    check.throat_speed.push_back(crossing_speed(x.back(), time, throat_entry, throat_exit));
+    check.diffuser_speed.push_back(crossing_speed(x.back(), time, throat_exit, diffuser_exit));
+  }
+  if (x.size() < 2) return check;
+  std::vector<double> at(x.size());
+  for (std::size_t c = 0; c < x.size(); ++c) at[c] = x[c].front();
+  check.initial_spacing = mean_neighbour_distance(at);
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    bool all = true;
+    for (std::size_t c = 0; c < x.size(); ++c) {
+      at[c] = x[c][r];
+      all = all && x[c][r] > throat_exit;
+    }
+    if (!all) continue;
+    check.time_all_passed = time[r];
+    check.spacing_after = mean_neighbour_distance(at);
+    if (check.initial_spacing > 0.0) check.spacing_ratio = check.spacing_after / check.initial_spacing;
+    break;
+  }
+  return check;
+}
+
 CapillaryPassageCheck check_capillary_passage(const DiagnosticsRows& rows, double entry, double exit) {
   if (rows.empty()) throw std::runtime_error("rouleau::check_capillary_passage: no diagnostics rows");
   const std::vector<double> pressure = diagnostics_column(rows, "driving_pressure_Pa");

@@ -3,6 +3,7 @@
 // check reads a run's diagnostics (io/diagnostics_reader.hpp), measures the quantities the
 // paper's statement is about, and compares them with stated thresholds. Case drivers print
 // them; the reduced scenes in CI assert them. Host-only.
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -87,6 +88,31 @@ struct ContractionPassageCheck {
 };
 ContractionPassageCheck check_contraction_passage(const DiagnosticsRows& rows, const std::vector<std::string>& kinds,
                                                   double throat_entry, double throat_exit);
+
+// Normal cells after the throat (Liu et al. 2004, Fig. 14: "they decelerate in the diffuser
+// and pile up at the constriction's outlet"). The throat runs from x = `throat_entry` to
+// `throat_exit`, the diffuser from there to `diffuser_exit` [μm]. For each cell not of kind
+// "sickle": its mean speed along x while its centroid crosses the throat and while it
+// crosses the diffuser (from the first row at or past a section's start to the first row
+// past its end, or the last row; 0 when it never reached the section). A cell decelerates
+// when it crossed both and its diffuser speed is below slower_fraction of its throat speed.
+// Pile-up: at the first row where the last of these cells is past the throat's exit, the
+// mean x-distance between neighbours (the cells sorted by x) over that at the first row;
+// below closer_fraction the cells have piled up (infinite with fewer than two such cells or
+// when they never all passed).
+struct ContractionOutletCheck {
+  static constexpr double slower_fraction = 0.9;
+  static constexpr double closer_fraction = 0.9;
+  std::vector<int> cells;               // the normal cells' indices
+  std::vector<double> throat_speed;     // [μm/s] per normal cell
+  std::vector<double> diffuser_speed;   // [μm/s] per normal cell
+  double initial_spacing = 0.0;         // [μm] mean neighbour x-distance, first row
+  double spacing_after = 0.0;           // [μm] the same when the last one has passed
+  double spacing_ratio = INFINITY;      // spacing_after / initial_spacing
+  double time_all_passed = -1.0;        // [s]; −1: never
+};
+ContractionOutletCheck check_contraction_outlet(const DiagnosticsRows& rows, const std::vector<std::string>& kinds,
+                                                double throat_entry, double throat_exit, double diffuser_exit);
 
 // A capsule squeezing through a capillary along x from `entry` to `exit` [μm] (Liu et
 // al. 2004, Figs. 16-17): "the pressure rises while the capsule enters and plugs the

@@ -184,7 +184,12 @@ ImmersedCoupling::ImmersedCoupling(FluidSolver& fluid, const CaseCells& cells, C
                          state_.fluid_terms.cell_support_nodes =
                              shares_ ? fluid_.exchange().nodes_of_any_rank(rkpm_.support_nodes())
                                      : Kokkos::View<const int*>(rkpm_.support_nodes());
+                       // The cells read u' at their supports only: on one rank it is computed there.
+                       if (total_velocity_.extent(0) > 0 && !fluid_.exchange().spans_ranks())
+                         state_.fluid_terms.subscale_region =
+                             fluid_.fluid_operator().subscale_region_around(rkpm_.support_nodes());
                        state_.felt_terms.cell_support_nodes = state_.fluid_terms.cell_support_nodes;
+                       state_.felt_terms.subscale_region = state_.fluid_terms.subscale_region;
                        spread(state_.fsi_forces, fluid_load_);
                        // across ranks each rank counts its own cells' points
                        state_.corrected_points =

@@ -54,7 +54,7 @@ std::vector<std::array<double, 3>> FluidSolver::boundary_forces(const std::vecto
 
 void FluidSolver::total_velocity(const Vector& out, const ImmersedTerms& immersed) {
   load_immersed_forces(immersed);
-  operator_.subscale_velocity(state_, out);
+  operator_.subscale_velocity(state_, out, immersed.subscale_region);
   KokkosBlas::axpy(1.0, state_, out);
 }
 

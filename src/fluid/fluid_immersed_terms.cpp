@@ -50,9 +50,9 @@ void FluidSolver::add_immersed_stiffness(const ImmersedTerms& immersed, const Co
   if (immersed.stiffness_moves_with_subscale) {
     // c = x + u'(x) for the state, x + u'_x (τ frozen at the state) for a direction.
     if (argument == StiffnessArgument::state)
-      operator_.subscale_velocity(x, stiffness_carrier_);
+      operator_.subscale_velocity(x, stiffness_carrier_, immersed.subscale_region);
     else
-      operator_.subscale_velocity_action(state_, x, stiffness_carrier_);
+      operator_.subscale_velocity_action(state_, x, stiffness_carrier_, immersed.subscale_region);
     KokkosBlas::axpy(1.0, x, stiffness_carrier_);
     carrier = stiffness_carrier_;
   }

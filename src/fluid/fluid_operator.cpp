@@ -88,11 +88,21 @@ std::string BasicFluidOperator<ExecSpace>::stencil_unavailable_reason() const {
 
 template <class ExecSpace>
 void BasicFluidOperator<ExecSpace>::project_gradient(const ConstVector& state, const Vector& gradient) const {
+  project_gradient(state, gradient, SubscaleRegion{});
+}
+
+template <class ExecSpace>
+void BasicFluidOperator<ExecSpace>::project_gradient(const ConstVector& state, const Vector& gradient,
+                                                     const SubscaleRegion& subset) const {
   ProfilingRegion region("rouleau::FluidOperator::project_gradient");
   Scatter& scatter = zeroed_scatter(gradient_scatter_, gradient.extent(0), "rouleau::FluidOperator::gradient_scatter");
   visit_fluid_element(mesh_.element_type, [&](auto element) {
     FluidGradientProjectionFunctor<decltype(element), Scatter> f{element_data(), state, scatter, scatter, false};
-    for_each_element("rouleau::FluidOperator::project_gradient", f, scatter, gradient);
+    if (subset.restricted)
+      for_each_listed_element("rouleau::FluidOperator::project_gradient", f, subset.gradient_elements, scatter,
+                              gradient);
+    else
+      for_each_element("rouleau::FluidOperator::project_gradient", f, scatter, gradient);
   });
   auto mass = lumped_mass_;
   Kokkos::parallel_for(
@@ -171,32 +181,107 @@ void project_subscale_moments(const Kokkos::View<const double*>& lumped_mass, co
 }  // namespace
 
 template <class ExecSpace>
-void BasicFluidOperator<ExecSpace>::subscale_velocity(const ConstVector& state, const Vector& result) const {
+void BasicFluidOperator<ExecSpace>::subscale_velocity(const ConstVector& state, const Vector& result,
+                                                      const SubscaleRegion& subset) const {
   ProfilingRegion region("rouleau::FluidOperator::subscale_velocity");
-  if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_);
+  if (coefficients_.viscous_reconstruction) project_gradient(state, state_gradient_, subset);
   Scatter& scatter = zeroed_scatter(unknowns_scatter_, result.extent(0), "rouleau::FluidOperator::unknowns_scatter");
   const ConstVector load = immersed_load_in_stabilization_ ? immersed_load_ : ConstVector();
   visit_fluid_element(mesh_.element_type, [&](auto element) {
     FluidSubscaleFunctor<decltype(element), Scatter> f{
         element_data(), state, history_, body_force_, state_gradient_, load, lumped_mass_, scatter};
-    for_each_element("rouleau::FluidOperator::subscale_velocity", f, scatter, result);
+    if (subset.restricted)
+      for_each_listed_element("rouleau::FluidOperator::subscale_velocity", f, subset.elements, scatter, result);
+    else
+      for_each_element("rouleau::FluidOperator::subscale_velocity", f, scatter, result);
   });
   project_subscale_moments<ExecSpace>(lumped_mass_, dirichlet_dofs_, result);
 }
 
 template <class ExecSpace>
 void BasicFluidOperator<ExecSpace>::subscale_velocity_action(const ConstVector& state, const ConstVector& direction,
-                                                             const Vector& result) const {
+                                                             const Vector& result, const SubscaleRegion& subset) const {
   ProfilingRegion region("rouleau::FluidOperator::subscale_velocity_action");
   // The derivative needs the projected gradient of δ, not of U (FluidSubscaleActionFunctor).
-  if (coefficients_.viscous_reconstruction) project_gradient(direction, direction_gradient_);
+  if (coefficients_.viscous_reconstruction) project_gradient(direction, direction_gradient_, subset);
   Scatter& scatter = zeroed_scatter(unknowns_scatter_, result.extent(0), "rouleau::FluidOperator::unknowns_scatter");
   visit_fluid_element(mesh_.element_type, [&](auto element) {
     FluidSubscaleActionFunctor<decltype(element), Scatter> f{
         element_data(), state, direction, direction_gradient_, scatter};
-    for_each_element("rouleau::FluidOperator::subscale_velocity_action", f, scatter, result);
+    if (subset.restricted)
+      for_each_listed_element("rouleau::FluidOperator::subscale_velocity_action", f, subset.elements, scatter, result);
+    else
+      for_each_element("rouleau::FluidOperator::subscale_velocity_action", f, scatter, result);
   });
   project_subscale_moments<ExecSpace>(lumped_mass_, dirichlet_dofs_, result);
+}
+
+namespace {
+// Whether element e has a node flagged in `node_flags`.
+struct TouchesFlaggedNode {
+  Kokkos::View<const int**> element_nodes;
+  Kokkos::View<const int*> node_flags;
+  KOKKOS_INLINE_FUNCTION bool operator()(const int e) const {
+    for (int a = 0; a < static_cast<int>(element_nodes.extent(1)); ++a)
+      if (node_flags(element_nodes(e, a))) return true;
+    return false;
+  }
+};
+
+// The elements with a node flagged in `node_flags`, in ascending order.
+template <class ExecSpace>
+Kokkos::View<int*> elements_with_flagged_node(const Kokkos::View<const int**>& element_nodes,
+                                              const Kokkos::View<const int*>& node_flags, const char* label) {
+  const int elements = static_cast<int>(element_nodes.extent(0));
+  const TouchesFlaggedNode touches{element_nodes, node_flags};
+  int count = 0;
+  Kokkos::parallel_reduce(
+      "rouleau::FluidOperator::subscale_region::count", Kokkos::RangePolicy<ExecSpace>(0, elements),
+      KOKKOS_LAMBDA(const int e, int& sum) { sum += touches(e) ? 1 : 0; }, count);
+  Kokkos::View<int*> list(std::string(label), count);
+  Kokkos::parallel_scan(
+      "rouleau::FluidOperator::subscale_region::list", Kokkos::RangePolicy<ExecSpace>(0, elements),
+      KOKKOS_LAMBDA(const int e, int& offset, const bool final) {
+        if (!touches(e)) return;
+        if (final) list(offset) = e;
+        ++offset;
+      });
+  return list;
+}
+
+// node_flags(n) = 1 for every node of the listed elements.
+template <class ExecSpace>
+void flag_element_nodes(const Kokkos::View<const int**>& element_nodes, const Kokkos::View<const int*>& elements,
+                        const Kokkos::View<int*>& node_flags) {
+  const int per_element = static_cast<int>(element_nodes.extent(1));
+  Kokkos::parallel_for(
+      "rouleau::FluidOperator::subscale_region::flag_nodes", Kokkos::RangePolicy<ExecSpace>(0, elements.extent(0)),
+      KOKKOS_LAMBDA(const int i) {
+        for (int a = 0; a < per_element; ++a) node_flags(element_nodes(elements(i), a)) = 1;  // same value: no race
+      });
+}
+}  // namespace
+
+template <class ExecSpace>
+SubscaleRegion BasicFluidOperator<ExecSpace>::subscale_region_around(const Kokkos::View<const int*>& nodes) const {
+  if (node_sums_ && node_sums_->overlaps())
+    throw std::logic_error("rouleau::FluidOperator::subscale_region_around: the mesh spans ranks");
+  ProfilingRegion region("rouleau::FluidOperator::subscale_region_around");
+  const Kokkos::View<const int**> element_nodes = mesh_.element_dof_nodes;
+  Kokkos::View<int*> flags("rouleau::FluidOperator::subscale_region::node_flags", mesh_.num_dof_nodes);
+  Kokkos::parallel_for(
+      "rouleau::FluidOperator::subscale_region::flag_support", Kokkos::RangePolicy<ExecSpace>(0, nodes.extent(0)),
+      KOKKOS_LAMBDA(const int i) { flags(nodes(i)) = 1; });
+  SubscaleRegion subset;
+  subset.restricted = true;
+  subset.elements = elements_with_flagged_node<ExecSpace>(element_nodes, flags, "rouleau::FluidOperator::subscale_elements");
+  // Always, even when the coefficients set now have no viscous reconstruction: a solve's
+  // coefficients are set when it starts, after this (at a run's first step they are not
+  // set yet).
+  flag_element_nodes<ExecSpace>(element_nodes, subset.elements, flags);
+  subset.gradient_elements = elements_with_flagged_node<ExecSpace>(
+      element_nodes, flags, "rouleau::FluidOperator::subscale_gradient_elements");
+  return subset;
 }
 
 template <class ExecSpace>
@@ -339,6 +424,20 @@ void BasicFluidOperator<ExecSpace>::color_elements() const {
 // `target`, completed across ranks when there are ranks: then the boundary elements come
 // first, and their sums travel while the interior elements are summed (the protocol in
 // fluid/element_sum_exchange.hpp).
+template <class ExecSpace>
+template <class Functor>
+void BasicFluidOperator<ExecSpace>::for_each_listed_element(const char* label, const Functor& f,
+                                                            const Kokkos::View<const int*>& elements,
+                                                            const Scatter& scatter, const Vector& target) const {
+  if (node_sums_ && node_sums_->overlaps())
+    throw std::logic_error("rouleau::FluidOperator::for_each_listed_element: the mesh spans ranks");
+  await_copies();
+  Kokkos::parallel_for(
+      label, Kokkos::RangePolicy<ExecSpace>(0, elements.extent(0)), KOKKOS_LAMBDA(const int i) { f(elements(i)); });
+  gather_into(target, scatter);
+  complete_node_sums(target);
+}
+
 template <class ExecSpace>
 template <class Functor>
 void BasicFluidOperator<ExecSpace>::for_each_element(const char* label, const Functor& f, const Scatter& scatter,

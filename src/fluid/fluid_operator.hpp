@@ -16,6 +16,7 @@
 
 #include "fluid/element_sum_exchange.hpp"
 #include "fluid/fluid_matrix.hpp"
+#include "fluid/subscale_region.hpp"
 #include "fluid/uniform_box_stencil.hpp"
 #include "kernels/fluid_assembly.hpp"
 #include "mesh/fluid_mesh.hpp"
@@ -59,12 +60,19 @@ class BasicFluidOperator {
   void load_stabilization(const ConstVector& frozen, const ConstVector& load, const Vector& result) const;
   // result = PSPG's subscale velocity of `state` projected onto the nodes (scaled, velocity
   // entries; pressure entries and Dirichlet velocity entries 0): u'_a = −(1/m_a) ∫ N_a τ_M r,
-  // r the strong momentum residual with the current sources (FluidSubscaleFunctor).
-  void subscale_velocity(const ConstVector& state, const Vector& result) const;
+  // r the strong momentum residual with the current sources (FluidSubscaleFunctor). With a
+  // restricted `region` only its elements are visited: u' is exact at the nodes whose
+  // elements all lie in region.elements and partial elsewhere.
+  void subscale_velocity(const ConstVector& state, const Vector& result, const SubscaleRegion& region = {}) const;
   // result = its derivative along `direction` with τ frozen at `state`, projected the same
   // way (FluidSubscaleActionFunctor): the linear part of u' that the semi-implicit
-  // coupling's Jacobian needs when the cells move with u_h + u'.
-  void subscale_velocity_action(const ConstVector& state, const ConstVector& direction, const Vector& result) const;
+  // coupling's Jacobian needs when the cells move with u_h + u'. `region` as above.
+  void subscale_velocity_action(const ConstVector& state, const ConstVector& direction, const Vector& result,
+                                const SubscaleRegion& region = {}) const;
+  // The two rings of elements around `nodes` (dof nodes) that give u' exactly at them
+  // (fluid/subscale_region.hpp). On one rank only: across ranks the element loops' sums
+  // are completed over the whole mesh, and this throws std::logic_error.
+  SubscaleRegion subscale_region_around(const Kokkos::View<const int*>& nodes) const;
 
   // The sources of the residual: BDF history H and nodal body force f (scaled, node-
   // interleaved like the state; only the velocity entries are read). Empty = zero.
@@ -135,6 +143,12 @@ class BasicFluidOperator {
   Scatter& zeroed_scatter(Scatter& buffer, std::size_t size, const char* label) const;
   template <class Functor>
   void for_each_element(const char* label, const Functor& f, const Scatter& scatter, const Vector& target) const;
+  // The same over the elements in `elements` only (one rank).
+  template <class Functor>
+  void for_each_listed_element(const char* label, const Functor& f, const Kokkos::View<const int*>& elements,
+                               const Scatter& scatter, const Vector& target) const;
+  // G(state) as project_gradient, from the elements of `region` (all when not restricted).
+  void project_gradient(const ConstVector& state, const Vector& gradient, const SubscaleRegion& region) const;
   // target's element sums completed across ranks (node_sums_), when there are ranks
   void await_copies() const;
   void complete_node_sums(const Vector& target) const;

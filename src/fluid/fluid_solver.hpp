@@ -83,7 +83,8 @@ class FluidSolver {
   // The fluid's whole velocity u_h + u' (scaled, node-interleaved like the state; the
   // pressure entries are the state's): u' = −τ_M r, PSPG's subscale velocity at the
   // current state with the cells' `immersed` loads, projected onto the nodes
-  // (FluidOperator::subscale_velocity).
+  // (FluidOperator::subscale_velocity); exact only within immersed.subscale_region when it
+  // is restricted.
   void total_velocity(const Vector& out, const ImmersedTerms& immersed = {});
   // Volume average of the velocity [μm/s].
   std::array<double, 3> mean_velocity() const;

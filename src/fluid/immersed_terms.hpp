@@ -4,6 +4,7 @@
 // it between calls.
 #include <Kokkos_Core.hpp>
 
+#include "fluid/subscale_region.hpp"
 #include "solver/linear_operator.hpp"
 
 namespace rouleau {
@@ -27,6 +28,10 @@ struct ImmersedTerms {
   // coupling. The preconditioner does not see it.
   const LinearOperator* stiffness = nullptr;
   bool stiffness_moves_with_subscale = false;
+  // Where the cells read u' (their RKPM supports' two rings of elements, on one rank): the
+  // subscale velocity and its derivative are computed there only. Not restricted: the
+  // whole mesh.
+  SubscaleRegion subscale_region;
   // Across ranks: the global dof nodes the cells read and load (their RKPM supports,
   // ascending), where the stiffness's global vectors are replicated; empty: every node.
   Kokkos::View<const int*> cell_support_nodes;

@@ -15,8 +15,9 @@ the driver's printout goes to runs/paper/ID.out. Then, unless --no-render, it re
 scene's fields at its snapshot times with ParaView (scripts/render_fields.py under pvpython,
 starting a virtual X server when there is no display) into docs/images/paper/, and writes
   docs/paper_checks.csv  every measure of every statement: figure, statement, metric, value,
-                         relation, threshold, unit, met, scene (a statement whose scene has
-                         not finished has one row, metric "not measured", met 0);
+                         relation, threshold, unit, met, scene, build (the run's build; two
+                         joined by ';' when its segments differ); a statement whose scene
+                         has not finished has one row, metric "not measured", met 0;
   docs/paper.md          per statement: the paper's statement, the measures against their
                          thresholds, met or not, the run's settings and time, the pictures.
 --report-only writes the two files (and pictures) from the runs there are, running nothing.
@@ -27,6 +28,7 @@ import argparse
 import csv
 import datetime
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -173,6 +175,23 @@ def resolved_setting(scene_id, section, key):
         return None
 
 
+BUILD_LINE = re.compile(r'^rouleau \S+ \(([^)]+)\): ')
+
+
+def run_builds(scene_id):
+    """The build (version control hash) of each segment of the run, from its run.log."""
+    builds = []
+    try:
+        with open(os.path.join(run_dir(scene_id), 'run.log')) as log:
+            for line in log:
+                match = BUILD_LINE.match(line)
+                if match:
+                    builds.append(match.group(1))
+    except OSError:
+        pass
+    return builds
+
+
 def statement_rows(statement):
     """The measures that judge the statement: the scene's rows for its figure."""
     rows = scene_checks(statement['scene'])
@@ -193,17 +212,18 @@ def write_checks_csv(statements):
     path = os.path.join(ROOT, 'docs', 'paper_checks.csv')
     with open(path + '.tmp', 'w', newline='') as file:
         writer = csv.writer(file, quoting=csv.QUOTE_MINIMAL)
-        writer.writerow(CHECK_COLUMNS + ['scene'])
+        writer.writerow(CHECK_COLUMNS + ['scene', 'build'])
         for statement in statements:
             rows = statement_rows(statement)
+            build = ';'.join(sorted(set(run_builds(statement['scene']))))
             if not rows:
                 writer.writerow([statement['figure'], statement['statement'],
                                  'not measured' if rows is None else 'no measure written', '', '', '', '', 0,
-                                 statement['scene']])
+                                 statement['scene'], build])
                 continue
             for row in rows:
                 writer.writerow([statement['figure'], statement['statement']] +
-                                [row[column] for column in CHECK_COLUMNS[2:]] + [statement['scene']])
+                                [row[column] for column in CHECK_COLUMNS[2:]] + [statement['scene'], build])
     os.replace(path + '.tmp', path)
     return path
 
@@ -259,6 +279,17 @@ def write_markdown(scenes, statements):
         command = f"build/cases/{scene['driver']} --out runs/paper/{scene['id']}" + ''.join(
             f" --set '{setting}'" for setting in scene['settings'])
         lines += ['```sh', command, '```', '']
+        builds = run_builds(scene['id'])
+        if builds:
+            distinct = sorted(set(builds))
+            segments = f'{len(builds)} segment' + ('s' if len(builds) > 1 else '')
+            if len(distinct) == 1:
+                lines += [f"Run by build `{distinct[0]}` ({segments}, one binary).", '']
+            else:
+                lines += [f"**Run by {len(distinct)} different builds** ({segments}: "
+                          + ', '.join(f'`{build}`' for build in builds) + '): not one straight run.', '']
+        if statement.get('note'):
+            lines += [statement['note'].strip(), '']
         if rows is None:
             lines += ['Not run to its end yet.', '']
         elif not rows:

@@ -217,6 +217,15 @@ void BasicFluidOperator<ExecSpace>::subscale_velocity_action(const ConstVector& 
 }
 
 namespace {
+// Element functor f over the elements of a list: thread i runs f(elements(i)). (A functor,
+// not a lambda: CUDA takes no extended lambda in a class's private member.)
+template <class Functor>
+struct ListedElements {
+  Functor f;
+  Kokkos::View<const int*> elements;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const { f(elements(i)); }
+};
+
 // Whether element e has a node flagged in `node_flags`.
 struct TouchesFlaggedNode {
   Kokkos::View<const int**> element_nodes;
@@ -432,8 +441,8 @@ void BasicFluidOperator<ExecSpace>::for_each_listed_element(const char* label, c
   if (node_sums_ && node_sums_->overlaps())
     throw std::logic_error("rouleau::FluidOperator::for_each_listed_element: the mesh spans ranks");
   await_copies();
-  Kokkos::parallel_for(
-      label, Kokkos::RangePolicy<ExecSpace>(0, elements.extent(0)), KOKKOS_LAMBDA(const int i) { f(elements(i)); });
+  Kokkos::parallel_for(label, Kokkos::RangePolicy<ExecSpace>(0, elements.extent(0)),
+                       ListedElements<Functor>{f, elements});
   gather_into(target, scatter);
   complete_node_sums(target);
 }

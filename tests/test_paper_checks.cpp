@@ -12,6 +12,7 @@
 
 #include "analysis/paper_checks.hpp"
 #include "temporary_folder.hpp"
+#include "throat_passage_rows.hpp"
 
 namespace {
 
@@ -85,16 +86,9 @@ TEST(PaperChecks, StackRowsAreTheStatementsMeasuresWithTheStrainFirst) {
 }
 
 TEST(PaperChecks, ContractionRowsFollowTheCellsKinds) {
-  // As in SceneChecks.ContractionPassage...: a throat from x = 30 to 40 um; cell 0 passes,
-  // cell 1 stalls with its front 0.5 um before the entry.
-  DiagnosticsRows rows;
-  const double x0[5] = {10, 20, 35, 45, 55}, x1[5] = {10, 15, 25, 25.3, 25.5};
-  for (int r = 0; r < 5; ++r)
-    rows.push_back({{"time_s", double(r)},
-                    {"cell0_centroid_x_um", x0[r]},
-                    {"cell1_centroid_x_um", x1[r]},
-                    {"cell0_extent_x_um", 8.0},
-                    {"cell1_extent_x_um", 8.0}});
+  // A throat from x = 30 to 40 um; cell 0 passes, cell 1 stalls with its front 0.5 um
+  // before the entry.
+  const DiagnosticsRows rows = rouleau::testing::throat_passage_rows();
   for (const std::vector<std::string>& kinds : std::vector<std::vector<std::string>>{
            {"normal", "sickle"}, {"normal", "normal"}, {"sickle", "sickle"}, {"sickle", "normal"}}) {
     const auto check = rouleau::check_contraction_passage(rows, kinds, 30.0, 40.0);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "analysis/scene_checks.hpp"
+#include "throat_passage_rows.hpp"
 
 namespace {
 
@@ -119,14 +120,7 @@ TEST(SceneChecks, ContractionPassageWantsNormalCellsThroughAndSickleCellsHeld) {
   // Two cells (x-extent 8 um) and a throat from x = 30 to 40 um, five rows 1 s apart: cell
   // 0 passes at 3 s; cell 1 reaches the entrance (front at 29.5 um) and stalls there
   // (speed 5 um/s in the first quarter, 0.2 um/s in the last).
-  DiagnosticsRows rows;
-  const double x0[5] = {10, 20, 35, 45, 55}, x1[5] = {10, 15, 25, 25.3, 25.5};
-  for (int r = 0; r < 5; ++r)
-    rows.push_back({{"time_s", double(r)},
-                    {"cell0_centroid_x_um", x0[r]},
-                    {"cell1_centroid_x_um", x1[r]},
-                    {"cell0_extent_x_um", 8.0},
-                    {"cell1_extent_x_um", 8.0}});
+  DiagnosticsRows rows = rouleau::testing::throat_passage_rows();
   const auto normal = rouleau::check_contraction_passage(rows, {"normal", "normal"}, 30.0, 40.0);
   EXPECT_TRUE(normal.passed[0]);
   EXPECT_FALSE(normal.passed[1]);

@@ -240,14 +240,15 @@ struct TouchesFlaggedNode {
 // The elements with a node flagged in `node_flags`, in ascending order.
 template <class ExecSpace>
 Kokkos::View<int*> elements_with_flagged_node(const Kokkos::View<const int**>& element_nodes,
-                                              const Kokkos::View<const int*>& node_flags, const char* label) {
+                                              const Kokkos::View<const int*>& node_flags,
+                                              const Kokkos::View<int*>& buffer) {
   const int elements = static_cast<int>(element_nodes.extent(0));
   const TouchesFlaggedNode touches{element_nodes, node_flags};
   int count = 0;
   Kokkos::parallel_reduce(
       "rouleau::FluidOperator::subscale_region::count", Kokkos::RangePolicy<ExecSpace>(0, elements),
       KOKKOS_LAMBDA(const int e, int& sum) { sum += touches(e) ? 1 : 0; }, count);
-  Kokkos::View<int*> list(std::string(label), count);
+  const Kokkos::View<int*> list = Kokkos::subview(buffer, std::make_pair(0, count));
   Kokkos::parallel_scan(
       "rouleau::FluidOperator::subscale_region::list", Kokkos::RangePolicy<ExecSpace>(0, elements),
       KOKKOS_LAMBDA(const int e, int& offset, const bool final) {
@@ -277,19 +278,26 @@ SubscaleRegion BasicFluidOperator<ExecSpace>::subscale_region_around(const Kokko
     throw std::logic_error("rouleau::FluidOperator::subscale_region_around: the mesh spans ranks");
   ProfilingRegion region("rouleau::FluidOperator::subscale_region_around");
   const Kokkos::View<const int**> element_nodes = mesh_.element_dof_nodes;
-  Kokkos::View<int*> flags("rouleau::FluidOperator::subscale_region::node_flags", mesh_.num_dof_nodes);
+  // Persistent buffers (this runs every step): the node flags and the two element lists.
+  if (region_node_flags_.extent(0) == 0) {
+    region_node_flags_ = Kokkos::View<int*>("rouleau::FluidOperator::subscale_region::node_flags", mesh_.num_dof_nodes);
+    region_elements_ = Kokkos::View<int*>("rouleau::FluidOperator::subscale_elements", mesh_.num_elements);
+    region_gradient_elements_ =
+        Kokkos::View<int*>("rouleau::FluidOperator::subscale_gradient_elements", mesh_.num_elements);
+  }
+  const Kokkos::View<int*> flags = region_node_flags_;
+  Kokkos::deep_copy(flags, 0);
   Kokkos::parallel_for(
       "rouleau::FluidOperator::subscale_region::flag_support", Kokkos::RangePolicy<ExecSpace>(0, nodes.extent(0)),
       KOKKOS_LAMBDA(const int i) { flags(nodes(i)) = 1; });
   SubscaleRegion subset;
   subset.restricted = true;
-  subset.elements = elements_with_flagged_node<ExecSpace>(element_nodes, flags, "rouleau::FluidOperator::subscale_elements");
+  subset.elements = elements_with_flagged_node<ExecSpace>(element_nodes, flags, region_elements_);
   // Always, even when the coefficients set now have no viscous reconstruction: a solve's
   // coefficients are set when it starts, after this (at a run's first step they are not
   // set yet).
   flag_element_nodes<ExecSpace>(element_nodes, subset.elements, flags);
-  subset.gradient_elements = elements_with_flagged_node<ExecSpace>(
-      element_nodes, flags, "rouleau::FluidOperator::subscale_gradient_elements");
+  subset.gradient_elements = elements_with_flagged_node<ExecSpace>(element_nodes, flags, region_gradient_elements_);
   return subset;
 }
 

@@ -71,7 +71,8 @@ class BasicFluidOperator {
                                 const SubscaleRegion& region = {}) const;
   // The two rings of elements around `nodes` (dof nodes) that give u' exactly at them
   // (fluid/subscale_region.hpp). On one rank only: across ranks the element loops' sums
-  // are completed over the whole mesh, and this throws std::logic_error.
+  // are completed over the whole mesh, and this throws std::logic_error. The region views
+  // the operator's buffers: valid until the next call.
   SubscaleRegion subscale_region_around(const Kokkos::View<const int*>& nodes) const;
 
   // The sources of the residual: BDF history H and nodal body force f (scaled, node-
@@ -177,6 +178,8 @@ class BasicFluidOperator {
   // Persistent scatter buffers of the element loops (per-thread copies on CPUs, the
   // atomic target on GPUs), for results of the unknowns', gradients' and blocks' sizes.
   mutable Scatter unknowns_scatter_, gradient_scatter_, blocks_scatter_;
+  // subscale_region_around's buffers: node flags, and room for every element in each list.
+  mutable Kokkos::View<int*> region_node_flags_, region_elements_, region_gradient_elements_;
 };
 
 using FluidOperator = BasicFluidOperator<Kokkos::DefaultExecutionSpace>;

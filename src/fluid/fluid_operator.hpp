@@ -112,6 +112,10 @@ class BasicFluidOperator {
   // The lumped L2 projection of the velocity gradient of `state` onto the dof nodes:
   // gradient(9·node + 3i + j) = G_node,ij ≈ ∂_j u_i (scaled).
   void project_gradient(const ConstVector& state, const Vector& gradient) const;
+  // The same from the elements of `region` only (all when it is not restricted): exact at
+  // the nodes whose every element is in the region. Public because its division by the
+  // lumped mass is a device lambda, which CUDA forbids inside a private member.
+  void project_gradient(const ConstVector& state, const Vector& gradient, const SubscaleRegion& region) const;
 
   // Distributed runs: `sums` completes every vector of element sums
   // (node-interleaved, `components` per dof node: 1 lumped mass, 4 residuals and actions,
@@ -148,8 +152,6 @@ class BasicFluidOperator {
   template <class Functor>
   void for_each_listed_element(const char* label, const Functor& f, const Kokkos::View<const int*>& elements,
                                const Scatter& scatter, const Vector& target) const;
-  // G(state) as project_gradient, from the elements of `region` (all when not restricted).
-  void project_gradient(const ConstVector& state, const Vector& gradient, const SubscaleRegion& region) const;
   // target's element sums completed across ranks (node_sums_), when there are ranks
   void await_copies() const;
   void complete_node_sums(const Vector& target) const;

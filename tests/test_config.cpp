@@ -659,7 +659,7 @@ TEST(ConfigCells, OverridesReachKindsAndCells) {
 
 TEST(ConfigInteraction, DefaultsGiveTheStatedAdhesionEnergy) {
   // The default De makes flat faces at their balance gap h* = r0 − ln 2/β hold with an
-  // adhesion energy −2π ∫_{h*}^{r_c} φ(r) r dr = 1 μJ/m² = 1 pN/μm (midpoint rule; the
+  // adhesion energy −2π ∫_{h*}^{r_c} φ(r) r dr = 0.5 μJ/m² = 0.5 pN/μm (midpoint rule; the
   // unshifted law, as the calibration states it).
   const rouleau::MorseConfig m{};
   const double gap = m.zero_force_length - std::log(2.0) / m.beta;
@@ -671,7 +671,7 @@ TEST(ConfigInteraction, DefaultsGiveTheStatedAdhesionEnergy) {
     integral += m.well_depth * (e * e - 2.0 * e) * r * (m.cutoff - gap) / n;
   }
   std::printf("adhesion energy of the default Morse law: %.4f pN/um (uJ/m^2)\n", -2.0 * M_PI * integral);
-  EXPECT_NEAR(-2.0 * M_PI * integral, 1.0, 0.002);
+  EXPECT_NEAR(-2.0 * M_PI * integral, 0.5, 0.001);
   const auto kinds = rouleau::builtin_cell_kinds();
   EXPECT_EQ(kinds[0].morse_well_depth_factor, 1.0);
   EXPECT_EQ(kinds[1].morse_well_depth_factor, 5.0);  // sickle: stickier

@@ -169,13 +169,15 @@ struct CellPlacement {
 // The Morse law φ(r) = De [e^{2β(r0−r)} − 2 e^{β(r0−r)}] between two surfaces' points,
 // an energy per area per area. Defaults: r0 and the cut-off are the paper's; β = 4/μm
 // (> ln 2 / r0, so that flat faces balance at a positive gap h* = r0 − ln 2/β = 0.077 μm);
-// De calibrated as the paper did, on its four-cell stack (cases/stack_shear/
-// README.md): it holds at 0.25 1/s and comes apart at 0.5 1/s with this De and not with
-// 2.5 times it. It gives flat faces an adhesion energy of 1 μJ/m² = 1 pN/μm at h*
-// (−2π∫_{h*}^{r_c} φ r dr), the low end of Neu & Meiselman's 1–10 μJ/m² for
-// depletion-mediated aggregation; the paper's two-cell scene multiplies it by five.
+// De calibrated as the paper did, on its four-cell stack with the cells moving with
+// u_h + u' (cases/stack_shear/README.md): with this De the stack holds at 0.25 1/s to
+// the paper's 4 s and comes apart at 1 1/s; with twice it the chain of four pairs into
+// doublets by 4 s at 0.25 1/s. It gives flat faces an adhesion energy of 0.5 μJ/m² =
+// 0.5 pN/μm at h* (−2π∫_{h*}^{r_c} φ r dr), half the low end of Neu & Meiselman's
+// 1–10 μJ/m² for depletion-mediated aggregation; the paper's two-cell scene multiplies
+// it by five.
 struct MorseConfig {
-  double well_depth = 0.70476;       // De [pN/μm³ = pN·μm/μm⁴]   key well_depth_pN_um3
+  double well_depth = 0.35238;       // De [pN/μm³ = pN·μm/μm⁴]   key well_depth_pN_um3
   double beta = 4.0;                 // β [1/μm]                  key beta_per_um
   double zero_force_length = 0.25;   // r0 [μm]                   key zero_force_length_um
   double cutoff = 3.0;               // [μm]                      key cutoff_um

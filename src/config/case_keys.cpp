@@ -17,7 +17,7 @@ const Range count = Range::at_least(1);
 // The Morse law's keys, in [interaction] and in an [[interaction.pair]] entry (paper eq. 3).
 void add_morse_keys(std::vector<CaseKey>& keys, std::string_view section, bool pair) {
   const auto default_of = [&](std::string_view value) { return pair ? std::string_view("[interaction]'s") : value; };
-  keys.push_back({section, "well_depth_pN_um3", Kind::number, "pN/μm³", default_of("0.70476"), non_negative, {},
+  keys.push_back({section, "well_depth_pN_um3", Kind::number, "pN/μm³", default_of("0.35238"), non_negative, {},
                   "De: the well depth of φ(r) = De [e^{2β(r0−r)} − 2 e^{β(r0−r)}], an energy per area per area"});
   keys.push_back({section, "beta_per_um", Kind::number, "1/μm", default_of("4"), positive, {},
                   "β: the well's width; must be > ln 2 / r0, so that flat faces balance at a positive gap"});

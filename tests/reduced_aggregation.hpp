@@ -1,6 +1,6 @@
 #pragma once
 // The reduced two-cell aggregation that the restart and MPI tests run through the real
-// executable (semi-implicit, Morse on at five times the case's depth, coarse cells on a
+// executable (semi-implicit, Morse on at ten times the case's depth, 25 μJ/m², coarse cells on a
 // 12x12x10 box), 8.5e-5 s steps, one diagnostics row per step.
 #include <gtest/gtest.h>
 
@@ -27,7 +27,7 @@ std::vector<std::string> reduced_aggregation_arguments(const std::string& out, i
                                      std::to_string(threads), "--no-progress"};
   for (const char* setting : {"domain.elements=[12,12,10]", "cell_kinds.normal.resolution=coarse",
                               "coupling.scheme=semi_implicit", "time.dt_s=8.5e-5", "output.diagnostics_every_steps=1",
-                              "interaction.strength_multiplier=25"}) {
+                              "interaction.strength_multiplier=50"}) {
     arguments.push_back("--set");
     arguments.push_back(setting);
   }

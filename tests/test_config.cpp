@@ -562,11 +562,11 @@ TEST(ConfigCoupling, StableStepIsViscosityTimesElementOverMembraneModulus) {
 TEST(ConfigCoupling, MorseStiffnessBoundsTheStepOfInteractingCells) {
   // Two capsules with the interaction on: flat faces at the balance gap h* = r0 − ln2/β
   // stiffen as 8π β De h* (p(h) = 2π h φ(h)), a grid-scale modulus G = 8π β De h* h_f²;
-  // with De × 5 (the paper's two-cell scene) it sets the step, and sickle cells (De × 5
-  // per kind) five times more. One cell alone has no pair to bound.
+  // with De × 10 (twice the paper's two-cell scene's factor) it sets the step, and sickle
+  // cells (De × 5 per kind) five times more. One cell alone has no pair to bound.
   const std::vector<std::string> two_capsules{
       "cells=[{kind=\"capsule\", center_um=[20, 0, 10]}, {kind=\"capsule\", center_um=[20, 0, 17]}]",
-      "interaction.enabled=true", "interaction.strength_multiplier=5", "time.dt_s=1e-7"};
+      "interaction.enabled=true", "interaction.strength_multiplier=10", "time.dt_s=1e-7"};
   const CaseConfig config = rouleau::load_case(good_case, two_capsules);
   double h_f = 1e300;
   for (int d = 0; d < 3; ++d)
@@ -574,9 +574,9 @@ TEST(ConfigCoupling, MorseStiffnessBoundsTheStepOfInteractingCells) {
                                                           config.domain.elements[d], config.domain.wall_grading[d]));
   const rouleau::MorseConfig& law = config.interaction.morse;
   const double balance_gap = law.zero_force_length - std::log(2.0) / law.beta;
-  const double morse_modulus = 8.0 * M_PI * law.beta * 5.0 * law.well_depth * balance_gap * h_f * h_f;
+  const double morse_modulus = 8.0 * M_PI * law.beta * 10.0 * law.well_depth * balance_gap * h_f * h_f;
   const rouleau::DerivedQuantities derived = rouleau::derive_quantities(config);
-  std::printf("stable step with Morse x5: %.4g s (G_Morse %.4g pN/um at h_f %.3g um): %s\n", derived.stable_dt,
+  std::printf("stable step with Morse x10: %.4g s (G_Morse %.4g pN/um at h_f %.3g um): %s\n", derived.stable_dt,
               morse_modulus, h_f, derived.stable_dt_reason.c_str());
   const double expected = config.coupling.stable_step_factor * config.fluid.viscosity * h_f / morse_modulus;
   EXPECT_NEAR(derived.stable_dt, expected, 1e-14 * expected);

@@ -365,7 +365,7 @@ TEST(RunCase, SolverFailureStopsWithStepStageAndExitCode3) {
 }
 
 TEST(RunCase, VolumeDriftStopsTheRunNamingTheCellAndTheLastCheckpoint) {
-  // The reduced two-cell aggregation with five times its well depth (25 μJ/m²), explicit,
+  // The reduced two-cell aggregation with ten times its well depth (25 μJ/m²), explicit,
   // the cells moving with u_h (with u_h + u' this step holds), at ten times its stable step
   // (allowed on purpose): the cells' volumes swing by several per cent within a few steps. With a 2 %
   // tolerance the run must stop as diverged (exit 3) at the step that crossed it, naming
@@ -375,7 +375,7 @@ TEST(RunCase, VolumeDriftStopsTheRunNamingTheCellAndTheLastCheckpoint) {
                                 " --set domain.elements=[12,12,10] --set cell_kinds.normal.resolution=coarse"
                                 " --set output.fields=false --set time.end_s=0.00068 --set time.dt_s=8.5e-5"
                                 " --set coupling.allow_unstable_step=true --set coupling.volume_tolerance=0.02"
-                                " --set interaction.strength_multiplier=25 --set coupling.subscale_velocity=false");
+                                " --set interaction.strength_multiplier=50 --set coupling.subscale_velocity=false");
   EXPECT_EQ(o.exit_code, 3) << o.err;
   EXPECT_NE(o.err.find("stage move cells: cell "), std::string::npos) << o.err;
   EXPECT_NE(o.err.find("enclosed volume is"), std::string::npos) << o.err;

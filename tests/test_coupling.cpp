@@ -18,6 +18,7 @@
 
 #include "capsule_expectations.hpp"
 #include "sphere_in_shear.hpp"
+#include "analysis/scene_checks.hpp"
 #include "cells/cell_shape.hpp"
 #include "config/load_case.hpp"
 #include "coupling/cell_stiffness.hpp"
@@ -117,6 +118,40 @@ TEST(Coupling, TaylorDeformationIsMeasuredOnTheMembraneMidSurface) {
   const double mid_extent_x = 2.0 * mid_radius * std::hypot(m_xx, m_xy);
   EXPECT_GT(shape.extent[0], mid_extent_x - 0.03);
   EXPECT_LT(shape.extent[0], mid_extent_x + thickness + 0.03);
+  // Front and rear radii about the line along x through the centroid: the round shell has
+  // both at its outer radius a; with the nodes behind x = −0.3 a pushed out from the axis
+  // by 1.3 (a flared rear) the rear's is 1.3 a √(1 − 0.3²) = 1.24 a at most (less where no
+  // node sits at x = −0.3 a), the front's about a (the flare moves the centroid off the
+  // axis a little). Both equal a plain loop over the outer-surface nodes.
+  auto flared = host(cells.population->reference_positions());
+  cells.population->set_positions(flared);
+  const auto round = rouleau::shear_plane_shapes(*cells.population, cells.population->measures()).at(0);
+  for (std::size_t node = 0; node < flared.extent(0); ++node)
+    if (flared(node, 0) < -0.3 * outer_radius)
+      for (int k = 1; k < 3; ++k) flared(node, k) *= 1.3;
+  cells.population->set_positions(flared);
+  const auto flared_measures = cells.population->measures();
+  const auto bell = rouleau::shear_plane_shapes(*cells.population, flared_measures).at(0);
+  const auto weight =
+      Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cells.population->surface_area_weights());
+  const auto& centre = flared_measures.at(0).centroid;
+  double front = 0.0, rear = 0.0;
+  for (std::size_t node = 0; node < flared.extent(0); ++node) {
+    if (weight(node) <= 0.0) continue;
+    const double r = std::hypot(flared(node, 1) - centre[1], flared(node, 2) - centre[2]);
+    double& half = flared(node, 0) > centre[0] ? front : rear;
+    half = std::max(half, r);
+  }
+  EXPECT_DOUBLE_EQ(bell.radius_front, front);
+  EXPECT_DOUBLE_EQ(bell.radius_rear, rear);
+  std::printf("round: front %.4f rear %.4f um; flared rear: front %.4f rear %.4f um (a = %.2f um)\n",
+              round.radius_front, round.radius_rear, bell.radius_front, bell.radius_rear, outer_radius);
+  EXPECT_NEAR(round.radius_front, outer_radius, 0.03);
+  EXPECT_NEAR(round.radius_rear, outer_radius, 0.03);
+  EXPECT_NEAR(bell.radius_front, outer_radius, 0.05);
+  EXPECT_GT(bell.radius_rear / bell.radius_front, rouleau::CapillaryPassageCheck::flare_ratio);
+  EXPECT_LT(bell.radius_rear, 1.3 * std::sqrt(1.0 - 0.09) * outer_radius + 0.03);
+  EXPECT_GT(bell.radius_rear, 1.15 * outer_radius);
 }
 
 TEST(Coupling, CapsuleDeformsInProportionToCaAndKeepsItsVolume) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "analysis/paper_checks.hpp"
+#include "capillary_passage_rows.hpp"
 #include "temporary_folder.hpp"
 #include "throat_passage_rows.hpp"
 
@@ -136,30 +137,33 @@ TEST(PaperChecks, OutletRowsWantEveryCellSlowerAndThemCloser) {
 }
 
 TEST(PaperChecks, CapillaryRowsAreMetExactlyWhenThePassageIs) {
-  auto capsule_row = [](double x, double length, double pressure) {
-    return std::map<std::string, double>{
-        {"cell0_centroid_x_um", x}, {"cell0_extent_x_um", length}, {"driving_pressure_Pa", pressure}};
-  };
-  // A capillary from x = 20 to 40 um; a capsule of free length 6 um.
-  const DiagnosticsRows passage{capsule_row(7, 6.0, 1.6), capsule_row(18, 6.4, 2.5), capsule_row(30, 9.0, 4.0),
-                                capsule_row(39, 8.0, 3.0), capsule_row(50, 6.5, 1.8)};
+  using rouleau::testing::capsule_row;
+  const DiagnosticsRows passage = rouleau::testing::capillary_passage_rows();
   DiagnosticsRows high = passage;
   high.back() = capsule_row(50, 6.5, 3.4);  // left, the pressure still up
   const DiagnosticsRows stuck(passage.begin(), passage.begin() + 4);
+  DiagnosticsRows round = passage;  // leaves with its rear no wider than its front
+  round[6] = capsule_row(45.5, 7.0, 2.2, 3.0, 3.0);
+  DiagnosticsRows swinging = passage;  // inside, the pressure swings by half its mean
+  swinging[2] = capsule_row(26, 9.0, 2.6);
+  swinging[4] = capsule_row(34, 9.0, 2.5);
   const DiagnosticsRows flat{capsule_row(7, 6.0, 1.6), capsule_row(30, 6.0, 1.68), capsule_row(50, 6.0, 1.6)};
   DiagnosticsRows far_peak = passage;  // the peak with the capsule 10 um before the capillary
   far_peak[0] = capsule_row(2, 6.0, 1.6);
   far_peak[1] = capsule_row(10, 6.4, 5.0);
-  const std::vector<const DiagnosticsRows*> cases{&passage, &high, &stuck, &flat, &far_peak};
+  const std::vector<const DiagnosticsRows*> cases{&passage, &high, &stuck, &flat, &far_peak, &round, &swinging};
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const auto check = rouleau::check_capillary_passage(*cases[i], 20.0, 40.0);
     const auto paper = rouleau::paper_rows(check, 20.0, 40.0);
-    ASSERT_EQ(paper.size(), 5u);
+    ASSERT_EQ(paper.size(), 9u);
     EXPECT_EQ(paper[0].figure, "Fig. 16");
-    EXPECT_EQ(paper[0].measure.met, check.longer_inside) << "case " << i;
-    const std::vector<PaperCheckRow> fig17(paper.begin() + 1, paper.end());
-    EXPECT_EQ(all_met(fig17), check.rose && check.left && check.fell) << "case " << i;
+    EXPECT_EQ(paper[1].figure, "Fig. 16");
+    const std::vector<PaperCheckRow> fig16(paper.begin(), paper.begin() + 2), fig17(paper.begin() + 2, paper.end());
+    EXPECT_EQ(all_met(fig16), check.longer_inside && check.flared) << "case " << i;
+    EXPECT_EQ(all_met(fig17), check.rose && check.left && check.fell && check.plateau) << "case " << i;
   }
+  EXPECT_FALSE(all_met(rouleau::paper_rows(rouleau::check_capillary_passage(round, 20.0, 40.0), 20.0, 40.0)));
+  EXPECT_FALSE(all_met(rouleau::paper_rows(rouleau::check_capillary_passage(swinging, 20.0, 40.0), 20.0, 40.0)));
   EXPECT_TRUE(all_met(rouleau::paper_rows(rouleau::check_capillary_passage(passage, 20.0, 40.0), 20.0, 40.0)));
   EXPECT_FALSE(all_met(rouleau::paper_rows(rouleau::check_capillary_passage(far_peak, 20.0, 40.0), 20.0, 40.0)));
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "analysis/scene_checks.hpp"
+#include "capillary_passage_rows.hpp"
 #include "throat_passage_rows.hpp"
 
 namespace {
@@ -112,9 +113,6 @@ TEST(SceneChecks, EachShearRateHasThePapersStatementWithItsThresholds) {
 }
 
 // A capsule row: centroid x, x-extent, driving pressure.
-std::map<std::string, double> capsule_row(double x, double length, double pressure) {
-  return {{"cell0_centroid_x_um", x}, {"cell0_extent_x_um", length}, {"driving_pressure_Pa", pressure}};
-}
 
 TEST(SceneChecks, ContractionPassageWantsNormalCellsThroughAndSickleCellsHeld) {
   // Two cells (x-extent 8 um) and a throat from x = 30 to 40 um, five rows 1 s apart: cell
@@ -204,16 +202,36 @@ TEST(SceneChecks, ContractionOutletWantsCellsSlowerInTheDiffuserAndCloserAfterIt
 }
 
 TEST(SceneChecks, CapillaryPassageRisesPlugsStretchesAndFalls) {
-  // A capillary from x = 20 to 40 um; a capsule of free length 6 um.
-  const DiagnosticsRows passage{capsule_row(7, 6.0, 1.6), capsule_row(18, 6.4, 2.5), capsule_row(30, 9.0, 4.0),
-                                capsule_row(39, 8.0, 3.0), capsule_row(50, 6.5, 1.8)};
+  using rouleau::testing::capsule_row;
+  const DiagnosticsRows passage = rouleau::testing::capillary_passage_rows();
   const auto c = rouleau::check_capillary_passage(passage, 20.0, 40.0);
   EXPECT_DOUBLE_EQ(c.peak_pressure, 4.0);
   EXPECT_DOUBLE_EQ(c.peak_position, 30.0);
   EXPECT_DOUBLE_EQ(c.longest_inside, 9.0);
   EXPECT_DOUBLE_EQ(c.free_length, 6.0);
-  EXPECT_TRUE(c.rose && c.left && c.fell && c.longer_inside);
+  EXPECT_EQ(c.plateau_rows, 3);
+  EXPECT_DOUBLE_EQ(c.plateau_mean, 3.8);
+  EXPECT_NEAR(c.plateau_spread, 0.4 / 3.8, 1e-12);
+  EXPECT_NEAR(c.largest_rear_over_front, 1.1, 1e-12);
+  EXPECT_TRUE(c.rose && c.left && c.fell && c.longer_inside && c.plateau && c.flared);
   EXPECT_TRUE(c.met());
+  // A peak without a plateau: inside, the pressure swings by half its mean.
+  DiagnosticsRows swinging = passage;
+  swinging[2] = capsule_row(26, 9.0, 2.6);
+  swinging[4] = capsule_row(34, 9.0, 2.5);
+  const auto w = rouleau::check_capillary_passage(swinging, 20.0, 40.0);
+  EXPECT_GT(w.plateau_spread, rouleau::CapillaryPassageCheck::plateau_spread_max);
+  EXPECT_FALSE(w.plateau);
+  EXPECT_FALSE(w.met());
+  // A capsule that leaves round (rear 3.05 against front 3.0, below 1.05) is no jellyfish;
+  // nor is one whose rear flares only once it is far past the exit (rear at 48.5).
+  DiagnosticsRows round = passage;
+  round[6] = capsule_row(45.5, 7.0, 2.2, 3.05, 3.0);
+  EXPECT_FALSE(rouleau::check_capillary_passage(round, 20.0, 40.0).flared);
+  DiagnosticsRows late = passage;
+  late[6] = capsule_row(45.5, 7.0, 2.2, 3.0, 3.0);
+  late[7] = capsule_row(52.0, 7.0, 1.8, 3.3, 3.0);
+  EXPECT_FALSE(rouleau::check_capillary_passage(late, 20.0, 40.0).flared);
   // Still inside at the end: it has not left, so the pressure has not fallen.
   const DiagnosticsRows stuck(passage.begin(), passage.begin() + 4);
   const auto s = rouleau::check_capillary_passage(stuck, 20.0, 40.0);

@@ -51,6 +51,17 @@ int main(int argc, char** argv) {
   else
     std::printf("check (inside, the capsule is longer than its free diameter): its centroid never entered the "
                 "capillary: NOT MET\n");
+  if (c.plateau_rows > 0)
+    std::printf("check (the pressure stays up while the capsule is wholly inside): %d rows >= %d, spread %.1f %% of "
+                "the mean <= %.0f %%, mean %.1f %% above the initial >= %.0f %%: %s\n",
+                c.plateau_rows, Check::plateau_rows_min, 100.0 * c.plateau_spread, 100.0 * Check::plateau_spread_max,
+                100.0 * (c.plateau_mean / c.initial_pressure - 1.0), 100.0 * Check::rise_fraction, verdict(c.plateau));
+  else
+    std::printf("check (the pressure stays up while the capsule is wholly inside): it never was wholly inside: "
+                "NOT MET\n");
+  std::printf("check (it leaves with its rear flared, a jellyfish): largest rear over front radius within a free "
+              "length past the exit %.3f >= %.2f: %s\n",
+              c.largest_rear_over_front, Check::flare_ratio, verdict(c.flared));
   rouleau::write_paper_checks(run.options.output_dir, rouleau::paper_rows(c, entry, exit));
   return 0;
 }

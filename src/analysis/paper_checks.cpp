@@ -92,12 +92,18 @@ std::vector<PaperCheckRow> paper_rows(const ContractionOutletCheck& check) {
 std::vector<PaperCheckRow> paper_rows(const CapillaryPassageCheck& check, double entry, double exit) {
   using Check = CapillaryPassageCheck;
   std::vector<PaperCheckRow> rows;
-  rows.push_back({"Fig. 16", "inside the capillary the capsule is longer than its free diameter",
+  const std::string shape = "inside the capillary the capsule is longer than its free diameter (a slug) and it "
+                            "leaves with its rear flared (a jellyfish)";
+  rows.push_back({"Fig. 16", shape,
                   measure_against("longest x-extent inside over the free one",
                                   check.free_length > 0.0 ? check.longest_inside / check.free_length : 0.0, ">", 1.0,
                                   "")});
+  rows.push_back({"Fig. 16", shape,
+                  measure_against("largest rear over front radius within a free length past the exit",
+                                  check.largest_rear_over_front, ">=", Check::flare_ratio, "")});
   const std::string figure = "Fig. 17",
-                    statement = "the driving pressure rises while the capsule plugs the capillary and falls after it leaves";
+                    statement = "the driving pressure rises while the capsule enters, stays up while it plugs the "
+                                "capillary and falls after it leaves";
   const double rise = check.peak_pressure - check.initial_pressure;
   rows.push_back({figure, statement,
                   measure_against("peak pressure's rise over the initial pressure",
@@ -107,6 +113,19 @@ std::vector<PaperCheckRow> paper_rows(const CapillaryPassageCheck& check, double
                   measure_against("capsule's centroid's distance from the capillary at the peak (threshold: its free length)",
                                   std::max({0.0, entry - check.peak_position, check.peak_position - exit}), "<=",
                                   check.free_length, "um")});
+  rows.push_back({figure, statement,
+                  measure_against("rows with the capsule wholly inside", check.plateau_rows, ">=",
+                                  Check::plateau_rows_min, "")});
+  rows.push_back({figure, statement,
+                  measure_against("pressure's spread over its mean while wholly inside",
+                                  check.plateau_rows > 0 ? check.plateau_spread : 0.0, "<=", Check::plateau_spread_max,
+                                  "")});
+  rows.push_back({figure, statement,
+                  measure_against("pressure's mean while wholly inside over the initial pressure, less 1",
+                                  check.initial_pressure > 0.0 && check.plateau_rows > 0
+                                      ? check.plateau_mean / check.initial_pressure - 1.0
+                                      : 0.0,
+                                  ">=", Check::rise_fraction, "")});
   rows.push_back({figure, statement,
                   measure_against("capsule's centroid at the end, past the exit", check.final_position, ">",
                                   exit + 0.5 * check.free_length, "um")});

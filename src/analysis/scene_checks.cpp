@@ -183,12 +183,40 @@ CapillaryPassageCheck check_capillary_passage(const DiagnosticsRows& rows, doubl
     }
     if (position[i] >= entry && position[i] <= exit) check.longest_inside = std::max(check.longest_inside, length[i]);
   }
+  // The plateau: the rows with the whole capsule inside, rear ≥ entry and front ≤ exit.
+  double lowest = HUGE_VAL, highest = -HUGE_VAL, sum = 0.0;
+  for (std::size_t i = first_driven; i < rows.size(); ++i) {
+    const double rear = position[i] - 0.5 * length[i], front = position[i] + 0.5 * length[i];
+    if (rear < entry || front > exit) continue;
+    ++check.plateau_rows;
+    sum += pressure[i];
+    lowest = std::min(lowest, pressure[i]);
+    highest = std::max(highest, pressure[i]);
+  }
+  if (check.plateau_rows > 0) {
+    check.plateau_mean = sum / check.plateau_rows;
+    check.plateau_spread = (highest - lowest) / check.plateau_mean;
+  }
+  // The flare: R_rear / R_front while the rear is out by less than the free length.
+  if (rows.front().count("cell0_radius_rear_um")) {
+    const std::vector<double> rear_radius = diagnostics_column(rows, "cell0_radius_rear_um");
+    const std::vector<double> front_radius = diagnostics_column(rows, "cell0_radius_front_um");
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const double rear = position[i] - 0.5 * length[i];
+      if (rear < exit || rear > exit + check.free_length || front_radius[i] <= 0.0) continue;
+      check.largest_rear_over_front = std::max(check.largest_rear_over_front, rear_radius[i] / front_radius[i]);
+    }
+  }
   const double rise = check.peak_pressure - check.initial_pressure;
   check.rose = rise >= CapillaryPassageCheck::rise_fraction * check.initial_pressure &&
                check.peak_position >= entry - check.free_length && check.peak_position <= exit + check.free_length;
   check.left = check.final_position > exit + 0.5 * check.free_length;
   check.fell = check.left && check.peak_pressure - check.final_pressure >= CapillaryPassageCheck::fall_fraction * rise;
   check.longer_inside = check.longest_inside > check.free_length;
+  check.plateau = check.plateau_rows >= CapillaryPassageCheck::plateau_rows_min &&
+                  check.plateau_spread <= CapillaryPassageCheck::plateau_spread_max &&
+                  check.plateau_mean >= (1.0 + CapillaryPassageCheck::rise_fraction) * check.initial_pressure;
+  check.flared = check.largest_rear_over_front >= CapillaryPassageCheck::flare_ratio;
   return check;
 }
 

@@ -116,8 +116,10 @@ ContractionOutletCheck check_contraction_outlet(const DiagnosticsRows& rows, con
 
 // A capsule squeezing through a capillary along x from `entry` to `exit` [μm] (Liu et
 // al. 2004, Figs. 16-17): "the pressure rises while the capsule enters and plugs the
-// capillary and falls after it leaves; inside, the capsule is longer than its free
-// diameter". Cell 0's centroid and x-extent, and driving_pressure_Pa, over the run.
+// capillary, stays up while it is inside and falls after it leaves; inside, the capsule is
+// longer than its free diameter (a slug), and it leaves with its rear flared (a
+// jellyfish)". Cell 0's centroid, x-extent and front and rear radii, and
+// driving_pressure_Pa, over the run.
 struct CapillaryPassageCheck {
   double initial_pressure = 0.0;  // [Pa] first row after step 0 (the capsule still in the inlet feeder)
   double peak_pressure = 0.0;     // [Pa] largest over the run
@@ -126,18 +128,35 @@ struct CapillaryPassageCheck {
   double final_position = 0.0;    // [μm] the capsule's centroid x, last row
   double free_length = 0.0;       // [μm] x-extent in the first row (undeformed)
   double longest_inside = 0.0;    // [μm] largest x-extent while the centroid is in [entry, exit]
+  // The rows with the capsule wholly inside (its rear, centroid − extent/2, past `entry`,
+  // its front before `exit`): how many, and the pressure's mean and spread (max − min)
+  // over its mean there.
+  int plateau_rows = 0;
+  double plateau_mean = 0.0;                  // [Pa]
+  double plateau_spread = INFINITY;
+  // The rows with its rear out of the capillary by less than its free length (between
+  // `exit` and exit + free_length): the largest R_rear / R_front (0: no such row).
+  double largest_rear_over_front = 0.0;
   // Thresholds: the pressure rises when the peak is at least rise_fraction above the
   // initial pressure, with the capsule's centroid within a free diameter of the capillary;
   // it falls when the capsule's centroid is past `exit` + half its free length and the
   // pressure has come back by at least fall_fraction of the rise; longer when
-  // longest_inside > free_length.
+  // longest_inside > free_length; a plateau when at least plateau_rows_min rows have it
+  // wholly inside, with a spread of at most plateau_spread_max and a mean at least
+  // rise_fraction above the initial pressure; flared when largest_rear_over_front reaches
+  // flare_ratio.
   static constexpr double rise_fraction = 0.1;
   static constexpr double fall_fraction = 0.75;
+  static constexpr int plateau_rows_min = 3;
+  static constexpr double plateau_spread_max = 0.25;
+  static constexpr double flare_ratio = 1.05;
   bool rose = false;
   bool left = false;
   bool fell = false;
   bool longer_inside = false;
-  bool met() const { return rose && left && fell && longer_inside; }
+  bool plateau = false;
+  bool flared = false;
+  bool met() const { return rose && left && fell && longer_inside && plateau && flared; }
 };
 CapillaryPassageCheck check_capillary_passage(const DiagnosticsRows& rows, double entry, double exit);
 

@@ -27,6 +27,7 @@ std::vector<ShearPlaneShape> shear_plane_shapes(const CellPopulation& population
     const double slab = 0.6 * edge_sum[c] / std::max(1.0, edge_count[c]);
     double gxx = 0.0, gxy = 0.0, gyy = 0.0, largest = 0.0, smallest = HUGE_VAL;
     double lowest[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, highest[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    double radius_front = 0.0, radius_rear = 0.0;
     const int first = population.cell_first_node()[c], count = population.cell_node_count()[c];
     for (int n = first; n < first + count; ++n) {
       if (weight(n) <= 0.0) continue;  // not on the outer surface
@@ -35,6 +36,10 @@ std::vector<ShearPlaneShape> shear_plane_shapes(const CellPopulation& population
         highest[d] = std::max(highest[d], x(n, d));
       }
       const double rx = x(n, 0) - centroid[0], ry = x(n, 1) - centroid[1];
+      // R = √((y − y_c)² + (z − z_c)²), the distance from the line along x through the centroid
+      const double radial = std::hypot(ry, x(n, 2) - centroid[2]);
+      double& half = rx > 0.0 ? radius_front : radius_rear;
+      half = std::max(half, radial);
       gxx += weight(n) * rx * rx;
       gxy += weight(n) * rx * ry;
       gyy += weight(n) * ry * ry;
@@ -48,6 +53,8 @@ std::vector<ShearPlaneShape> shear_plane_shapes(const CellPopulation& population
     ShearPlaneShape& shape = shapes[c];
     shape.inclination_deg = 0.5 * std::atan2(2.0 * gxy, gxx - gyy) * 180.0 / M_PI;
     for (int d = 0; d < 3; ++d) shape.extent[d] = highest[d] > lowest[d] ? highest[d] - lowest[d] : 0.0;
+    shape.radius_front = radius_front;
+    shape.radius_rear = radius_rear;
     if (largest > 0.0) {
       const double depth = membrane_depth.empty() ? 0.0 : membrane_depth.at(c);
       shape.length = largest - depth;

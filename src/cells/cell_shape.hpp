@@ -13,7 +13,11 @@
 //                shell stretched 20 %, 0.015 μm of a 3 μm radius);
 //   D            the Taylor deformation (L − B) / (L + B);
 // and, in 3D, the extent of the outer surface along x, y and z (its bounding box: a
-// capsule's length and width in a capillary along x).
+// capsule's length and width in a capillary along x), and the radii of its front and
+// rear along x: the largest distance √((y − y_c)² + (z − z_c)²) from the line along x
+// through the centroid among the outer-surface nodes ahead of the centroid (x > x_c) and
+// behind it (a capsule leaving a capillary with a flared rear, the paper's jellyfish, has
+// R_rear > R_front).
 #include <vector>
 
 #include "cells/cell_population.hpp"
@@ -26,6 +30,8 @@ struct ShearPlaneShape {
   double breadth = 0.0;  // B [μm]
   double taylor_deformation = 0.0;
   double extent[3] = {0.0, 0.0, 0.0};  // [μm] max − min of the outer-surface nodes' x, y, z
+  double radius_front = 0.0;           // R_front [μm]
+  double radius_rear = 0.0;            // R_rear [μm]
 };
 
 // One entry per cell; `measures` are population.measures() at the same positions;

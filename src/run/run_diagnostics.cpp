@@ -102,7 +102,8 @@ std::vector<std::string> CellDiagnostics::columns() const {
   for (std::size_t c = 0; c < initial_volumes_.size(); ++c) {
     const std::string cell = "cell" + std::to_string(c) + "_";
     for (const char* name : {"volume_um3", "centroid_x_um", "centroid_y_um", "centroid_z_um", "inclination_deg",
-                             "taylor_deformation", "extent_x_um", "extent_y_um", "extent_z_um"})
+                             "taylor_deformation", "extent_x_um", "extent_y_um", "extent_z_um", "radius_front_um",
+                             "radius_rear_um"})
       names.push_back(cell + name);
   }
   for (std::size_t a = 0; a < initial_volumes_.size() && gaps_; ++a)
@@ -135,7 +136,8 @@ std::vector<double> CellDiagnostics::row(const CaseCells& cells, const CellForce
     largest_change = std::max(largest_change, std::fabs(now[c].volume / initial_volumes_[c] - 1.0));
     values.insert(values.end(), {now[c].volume, now[c].centroid[0], now[c].centroid[1], now[c].centroid[2],
                                  shapes[c].inclination_deg, shapes[c].taylor_deformation, shapes[c].extent[0],
-                                 shapes[c].extent[1], shapes[c].extent[2]});
+                                 shapes[c].extent[1], shapes[c].extent[2], shapes[c].radius_front,
+                                 shapes[c].radius_rear});
   }
   values[3] = largest_change;
   if (gaps_)

@@ -99,16 +99,23 @@ TEST(PaperChecks, ContractionRowsFollowTheCellsKinds) {
     EXPECT_EQ(all_met(fig14), check.normal_cells_passed) << kinds[0] << " " << kinds[1];
     EXPECT_EQ(all_met(fig15), check.sickle_cells_blocked) << kinds[0] << " " << kinds[1];
     EXPECT_EQ(fig14.size(), static_cast<std::size_t>(check.normal_cells));
-    EXPECT_EQ(fig15.size(), 3u * check.sickle_cells);
+    EXPECT_EQ(fig15.size(), 3u * check.sickle_cells + (check.sickle_cells > 0 ? 1u : 0u));
   }
   const std::vector<std::string> kinds{"normal", "sickle"};
   const auto check = rouleau::check_contraction_passage(rows, kinds, 30.0, 40.0);
   const auto paper = rouleau::paper_rows(check, kinds, 40.0);
-  ASSERT_EQ(paper.size(), 4u);
+  ASSERT_EQ(paper.size(), 5u);
   EXPECT_DOUBLE_EQ(paper[0].measure.value, 55.0);
   EXPECT_DOUBLE_EQ(paper[2].measure.value, 0.5);               // 30 − (25.5 + 4)
   EXPECT_NEAR(paper[3].measure.value, 0.2 / 5.0, 1e-12);      // late over early speed
+  EXPECT_DOUBLE_EQ(paper[4].measure.value, 3.0);               // the pressure ratio at the end
   EXPECT_TRUE(all_met(paper));
+  // The flow no longer held back at the end (the ratio back to 1.5): no blockage.
+  DiagnosticsRows flowing = rows;
+  flowing.back()["relative_apparent_viscosity"] = 1.5;
+  const auto open = rouleau::check_contraction_passage(flowing, kinds, 30.0, 40.0);
+  EXPECT_FALSE(open.sickle_cells_blocked);
+  EXPECT_FALSE(all_met(rouleau::paper_rows(open, kinds, 40.0)));
 }
 
 TEST(PaperChecks, OutletRowsWantEveryCellSlowerAndThemCloser) {

@@ -149,6 +149,30 @@ TEST(SceneChecks, ContractionPassageWantsNormalCellsThroughAndSickleCellsHeld) {
   EXPECT_FALSE(rouleau::check_contraction_passage(early, {"sickle", "sickle"}, 30.0, 50.0).met());
   // No cells: nothing is met.
   EXPECT_FALSE(rouleau::check_contraction_passage(rows, {}, 30.0, 40.0).met());
+  // Stalled at the entrance but the flow not held back (the driving pressure 1.5 times
+  // Hagen-Poiseuille's at the end, below 2): the cell does not block the throat.
+  DiagnosticsRows flowing = stalled;
+  flowing.back()["relative_apparent_viscosity"] = 1.5;
+  const auto open = rouleau::check_contraction_passage(flowing, {"sickle"}, 30.0, 40.0);
+  EXPECT_TRUE(open.blocked[0]);
+  EXPECT_FALSE(open.sickle_cells_blocked);
+  // A queue: a third cell stalled behind the held one (its front 1 um behind that cell's
+  // rear at 21.5 um) is blocked too; 3 um behind it is not, nor is one stalled far back.
+  DiagnosticsRows queue = rows;
+  const double x2[5] = {5, 10, 15, 16.4, 16.5};  // front at 20.5 um at the end
+  for (int r = 0; r < 5; ++r) {
+    queue[r]["cell2_centroid_x_um"] = x2[r];
+    queue[r]["cell2_extent_x_um"] = 8.0;
+  }
+  const auto queued = rouleau::check_contraction_passage(queue, {"normal", "sickle", "sickle"}, 30.0, 40.0);
+  EXPECT_DOUBLE_EQ(queued.front_before_hold[2], 1.0);
+  EXPECT_TRUE(queued.blocked[2]);
+  EXPECT_TRUE(queued.met());
+  for (auto& row : queue) row["cell2_centroid_x_um"] -= 2.0;
+  const auto gap = rouleau::check_contraction_passage(queue, {"normal", "sickle", "sickle"}, 30.0, 40.0);
+  EXPECT_DOUBLE_EQ(gap.front_before_hold[2], 3.0);
+  EXPECT_FALSE(gap.blocked[2]);
+  EXPECT_FALSE(gap.met());
   // Without the elements' column nothing is known to be crushed; with it, the smallest J
   // and when, and an element at J = 0.15 is crushed (0.25 is not).
   EXPECT_TRUE(normal.no_element_crushed);

@@ -42,15 +42,17 @@ int main(int argc, char** argv) {
                   passage.final_position[c], passage.end_time,
                   passage.passed[c] ? ("past the throat's exit since t = " +
                                        std::to_string(passage.passage_time[c]) + " s").c_str()
-                  : passage.blocked[c] ? "stalled at the throat's entrance (blocked)"
+                  : passage.blocked[c] ? "stalled at the throat's entrance or behind a cell held there (blocked)"
                                        : "not past the throat's exit, not stalled at its entrance");
     // A statement about a kind the run does not hold does not apply.
     const auto verdict = [](int cells_of_kind, bool holds) {
       return cells_of_kind == 0 ? "does not apply (none in the run)" : holds ? "met" : "NOT MET";
     };
-    std::printf("check (normal cells pass the throat): %s; (sickle cells stall at its entrance, in the same time): "
-                "%s; the paper's statement: %s\n",
-                verdict(passage.normal_cells, passage.normal_cells_passed),
+    std::printf("check (normal cells pass the throat): %s; (sickle cells stall at its entrance, in the same time, "
+                "and hold the flow back: driving pressure %.2f times Hagen-Poiseuille's at the end, >= %.0f): %s; the "
+                "paper's statement: %s\n",
+                verdict(passage.normal_cells, passage.normal_cells_passed), passage.final_pressure_ratio,
+                rouleau::ContractionPassageCheck::blocked_pressure_ratio,
                 verdict(passage.sickle_cells, passage.sickle_cells_blocked), passage.met() ? "met" : "NOT MET");
     std::printf("most compressed cell element: J = %.3f at t = %.3f s (%s, J > %.1f)\n",
                 passage.smallest_volume_ratio, passage.smallest_volume_ratio_time,

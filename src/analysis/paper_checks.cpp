@@ -61,12 +61,16 @@ std::vector<PaperCheckRow> paper_rows(const ContractionPassageCheck& check, cons
                     measure_against(cell + ": centroid's x at the end, before the throat's exit", check.final_position[c],
                                     "<=", throat_exit, "um")});
     rows.push_back({figure, statement,
-                    measure_against(cell + ": its front's distance before the throat's entry",
-                                    check.front_before_entry[c], "<=", Check::blocked_front_distance, "um")});
+                    measure_against(cell + ": its front's distance before the throat's entry or the blocked cell ahead",
+                                    check.front_before_hold[c], "<=", Check::blocked_front_distance, "um")});
     rows.push_back({figure, statement,
                     measure_against(cell + ": its speed over the last quarter over that over the first",
                                     check.late_speed_ratio[c], "<", Check::stalled_speed_fraction, "")});
   }
+  if (check.sickle_cells > 0)
+    rows.push_back({"Fig. 15", "sickle cells block the throat's entrance",
+                    measure_against("driving pressure over Hagen-Poiseuille's at the same flow, at the end",
+                                    check.final_pressure_ratio, ">=", Check::blocked_pressure_ratio, "")});
   return rows;
 }
 

@@ -69,7 +69,8 @@ ContractionPassageCheck check_contraction_passage(const DiagnosticsRows& rows, c
   auto mean_speed = [&time](const std::vector<double>& x, std::size_t a, std::size_t b) {
     return time[b] > time[a] ? (x[b] - x[a]) / (time[b] - time[a]) : 0.0;
   };
-  bool all_normal_passed = true, all_sickle_blocked = true;
+  std::vector<double> front(cells), rear(cells);
+  std::vector<bool> stalled(cells);
   for (int c = 0; c < cells; ++c) {
     const std::string cell = "cell" + std::to_string(c);
     const std::vector<double> x = diagnostics_column(rows, cell + "_centroid_x_um");
@@ -77,25 +78,44 @@ ContractionPassageCheck check_contraction_passage(const DiagnosticsRows& rows, c
       if (x[r] > throat_exit) check.passage_time[c] = time[r];
     check.final_position.push_back(x.back());
     check.passed.push_back(x.back() > throat_exit);
-    const double front = x.back() + 0.5 * diagnostics_value(rows.back(), cell + "_extent_x_um");
-    check.front_before_entry.push_back(throat_entry - front);
+    const double half_length = 0.5 * diagnostics_value(rows.back(), cell + "_extent_x_um");
+    front[c] = x.back() + half_length;
+    rear[c] = x.back() - half_length;
+    check.front_before_entry.push_back(throat_entry - front[c]);
     const double early = rows.size() >= 3 ? mean_speed(x, 0, first_end) : 0.0;
     const double late = rows.size() >= 3 ? mean_speed(x, last_begin, rows.size() - 1) : 0.0;
     check.late_speed_ratio.push_back(early > 0.0 ? late / early : INFINITY);
-    const bool blocked = !check.passed.back() && rows.size() >= 3 &&
-                         check.front_before_entry.back() <= ContractionPassageCheck::blocked_front_distance &&
-                         check.late_speed_ratio.back() < ContractionPassageCheck::stalled_speed_fraction;
-    check.blocked.push_back(blocked);
+    stalled[c] = rows.size() >= 3 && check.late_speed_ratio.back() < ContractionPassageCheck::stalled_speed_fraction;
+  }
+  // The queue, front first: a stalled cell is blocked when its front is within
+  // blocked_front_distance of what holds it, the entry or the rearmost blocked cell ahead.
+  std::vector<int> front_first(cells);
+  for (int c = 0; c < cells; ++c) front_first[c] = c;
+  std::sort(front_first.begin(), front_first.end(), [&front](int a, int b) { return front[a] > front[b]; });
+  check.blocked.assign(cells, false);
+  check.front_before_hold.assign(cells, 0.0);
+  double hold = throat_entry;
+  for (int c : front_first) {
+    check.front_before_hold[c] = hold - front[c];
+    check.blocked[c] = !check.passed[c] && stalled[c] &&
+                       check.front_before_hold[c] <= ContractionPassageCheck::blocked_front_distance;
+    if (check.blocked[c]) hold = std::min(hold, rear[c]);
+  }
+  if (rows.back().count("relative_apparent_viscosity"))
+    check.final_pressure_ratio = rows.back().at("relative_apparent_viscosity");
+  bool all_normal_passed = true, all_sickle_blocked = true;
+  for (int c = 0; c < cells; ++c) {
     if (kinds[c] == "sickle") {
       ++check.sickle_cells;
-      all_sickle_blocked = all_sickle_blocked && blocked;
+      all_sickle_blocked = all_sickle_blocked && check.blocked[c];
     } else {
       ++check.normal_cells;
-      all_normal_passed = all_normal_passed && check.passed.back();
+      all_normal_passed = all_normal_passed && check.passed[c];
     }
   }
   check.normal_cells_passed = check.normal_cells > 0 && all_normal_passed;
-  check.sickle_cells_blocked = check.sickle_cells > 0 && all_sickle_blocked;
+  check.sickle_cells_blocked = check.sickle_cells > 0 && all_sickle_blocked &&
+                               check.final_pressure_ratio >= ContractionPassageCheck::blocked_pressure_ratio;
   if (rows.front().count("smallest_volume_ratio")) {
     const std::vector<double> volume_ratio = diagnostics_column(rows, "smallest_volume_ratio");
     const auto smallest = std::min_element(volume_ratio.begin(), volume_ratio.end());

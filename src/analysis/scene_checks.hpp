@@ -49,26 +49,35 @@ int cells_past(const std::map<std::string, double>& row, int cells, double x);
 // cells (crescents, stiffer, stickier) block the entrance", within the run's time. The
 // throat runs from x = `throat_entry` to `throat_exit` [μm]. A cell has passed when its
 // centroid is beyond the throat's exit at the last row. A cell is blocked when it has not
-// passed, its front (centroid + half its x-extent) is within blocked_front_distance of the
-// throat's entry or beyond it at the last row, and it has stalled there: its mean speed
-// over the run's last quarter (in time) is below stalled_speed_fraction of its mean speed
-// over the first quarter. A run that ends before a sickle cell reaches the entrance, or
-// while it still moves, does not show a blockage. `kinds` names each cell's kind: "sickle"
+// passed, it has stalled (its mean speed over the run's last quarter, in time, is below
+// stalled_speed_fraction of its mean speed over the first quarter), and at the last row
+// its front (centroid + half its x-extent) is within blocked_front_distance of what holds
+// it, or beyond it: the throat's entry, or the rear of a blocked cell ahead of it (a
+// queue; cells are taken front first). A run that ends before a sickle cell reaches the
+// entrance, or while it still moves, does not show a blockage. The sickle cells block the
+// throat when every one is blocked and the flow is: at the last row the driving pressure
+// is at least blocked_pressure_ratio times Hagen–Poiseuille's at the same flow
+// (relative_apparent_viscosity; the plasma alone 1.04), so at a fixed driving pressure
+// the flow would be at most half the plasma's. `kinds` names each cell's kind: "sickle"
 // cells must be blocked, every other kind must pass; a statement about a kind the run
 // does not hold does not apply (neither met nor failed), and a run with no cells meets
 // nothing.
 struct ContractionPassageCheck {
   static constexpr double blocked_front_distance = 2.0;  // [μm]
   static constexpr double stalled_speed_fraction = 0.1;
+  static constexpr double blocked_pressure_ratio = 2.0;
   std::vector<bool> passed;          // per cell, at the last row
   std::vector<bool> blocked;         // per cell, at the last row
   std::vector<double> passage_time;  // [s] per cell, the first row with it past the exit; −1: never
   std::vector<double> final_position;  // [μm] per cell, its centroid's x at the last row
   std::vector<double> front_before_entry;  // [μm] per cell, last row: the throat's entry minus the cell's
                                            // front (centroid + half its x-extent); negative beyond it
+  std::vector<double> front_before_hold;   // [μm] per cell, last row: the same from what holds it, the
+                                           // throat's entry or the rear of the nearest blocked cell ahead
   std::vector<double> late_speed_ratio;    // per cell: its mean speed over the last quarter over that over
                                            // the first (infinite when it did not move forward at first)
   double end_time = 0.0;             // [s]
+  double final_pressure_ratio = 0.0;  // relative_apparent_viscosity at the last row (0: no column)
   int normal_cells = 0;              // cells not of kind "sickle"
   int sickle_cells = 0;
   bool normal_cells_passed = false;  // there are normal cells and every one passed

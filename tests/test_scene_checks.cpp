@@ -42,6 +42,15 @@ TEST(SceneChecks, StackMeasuresAreTheChangesBetweenTheFirstAndLastRows) {
   EXPECT_NEAR(m.stack_axis_deg, std::atan2(2.0, 12.5) * 180.0 / M_PI, 1e-12);  // dx 2, dy 12.5
   EXPECT_NEAR(m.duration, 4.0, 1e-12);                    // 0.5 s -> 4.5 s
   EXPECT_FALSE(m.intact);                                 // 0.7 > r0
+  // Inclinations are axes: discs at −89.9, +86.7, +87.1 and −89.6 deg (all near the
+  // vertical) lie within 3.7 deg of each other, their mean axis at −91.425 deg, that is
+  // +88.575 (the doubled-angle mean departs from the plain one by 1e-4 deg here).
+  DiagnosticsRows upright = rows;
+  const double across[4] = {-89.9, 86.7, 87.1, -89.6};
+  for (int c = 0; c < 4; ++c) upright.back()["cell" + std::to_string(c) + "_inclination_deg"] = across[c];
+  const auto u = rouleau::measure_stack(upright, 4, 4, 0.25);
+  EXPECT_NEAR(u.inclination_spread_deg, 3.7, 1e-9);
+  EXPECT_NEAR(u.mean_inclination_deg, 88.575, 0.01);
 }
 
 TEST(SceneChecks, EachShearRateHasThePapersStatementWithItsThresholds) {

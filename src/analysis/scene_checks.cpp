@@ -281,15 +281,23 @@ StackMeasures measure_stack(const DiagnosticsRows& rows, int cells, int cells_pe
     const double separation_change = (y(last, c + 1) - y(last, c)) - (y(first, c + 1) - y(first, c));
     m.largest_separation_change = std::max(m.largest_separation_change, std::fabs(separation_change));
   }
-  double smallest = 1e300, largest = -1e300, sum = 0.0;
+  // Inclinations are axes, the same modulo 180° (a disc at −89° and one at +89° are 2°
+  // apart). Their mean is half the angle of the mean doubled-angle vector,
+  // ½ atan2(Σ sin 2θ, Σ cos 2θ), in (−90°, 90°]; their spread the shortest arc of the
+  // half-circle that holds them all, 180° less the widest gap between neighbours on it.
+  std::vector<double> axes;
+  double sin_sum = 0.0, cos_sum = 0.0;
   for (int c = 0; c < cells; ++c) {
     const double inclination = of_cell(last, c, "inclination_deg");
-    smallest = std::min(smallest, inclination);
-    largest = std::max(largest, inclination);
-    sum += inclination;
+    sin_sum += std::sin(2.0 * inclination * M_PI / 180.0);
+    cos_sum += std::cos(2.0 * inclination * M_PI / 180.0);
+    axes.push_back(inclination - 180.0 * std::floor(inclination / 180.0));  // in [0, 180)
   }
-  m.mean_inclination_deg = sum / cells;
-  m.inclination_spread_deg = largest - smallest;
+  m.mean_inclination_deg = 0.5 * std::atan2(sin_sum, cos_sum) * 180.0 / M_PI;
+  std::sort(axes.begin(), axes.end());
+  double widest_gap = axes.empty() ? 180.0 : 180.0 - (axes.back() - axes.front());
+  for (std::size_t i = 1; i < axes.size(); ++i) widest_gap = std::max(widest_gap, axes[i] - axes[i - 1]);
+  m.inclination_spread_deg = 180.0 - widest_gap;
   const int top = std::min(cells_per_stack, cells) - 1;
   const double dx = of_cell(last, top, "centroid_x_um") - of_cell(last, 0, "centroid_x_um");
   const double dy = y(last, top) - y(last, 0);

@@ -195,7 +195,8 @@ struct StackMeasures {
   double largest_separation_change = 0.0;  // [μm] max over neighbours of |Δy_last − Δy_first| (centroids)
   double mean_inclination_deg = 0.0;       // last row: the cells' mean inclination in the shear plane
                                            // (0 = major axis along the flow)
-  double inclination_spread_deg = 0.0;     // last row: largest − smallest inclination
+  double inclination_spread_deg = 0.0;     // last row: the shortest arc holding every inclination,
+                                           // modulo 180° (axes)
   double duration = 0.0;                   // [s] the last row's time_s minus the first's
   double stack_axis_deg = 0.0;             // last row: the first-to-last centroid line's angle from +y
                                            // toward +x. The shear (u = γ̇ y) turns a body clockwise: by θ,

@@ -81,7 +81,6 @@ ContractionPassageCheck check_contraction_passage(const DiagnosticsRows& rows, c
     const double half_length = 0.5 * diagnostics_value(rows.back(), cell + "_extent_x_um");
     front[c] = x.back() + half_length;
     rear[c] = x.back() - half_length;
-    check.front_before_entry.push_back(throat_entry - front[c]);
     const double early = rows.size() >= 3 ? mean_speed(x, 0, first_end) : 0.0;
     const double late = rows.size() >= 3 ? mean_speed(x, last_begin, rows.size() - 1) : 0.0;
     check.late_speed_ratio.push_back(early > 0.0 ? late / early : INFINITY);

@@ -70,10 +70,9 @@ struct ContractionPassageCheck {
   std::vector<bool> blocked;         // per cell, at the last row
   std::vector<double> passage_time;  // [s] per cell, the first row with it past the exit; −1: never
   std::vector<double> final_position;  // [μm] per cell, its centroid's x at the last row
-  std::vector<double> front_before_entry;  // [μm] per cell, last row: the throat's entry minus the cell's
+  std::vector<double> front_before_hold;   // [μm] per cell, last row: what holds it (the throat's entry or
+                                           // the rear of the nearest blocked cell ahead) minus the cell's
                                            // front (centroid + half its x-extent); negative beyond it
-  std::vector<double> front_before_hold;   // [μm] per cell, last row: the same from what holds it, the
-                                           // throat's entry or the rear of the nearest blocked cell ahead
   std::vector<double> late_speed_ratio;    // per cell: its mean speed over the last quarter over that over
                                            // the first (infinite when it did not move forward at first)
   double end_time = 0.0;             // [s]

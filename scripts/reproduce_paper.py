@@ -21,6 +21,12 @@ starting a virtual X server when there is no display) into docs/images/paper/, a
   docs/paper.md          per statement: the paper's statement, the measures against their
                          thresholds, met or not, the run's settings and time, the pictures.
 --report-only writes the two files (and pictures) from the runs there are, running nothing.
+
+The report is also the record. A scene whose run folder is not here (a new clone, another
+machine) or has not finished keeps the measures, build and run time that the committed
+docs/paper_checks.csv holds for it, and docs/paper.md says they are recorded ones; a
+finished run in runs/paper/ID replaces them. To drop a scene's record (its settings or
+checks changed), delete its rows from docs/paper_checks.csv.
 A scene that fails (non-zero exit) is recorded and the next one runs; the exit code is 1
 when any did.
 """
@@ -40,6 +46,8 @@ RUNS = os.path.join(ROOT, 'runs', 'paper')
 IMAGES = os.path.join(ROOT, 'docs', 'images', 'paper')
 TIMES_HEADER = ['scene', 'started_utc', 'wall_time_s', 'threads', 'restart', 'exit_code']
 CHECK_COLUMNS = ['figure', 'statement', 'metric', 'value', 'relation', 'threshold', 'unit', 'met']
+RECORD_COLUMNS = ['scene', 'build', 'run_time_s']
+UNMEASURED = ('not measured', 'no measure written')
 
 
 def load_scenes():
@@ -192,12 +200,44 @@ def run_builds(scene_id):
     return builds
 
 
-def statement_rows(statement):
+def read_record():
+    """The measures the committed docs/paper_checks.csv holds, per scene: rows, builds, seconds."""
+    path = os.path.join(ROOT, 'docs', 'paper_checks.csv')
+    record = {}
+    if not os.path.isfile(path):
+        return record
+    with open(path, newline='') as file:
+        for row in csv.DictReader(file):
+            if row['metric'] in UNMEASURED:
+                continue
+            entry = record.setdefault(row['scene'], {'rows': [], 'builds': [], 'seconds': None})
+            entry['rows'].append({column: row[column] for column in CHECK_COLUMNS})
+            entry['builds'] = [build for build in row['build'].split(';') if build]
+            if row.get('run_time_s'):
+                entry['seconds'] = float(row['run_time_s'])
+    return record
+
+
+def scene_result(scene_id, record, times):
+    """What judges a scene: its finished run here, or else the committed record, or None.
+
+    Returns a dict with rows (every measure the driver wrote), builds (one per segment of a
+    run here; the distinct ones of a recorded run), seconds (wall time, or None) and source
+    ('run' or 'record').
+    """
+    rows = scene_checks(scene_id)
+    if rows is not None:
+        return {'rows': rows, 'builds': run_builds(scene_id), 'seconds': times.get(scene_id), 'source': 'run'}
+    if scene_id in record:
+        return dict(record[scene_id], source='record')
+    return None
+
+
+def statement_rows(statement, result):
     """The measures that judge the statement: the scene's rows for its figure."""
-    rows = scene_checks(statement['scene'])
-    if rows is None:
+    if result is None:
         return None
-    return [row for row in rows if row['figure'] == statement['figure']]
+    return [row for row in result['rows'] if row['figure'] == statement['figure']]
 
 
 def verdict(rows):
@@ -208,22 +248,24 @@ def verdict(rows):
     return 'met' if all(row['met'] == '1' for row in rows) else 'not met'
 
 
-def write_checks_csv(statements):
+def write_checks_csv(statements, results):
     path = os.path.join(ROOT, 'docs', 'paper_checks.csv')
     with open(path + '.tmp', 'w', newline='') as file:
         writer = csv.writer(file, quoting=csv.QUOTE_MINIMAL)
-        writer.writerow(CHECK_COLUMNS + ['scene', 'build'])
+        writer.writerow(CHECK_COLUMNS + RECORD_COLUMNS)
         for statement in statements:
-            rows = statement_rows(statement)
-            build = ';'.join(sorted(set(run_builds(statement['scene']))))
+            result = results[statement['scene']]
+            rows = statement_rows(statement, result)
+            build = ';'.join(sorted(set(result['builds']))) if result else ''
+            seconds = f"{result['seconds']:.0f}" if result and result['seconds'] else ''
             if not rows:
                 writer.writerow([statement['figure'], statement['statement'],
-                                 'not measured' if rows is None else 'no measure written', '', '', '', '', 0,
-                                 statement['scene'], build])
+                                 UNMEASURED[0] if rows is None else UNMEASURED[1], '', '', '', '', 0,
+                                 statement['scene'], build, seconds])
                 continue
             for row in rows:
                 writer.writerow([statement['figure'], statement['statement']] +
-                                [row[column] for column in CHECK_COLUMNS[2:]] + [statement['scene'], build])
+                                [row[column] for column in CHECK_COLUMNS[2:]] + [statement['scene'], build, seconds])
     os.replace(path + '.tmp', path)
     return path
 
@@ -232,8 +274,7 @@ def format_hours(seconds):
     return f'{seconds / 60:.0f} min' if seconds < 5400 else f'{seconds / 3600:.1f} h'
 
 
-def write_markdown(scenes, statements):
-    times = wall_times()
+def write_markdown(scenes, statements, results):
     lines = [
         '# The paper, reproduced',
         '',
@@ -251,22 +292,25 @@ def write_markdown(scenes, statements):
         '```sh',
         'scripts/reproduce_paper.sh                    # every scene; continues stopped runs',
         'scripts/reproduce_paper.sh --only stack_0.25  # one scene',
-        'scripts/reproduce_paper.sh --report-only      # this page from the runs in runs/paper',
+        'scripts/reproduce_paper.sh --report-only      # this page from runs/paper and the record',
         '```',
         '',
         'from the scenes listed in `scripts/paper_scenes.toml`; a stopped run continues from its',
         'last checkpoint with the settings it started with. The run times below are wall times',
-        'on the machine named in each run\'s log, summed over its segments.',
+        'on the machine named in each run\'s log, summed over its segments. The csv file is also',
+        'the record: a scene whose run is not on the machine that writes this page keeps the',
+        'measures, build and run time recorded there, and its section says so.',
         '',
         '| figure | statement | outcome | scene | run time |',
         '|---|---|---|---|---|',
     ]
     counts = {}
     for statement in statements:
-        rows = statement_rows(statement)
+        result = results[statement['scene']]
+        rows = statement_rows(statement, result)
         outcome = verdict(rows)
         counts[outcome] = counts.get(outcome, 0) + 1
-        seconds = times.get(statement['scene'])
+        seconds = result['seconds'] if result else None
         shown = f'**{outcome}**' if outcome == 'met' else outcome
         anchor = statement['figure'].lower().replace('. ', '-').replace(' ', '-')
         lines.append(f"| [{statement['figure']}](#{anchor}) | {statement['statement']} | {shown} | "
@@ -274,13 +318,22 @@ def write_markdown(scenes, statements):
     lines += ['', ', '.join(f'{count} {outcome}' for outcome, count in sorted(counts.items())) + '.', '']
     for statement in statements:
         scene = scenes[statement['scene']]
-        rows = statement_rows(statement)
+        result = results[statement['scene']]
+        rows = statement_rows(statement, result)
         lines += [f"## {statement['figure']}", '', f"*{statement['statement']}*", '']
         command = f"build/cases/{scene['driver']} --out runs/paper/{scene['id']}" + ''.join(
             f" --set '{setting}'" for setting in scene['settings'])
         lines += ['```sh', command, '```', '']
-        builds = run_builds(scene['id'])
-        if builds:
+        builds = result['builds'] if result else []
+        if result and result['source'] == 'record':
+            distinct = sorted(set(builds))
+            if len(distinct) == 1:
+                lines += [f"Run by build `{distinct[0]}` (one binary); the measures below are the recorded "
+                          "ones, the run's folder is not on the machine that wrote this page.", '']
+            else:
+                lines += [f"**Run by {len(distinct)} different builds** (" + ', '.join(f'`{build}`' for build in distinct)
+                          + "): not one straight run. The measures below are the recorded ones.", '']
+        elif builds:
             distinct = sorted(set(builds))
             segments = f'{len(builds)} segment' + ('s' if len(builds) > 1 else '')
             if len(distinct) == 1:
@@ -345,7 +398,11 @@ def main():
             for scene_id in chosen:
                 if os.path.isfile(os.path.join(run_dir(scene_id), 'fields_fluid.xdmf')):
                     render_scene(scenes[scene_id], display)
-    print('reproduce_paper: wrote', write_checks_csv(statements), 'and', write_markdown(scenes, statements))
+    record = read_record()
+    times = wall_times()
+    results = {scene_id: scene_result(scene_id, record, times) for scene_id in scenes}
+    print('reproduce_paper: wrote', write_checks_csv(statements, results), 'and',
+          write_markdown(scenes, statements, results))
     if failed:
         print(f"reproduce_paper: failed: {', '.join(failed)} (runs/paper/ID.out)", file=sys.stderr)
         return 1

@@ -351,7 +351,8 @@ def write_markdown(scenes, statements, results):
             lines += ['| measure | value | threshold | met |', '|---|---|---|---|']
             for row in rows:
                 unit = f" {row['unit']}" if row['unit'] else ''
-                lines.append(f"| {row['metric']} | {float(row['value']):.4g}{unit} | {row['relation']} "
+                metric = row['metric'].replace('|', '\\|')  # |x| would split the table's cells
+                lines.append(f"| {metric} | {float(row['value']):.4g}{unit} | {row['relation']} "
                              f"{float(row['threshold']):.4g}{unit} | {'yes' if row['met'] == '1' else 'no'} |")
             lines += ['', f"**{verdict(rows)}**.", '']
         pictures = [snapshot_path(scene['id'], seconds) for seconds in scene['snapshots_s']]

@@ -36,6 +36,7 @@ TEST(SceneChecks, StackMeasuresAreTheChangesBetweenTheFirstAndLastRows) {
                              stack_row({-1, 0, 0, 1}, {-6.5, -2, 2.3, 6}, -12.0, {1.0, 2.1, 1.3}, 4.5)};
   const auto m = rouleau::measure_stack(rows, 4, 4, 0.25);
   EXPECT_NEAR(m.largest_gap_growth, 0.7, 1e-12);          // the middle gap, 1.4 -> 2.1
+  EXPECT_NEAR(m.smallest_gap_growth, -0.4, 1e-12);        // the lower gap, 1.4 -> 1.0
   EXPECT_NEAR(m.largest_separation_change, 0.5, 1e-12);   // cells 0-1: 4 -> 4.5
   EXPECT_NEAR(m.mean_inclination_deg, -10.5, 1e-12);      // -12, -11, -10, -9
   EXPECT_NEAR(m.inclination_spread_deg, 3.0, 1e-12);
@@ -61,8 +62,9 @@ TEST(SceneChecks, EachShearRateHasThePapersStatementWithItsThresholds) {
   held.stack_axis_deg = 18.0;
   held.inclination_spread_deg = 2.0;
   held.duration = 8.0;
-  rouleau::StackMeasures parted = held;  // the same with a gap grown by 0.4 um
-  parted.largest_gap_growth = 0.4;
+  rouleau::StackMeasures parted = held;  // the same with every gap grown by 0.4 um or more
+  parted.largest_gap_growth = 0.6;
+  parted.smallest_gap_growth = 0.4;
   parted.intact = false;
   const double r0 = 0.25;
   const auto rotates = rouleau::check_stack_statement(held, 0.25, true, r0);
@@ -94,20 +96,32 @@ TEST(SceneChecks, EachShearRateHasThePapersStatementWithItsThresholds) {
   rouleau::StackMeasures tumbling = parted;
   tumbling.inclination_spread_deg = 25.0;
   EXPECT_FALSE(rouleau::check_stack_statement(tumbling, 3.0, true, r0).met);
+  // Two doublets sliding apart as parallel layers (the middle gap grown 3.5 um, the outer
+  // ones closed by 0.05): not a complete break-up (Fig. 11), but a partial one (Fig. 12).
+  rouleau::StackMeasures doublets = parted;
+  doublets.largest_gap_growth = 3.5;
+  doublets.smallest_gap_growth = -0.05;
+  const auto two_doublets = rouleau::check_stack_statement(doublets, 3.0, true, r0);
+  EXPECT_FALSE(two_doublets.met);
+  EXPECT_NE(two_doublets.measured.find("smallest gap growth (threshold r0) -0.0500 > 0.25 um: NO"), std::string::npos)
+      << two_doublets.measured;
+  doublets.duration = 3.0;  // strain 9, the paper's twelve cells'
+  EXPECT_TRUE(rouleau::check_stack_statement(doublets, 3.0, true, r0, 3).met);
   rouleau::StackMeasures twelve = parted;
   twelve.duration = 2.0;  // strain 6, the paper's twelve cells sheared to 9
   const auto aggregate = rouleau::check_stack_statement(twelve, 3.0, true, r0, 3);
   EXPECT_EQ(aggregate.figure, "Fig. 12");
   EXPECT_FALSE(aggregate.met);
   EXPECT_TRUE(rouleau::check_stack_statement(twelve, 3.0, true, r0, 1).met);  // one column: Fig. 11, strain 1.5
-  // Each measure is printed with the relation it was held to and whether it holds: a gap
-  // that closed by 0.88 um at 3.0 1/s reads "-0.8800 > 0.25 um: NO".
+  // Each measure is printed with the relation it was held to and whether it holds: gaps
+  // that closed by 0.88 um at 3.0 1/s read "-0.8800 > 0.25 um: NO".
   rouleau::StackMeasures closed = parted;
-  closed.largest_gap_growth = -0.88;
+  closed.largest_gap_growth = -0.5;
+  closed.smallest_gap_growth = -0.88;
   closed.intact = true;
   const auto not_apart = rouleau::check_stack_statement(closed, 3.0, true, r0);
   EXPECT_FALSE(not_apart.met);
-  EXPECT_NE(not_apart.measured.find("largest gap growth (threshold r0) -0.8800 > 0.25 um: NO"), std::string::npos)
+  EXPECT_NE(not_apart.measured.find("smallest gap growth (threshold r0) -0.8800 > 0.25 um: NO"), std::string::npos)
       << not_apart.measured;
   EXPECT_NE(not_apart.measured.find("inclination spread 2.0000 < 10 deg: yes"), std::string::npos)
       << not_apart.measured;

@@ -191,6 +191,8 @@ RimInteractionCheck check_interaction_at_rims(const DiagnosticsRows& rows);
 // are (i, i+1) within a column; the stack axis is the first column's.
 struct StackMeasures {
   double largest_gap_growth = 0.0;         // [μm] max over neighbours of last − first gap_i_(i+1)
+  double smallest_gap_growth = 0.0;        // [μm] min over neighbours of the same: above r0, no
+                                           // neighbours are left together
   double largest_separation_change = 0.0;  // [μm] max over neighbours of |Δy_last − Δy_first| (centroids)
   double mean_inclination_deg = 0.0;       // last row: the cells' mean inclination in the shear plane
                                            // (0 = major axis along the flow)
@@ -218,8 +220,11 @@ StackMeasures measure_stack(const DiagnosticsRows& rows, int cells, int cells_pe
 // - ≤ 1 1/s (Fig. 10): it aligns with the flow and starts to separate (a gap grew by more
 //   than r0, out of the Morse well's range, the complement of "intact"; |mean inclination|
 //   < 20°);
-// - above (Fig. 11; Fig. 12 for more than one column): it breaks up into parallel layers
-//   (a gap grew by more than r0; the inclinations agree within 10°).
+// - above, one column (Fig. 11): it breaks up completely into parallel layers (every
+//   neighbour gap grew by more than r0, so no doublet is left; the inclinations agree
+//   within 10°);
+// - above, more than one column (Fig. 12): it partly breaks up and aligns in layers (a gap
+//   grew by more than r0; the inclinations agree within 10°).
 // Each holds over the paper's duration, so the run must have sheared at least as long:
 // its strain (shear rate × duration) at least the paper's — Figs. 8 and 9 to 4 s at
 // 0.25 1/s (strain 1), Fig. 10 to 1 s at 0.5 1/s (0.5), Fig. 11 to 0.5 s at 3 1/s (1.5),

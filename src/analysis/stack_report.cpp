@@ -39,9 +39,9 @@ std::vector<PaperCheckRow> print_stack_report(const CaseConfig& config, const Di
   const double r0 = config.interaction.morse.zero_force_length;
   const StackMeasures m = measure_stack(rows, cells, per_column, r0);
   const double end = rows.back().at("time_s");
-  std::printf("shear rate %.3g 1/s, t = %.4g s (strain %.3g): largest neighbour gap growth %.4f um, largest change "
-              "of a vertical separation %.4f um, mean inclination %.2f deg (spread %.2f), stack axis %.2f deg, %s\n",
-              shear_rate, end, shear_rate * end, m.largest_gap_growth, m.largest_separation_change,
+  std::printf("shear rate %.3g 1/s, t = %.4g s (strain %.3g): neighbour gap growth %.4f to %.4f um, largest "
+              "change of a vertical separation %.4f um, mean inclination %.2f deg (spread %.2f), stack axis %.2f deg, %s\n",
+              shear_rate, end, shear_rate * end, m.smallest_gap_growth, m.largest_gap_growth, m.largest_separation_change,
               m.mean_inclination_deg, m.inclination_spread_deg, m.stack_axis_deg, m.intact ? "intact" : "broken up");
   // The paper's statement for this run, as measures against thresholds.
   const StackStatement check =

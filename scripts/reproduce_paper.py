@@ -329,7 +329,7 @@ def write_markdown(scenes, statements, results):
             distinct = sorted(set(builds))
             if len(distinct) == 1:
                 lines += [f"Run by build `{distinct[0]}` (one binary); the measures below are the recorded "
-                          "ones, the run's folder is not on the machine that wrote this page.", '']
+                          "ones: no finished run of this scene was on the machine that wrote this page.", '']
             else:
                 lines += [f"**Run by {len(distinct)} different builds** (" + ', '.join(f'`{build}`' for build in distinct)
                           + "): not one straight run. The measures below are the recorded ones.", '']

@@ -10,6 +10,7 @@ namespace rouleau {
 struct Hex8 {
   static constexpr int nodes = 8;
   static constexpr int quadrature_points = 8;
+  static constexpr bool affine = false;  // trilinear: ∂ξ/∂x varies over the element
 
   // Reference coordinate sign of node a along direction d.
   KOKKOS_INLINE_FUNCTION static double node_sign(int a, int d) {

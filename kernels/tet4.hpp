@@ -24,6 +24,10 @@ struct Tet4 {
   // (b, b, b), (a, b, b), (b, a, b), (b, b, a) with a = (5 + 3√5)/20, b = (5 − √5)/20,
   // weight 1/24 each (the reference volume is 1/6). Exact for the mass matrix N_a N_b.
   static constexpr int quadrature_points = 4;
+  // Affine: ∂ξ/∂x is the same at every point and the weights are equal, so the first
+  // point's geometry is the element's and linear fields have closed-form integrals
+  // (fluid_element_residual_affine_stokes).
+  static constexpr bool affine = true;
   KOKKOS_INLINE_FUNCTION static void quadrature_point(int q, double xi[3]) {
     constexpr double a = 0.58541019662496845446, b = 0.13819660112501051518;
     for (int d = 0; d < 3; ++d) xi[d] = q == d + 1 ? a : b;

@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Sparse>
+#include <algorithm>
+#include <cmath>
+#include <random>
 #include <KokkosBlas1_nrm2.hpp>
 #include <KokkosBlas1_update.hpp>
 #include <Kokkos_Random.hpp>
@@ -10,6 +13,8 @@
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/fluid_matrix.hpp"
 #include "fluid/fluid_operator.hpp"
+#include "kernels/fluid_assembly.hpp"
+#include "kernels/tet4.hpp"
 #include "mesh/fluid_mesh.hpp"
 #include "test_helpers.hpp"
 
@@ -319,6 +324,111 @@ TEST_P(FluidOperatorOn, SerialAndOpenMPBackendsAgreeToRoundOff) {
   compare("linear_action", a, b);
 }
 #endif
+
+// The linear tetrahedron integrated by its 4-point rule: the reference for the closed forms
+// the affine element takes in the Stokes limit.
+struct Tet4ByQuadrature : Tet4 {
+  static constexpr bool affine = false;
+};
+
+// Largest |a − b| over the largest |b| of two element arrays.
+template <int Rows, int Columns>
+double relative_gap(const double (&a)[Rows][Columns], const double (&b)[Rows][Columns]) {
+  double gap = 0.0, scale = 0.0;
+  for (int r = 0; r < Rows; ++r)
+    for (int c = 0; c < Columns; ++c) {
+      gap = std::max(gap, std::abs(a[r][c] - b[r][c]));
+      scale = std::max(scale, std::abs(b[r][c]));
+    }
+  return gap / scale;
+}
+
+TEST(FluidElement, AffineStokesClosedFormsEqualTheQuadrature) {
+  // A skewed tetrahedron, random nodal fields; the residual, the subscale moments, their
+  // derivatives along a direction (Dual<1>), the loads' stabilization and the gradient
+  // moments in closed form against the same by quadrature (exact for them: degree 2).
+  Kokkos::View<double* [3]> coordinates("coordinates", 4);
+  Kokkos::View<int**> element_nodes("element_nodes", 1, 4);
+  const double corners[4][3] = {{0.1, -0.2, 0.05}, {1.3, 0.1, -0.1}, {0.4, 0.9, 0.2}, {0.2, 0.3, 1.1}};
+  for (int a = 0; a < 4; ++a) {
+    element_nodes(0, a) = a;
+    for (int d = 0; d < 3; ++d) coordinates(a, d) = corners[a][d];
+  }
+  Kokkos::View<double***> geometry("geometry", 1, Tet4::quadrature_points, geometry_entries);
+  Kokkos::View<double*> element_size("element_size", 1);
+  int inverted = 0;
+  FluidGeometryFunctor<Tet4>{coordinates, element_nodes, 1.0, geometry, element_size}(0, inverted);
+  ASSERT_EQ(inverted, 0);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  double state[4][4], direction[4][4], frozen[4][3], history[4][3], force[4][3], density[4][3];
+  double gradient[36];
+  for (int a = 0; a < 4; ++a) {
+    for (int c = 0; c < 4; ++c) state[a][c] = uniform(random), direction[a][c] = uniform(random);
+    for (int i = 0; i < 3; ++i)
+      frozen[a][i] = uniform(random), history[a][i] = uniform(random), force[a][i] = uniform(random),
+      density[a][i] = uniform(random);
+  }
+  for (double& g : gradient) g = uniform(random);
+  const double h = element_size(0);
+  for (int reconstruction : {0, 1}) {
+    FluidCoefficients coef;
+    coef.reynolds = 3.0;
+    coef.mass_coefficient = 15.0;
+    coef.inverse_dt = 10.0;
+    coef.convection = 0;
+    coef.viscous_reconstruction = reconstruction;
+    double closed[4][4] = {}, quadrature[4][4] = {}, closed_moments[4][3] = {}, quadrature_moments[4][3] = {};
+    fluid_element_residual<Tet4, double>(coef, geometry, 0, h, state, frozen, history, force, gradient, closed,
+                                         closed_moments);
+    fluid_element_residual<Tet4ByQuadrature, double>(coef, geometry, 0, h, state, frozen, history, force, gradient,
+                                                     quadrature, quadrature_moments);
+    fluid_element_load_stabilization<Tet4>(coef, geometry, 0, h, frozen, density, closed, closed_moments);
+    fluid_element_load_stabilization<Tet4ByQuadrature>(coef, geometry, 0, h, frozen, density, quadrature,
+                                                       quadrature_moments);
+    // In dual numbers: the state moved along the direction, the gradient along its own.
+    Dual<1> dual_state[4][4], dual_gradient[36], dual_closed[4][4], dual_quadrature[4][4], dual_closed_moments[4][3],
+        dual_quadrature_moments[4][3];
+    for (int a = 0; a < 4; ++a)
+      for (int c = 0; c < 4; ++c) {
+        dual_state[a][c] = Dual<1>(state[a][c]);
+        dual_state[a][c].derivative[0] = direction[a][c];
+      }
+    for (int k = 0; k < 36; ++k) {
+      dual_gradient[k] = Dual<1>(gradient[k]);
+      dual_gradient[k].derivative[0] = gradient[(k + 5) % 36];
+    }
+    fluid_element_residual<Tet4, Dual<1>>(coef, geometry, 0, h, dual_state, frozen, history, force, dual_gradient,
+                                          dual_closed, dual_closed_moments);
+    fluid_element_residual<Tet4ByQuadrature, Dual<1>>(coef, geometry, 0, h, dual_state, frozen, history, force,
+                                                      dual_gradient, dual_quadrature, dual_quadrature_moments);
+    double derivative_closed[4][4], derivative_quadrature[4][4], moments_derivative_closed[4][3],
+        moments_derivative_quadrature[4][3];
+    for (int a = 0; a < 4; ++a) {
+      for (int c = 0; c < 4; ++c) {
+        derivative_closed[a][c] = dual_closed[a][c].derivative[0];
+        derivative_quadrature[a][c] = dual_quadrature[a][c].derivative[0];
+      }
+      for (int i = 0; i < 3; ++i) {
+        moments_derivative_closed[a][i] = dual_closed_moments[a][i].derivative[0];
+        moments_derivative_quadrature[a][i] = dual_quadrature_moments[a][i].derivative[0];
+      }
+    }
+    double closed_gradient[4][9], quadrature_gradient[4][9], closed_mass[4], quadrature_mass[4];
+    element_gradient_moments<Tet4>(geometry, 0, state, closed_gradient, closed_mass);
+    element_gradient_moments<Tet4ByQuadrature>(geometry, 0, state, quadrature_gradient, quadrature_mass);
+    double mass_gap = 0.0;
+    for (int a = 0; a < 4; ++a) mass_gap = std::max(mass_gap, std::abs(closed_mass[a] / quadrature_mass[a] - 1.0));
+    const double gaps[] = {relative_gap(closed, quadrature), relative_gap(closed_moments, quadrature_moments),
+                           relative_gap(derivative_closed, derivative_quadrature),
+                           relative_gap(moments_derivative_closed, moments_derivative_quadrature),
+                           relative_gap(closed_gradient, quadrature_gradient), mass_gap};
+    std::printf("viscous reconstruction %d: closed form against quadrature: residual %.1e, subscale moments %.1e, "
+                "their derivatives %.1e and %.1e, gradient moments %.1e, lumped mass %.1e\n",
+                reconstruction, gaps[0], gaps[1], gaps[2], gaps[3], gaps[4], gaps[5]);
+    for (double gap : gaps) EXPECT_LT(gap, 1e-13);
+  }
+}
 
 TEST_P(FluidOperatorOn, InvertedElementIsRejected) {
   FluidMesh mesh = make_box_mesh({0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {1, 1, 1}, {false, false, false});

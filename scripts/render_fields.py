@@ -8,7 +8,8 @@
 Opens RUN_DIR/fields_fluid.xdmf and, when the case has cells, RUN_DIR/fields_cells.xdmf
 (the per-mesh files a run writes; docs/paraview.md) with ParaView's Xdmf3ReaderT, and
 draws at time T (seconds; default: the last step written, otherwise the nearest step):
-  - the plasma: a slice across the line of sight at the back of the fluid box, coloured by
+  - the plasma: a slice across the line of sight at the back of the fluid box (through the
+    axis of a vessel), coloured by
     its velocity (velocity_um_s, um/s): the magnitude (default) or one component, and the
     box's outline;
   - the cells: their outer surfaces, coloured by the magnitude of --cell-field (default
@@ -68,6 +69,15 @@ def resolved_case_entry(run_dir, key):
     section = re.search(r"^\[case\]\s*$(.*?)(?=^\[|\Z)", text, re.MULTILINE | re.DOTALL)
     match = section and re.search(rf"^{key}\s*=\s*(['\"])(.*)\1\s*$", section.group(1), re.MULTILINE)
     return match.group(2) if match else None
+
+
+def is_vessel(run_dir):
+    """Whether RUN_DIR's case is a vessel (its case.resolved.toml has a [vessel] table)."""
+    try:
+        with open(os.path.join(run_dir, "case.resolved.toml")) as f:
+            return re.search(r"^\[vessel\]\s*$", f.read(), re.MULTILINE) is not None
+    except OSError:
+        return False
 
 
 def case_name(run_dir):
@@ -138,7 +148,9 @@ def main():
     view.ViewTime = t
     pv.GetAnimationScene().AnimationTime = t
 
-    # The plasma: a slice 2 % inside the back of the box, across the line of sight.
+    # The plasma: a slice 2 % inside the back of the box, across the line of sight; in a
+    # vessel through its axis instead (the back of its bounding box grazes the wall, where
+    # the plasma is at rest), cutting the cells' back halves from view.
     fluid.UpdatePipeline(t)
     bounds = fluid.GetDataInformation().GetBounds()
     centre = [(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2, (bounds[4] + bounds[5]) / 2]
@@ -146,7 +158,8 @@ def main():
     normal = [0.0, 0.0, 0.0]
     normal[axis] = 1.0
     origin = list(centre)
-    origin[axis] = bounds[2 * axis] + 0.02 * (bounds[2 * axis + 1] - bounds[2 * axis])
+    if not is_vessel(run_dir):
+        origin[axis] = bounds[2 * axis] + 0.02 * (bounds[2 * axis + 1] - bounds[2 * axis])
     plane = pv.Slice(registrationName="plasma slice", Input=fluid)
     plane.SliceType = "Plane"
     plane.SliceType.Origin = origin

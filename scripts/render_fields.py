@@ -149,8 +149,9 @@ def main():
     pv.GetAnimationScene().AnimationTime = t
 
     # The plasma: a slice 2 % inside the back of the box, across the line of sight; in a
-    # vessel through its axis instead (the back of its bounding box grazes the wall, where
-    # the plasma is at rest), cutting the cells' back halves from view.
+    # vessel just behind the cells instead (the back of its bounding box grazes the wall,
+    # where the plasma is at rest): 0.5 um behind the rearmost cell point, or through the
+    # axis when that lies nearer the back.
     fluid.UpdatePipeline(t)
     bounds = fluid.GetDataInformation().GetBounds()
     centre = [(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2, (bounds[4] + bounds[5]) / 2]
@@ -160,6 +161,11 @@ def main():
     origin = list(centre)
     if not is_vessel(run_dir):
         origin[axis] = bounds[2 * axis] + 0.02 * (bounds[2 * axis + 1] - bounds[2 * axis])
+    elif os.path.exists(cells_file):
+        placed = pv.Xdmf3ReaderT(registrationName="cell bounds", FileName=[cells_file])
+        placed.UpdatePipeline(t)
+        rearmost = placed.GetDataInformation().GetBounds()[2 * axis]
+        origin[axis] = min(centre[axis], rearmost - 0.5)
     plane = pv.Slice(registrationName="plasma slice", Input=fluid)
     plane.SliceType = "Plane"
     plane.SliceType.Origin = origin

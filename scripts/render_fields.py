@@ -8,8 +8,8 @@
 Opens RUN_DIR/fields_fluid.xdmf and, when the case has cells, RUN_DIR/fields_cells.xdmf
 (the per-mesh files a run writes; docs/paraview.md) with ParaView's Xdmf3ReaderT, and
 draws at time T (seconds; default: the last step written, otherwise the nearest step):
-  - the plasma: a slice across the line of sight at the back of the fluid box (through the
-    axis of a vessel), coloured by
+  - the plasma: a slice across the line of sight at the back of the fluid box (in a vessel
+    just behind its cells, at most through its axis), coloured by
     its velocity (velocity_um_s, um/s): the magnitude (default) or one component, and the
     box's outline;
   - the cells: their outer surfaces, coloured by the magnitude of --cell-field (default

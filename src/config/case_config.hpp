@@ -110,6 +110,9 @@ struct SolverConfig {
   // The multigrid's smoother: block-Jacobi sweeps (fully parallel, 2.5–6.5× faster fluid
   // solves than ILU(0) on the paper scenes) or ILU(0) (fewer GMRES iterations, launch-bound).
   MultigridSmoother multigrid_smoother = MultigridSmoother::block_jacobi;
+  // What the block-Jacobi sweeps and the cycle's residuals read the level matrices in:
+  // float copies halve the traffic of the multigrid's memory-bound passes.
+  MultigridPrecision multigrid_precision = MultigridPrecision::single_precision;
   // A Stokes step's starting guess: the combination of the last this many solutions with the
   // least residual (fluid/fluid_solver.hpp); 0: 2 U^n − U^{n−1}.
   int starting_guess_solutions = 4;

@@ -38,6 +38,8 @@ inline constexpr std::array<NamedChoice<PreconditionerType>, 6> preconditioner_n
      {PreconditionerType::none, "none"}}};
 inline constexpr std::array<NamedChoice<MultigridSmoother>, 2> multigrid_smoother_names{
     {{MultigridSmoother::block_jacobi, "block_jacobi"}, {MultigridSmoother::ilu0, "ilu0"}}};
+inline constexpr std::array<NamedChoice<MultigridPrecision>, 2> multigrid_precision_names{
+    {{MultigridPrecision::single_precision, "single"}, {MultigridPrecision::double_precision, "double"}}};
 inline constexpr std::array<NamedChoice<InteractionQuadrature>, 4> interaction_quadrature_names{
     {{InteractionQuadrature::automatic, "auto"},
      {InteractionQuadrature::nodes, "nodes"},
@@ -56,6 +58,7 @@ constexpr const auto& named_choices(TimeScheme) { return time_scheme_names; }
 constexpr const auto& named_choices(StokesChoice) { return stokes_choice_names; }
 constexpr const auto& named_choices(PreconditionerType) { return preconditioner_names; }
 constexpr const auto& named_choices(MultigridSmoother) { return multigrid_smoother_names; }
+constexpr const auto& named_choices(MultigridPrecision) { return multigrid_precision_names; }
 constexpr const auto& named_choices(InteractionQuadrature) { return interaction_quadrature_names; }
 constexpr const auto& named_choices(CouplingScheme) { return coupling_scheme_names; }
 constexpr const auto& named_choices(FilmModel) { return film_model_names; }

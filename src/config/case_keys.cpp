@@ -124,6 +124,9 @@ std::vector<CaseKey> make_case_keys() {
        "and CPU threads, multigrid elsewhere"},
       {"solver", "multigrid_smoother", Kind::choice, "", "\"block_jacobi\"", any, spellings<MultigridSmoother>(),
        "the multigrid's smoother: block_jacobi (fully parallel sweeps) or ilu0 (triangular solves)"},
+      {"solver", "multigrid_precision", Kind::choice, "", "\"single\"", any, spellings<MultigridPrecision>(),
+       "what the multigrid's block-Jacobi sweeps and residuals read its matrices in: single (float copies, half "
+       "the memory traffic; the arithmetic, the coarse operators and GMRES stay in double) or double"},
       {"solver", "starting_guess_solutions", Kind::integer, "", "4", Range::closed(0, 16), {},
        "Stokes steps start GMRES from the least-residual combination of the last this many solutions; 0: the last "
        "solution extrapolated linearly"},

@@ -180,9 +180,12 @@ MemoryEstimate estimate_memory(const CaseConfig& config, int threads) {
       // blocks (measured on hexahedra and tetrahedra, 16³–32³). Per level of N_l nodes with
       // B_l blocks each: values, columns, block rows and contributions (204 B_l N_l bytes),
       // row map and vectors; block-Jacobi keeps 2 × 16 doubles and 2 vectors (a sweep's buffer and the
-      // power iteration's) per node, ILU(0) its factors.
+      // power iteration's) per node, and in single precision a float copy of every level's
+      // values but the coarsest's (64 B_l N_l bytes, 1.31 times the fine level's); ILU(0) its factors.
       if (config.solver.multigrid_smoother == MultigridSmoother::block_jacobi) {
-        add("multigrid: Jacobian blocks, block-Jacobi smoothers, coarse levels", (595.0 + 270.0 * B) * N + 4.0 * E);
+        const double rounded = config.solver.multigrid_precision == MultigridPrecision::single_precision ? 84.0 : 0.0;
+        add("multigrid: Jacobian blocks, block-Jacobi smoothers, coarse levels",
+            (595.0 + (270.0 + rounded) * B) * N + 4.0 * E);
       } else {
         add("multigrid: Jacobian blocks, ILU(0) smoothers, coarse levels", (380.0 + 520.0 * B) * N + 4.0 * E);
         add("ILU(0) level-schedule scratch", ilu_scratch);

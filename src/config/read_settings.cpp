@@ -60,6 +60,7 @@ void read_solver(const TableReader& root, SolverConfig& solver) {
   assign(solver.gmres_max_iterations, section.integer("gmres_max_iterations"));
   assign(solver.preconditioner, section.choice<PreconditionerType>("preconditioner"));
   assign(solver.multigrid_smoother, section.choice<MultigridSmoother>("multigrid_smoother"));
+  assign(solver.multigrid_precision, section.choice<MultigridPrecision>("multigrid_precision"));
   assign(solver.starting_guess_solutions, section.integer("starting_guess_solutions"));
 }
 

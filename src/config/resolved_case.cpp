@@ -212,6 +212,7 @@ std::string resolved_case_toml(const CaseConfig& config, const DerivedQuantities
   toml_file.key("gmres_max_iterations", solver.gmres_max_iterations);
   toml_file.key("preconditioner", toml_name(solver.preconditioner));
   toml_file.key("multigrid_smoother", toml_name(solver.multigrid_smoother));
+  toml_file.key("multigrid_precision", toml_name(solver.multigrid_precision));
   toml_file.key("starting_guess_solutions", solver.starting_guess_solutions);
 
   toml_file.table("scales", "0 = derived from the case (see [derived])");

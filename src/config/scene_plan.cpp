@@ -54,7 +54,9 @@ ScenePlan plan_scene(const CaseConfig& config, const DerivedQuantities& derived)
     case PreconditionerType::multigrid:
       preconditioner = std::string("aggregation multigrid W-cycle (pairwise aggregates of up to 4 nodes, ") +
                        (config.solver.multigrid_smoother == MultigridSmoother::block_jacobi
-                            ? "3 damped block-Jacobi sweeps"
+                            ? (config.solver.multigrid_precision == MultigridPrecision::single_precision
+                                   ? "3 damped block-Jacobi sweeps reading float copies of the level matrices"
+                                   : "3 damped block-Jacobi sweeps")
                             : "ILU(0)") +
                        " smoothing, sparse LU on the coarsest level) of the assembled Jacobian, " + when;
       break;

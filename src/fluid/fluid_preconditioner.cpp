@@ -84,6 +84,7 @@ class AssembledMultigrid final : public FluidPreconditioner, private AssembledJa
 AggregationMultigridSettings multigrid_settings(const SolverConfig& solver) {
   AggregationMultigridSettings settings;
   settings.smoother = solver.multigrid_smoother;
+  settings.precision = solver.multigrid_precision;
   return settings;
 }
 

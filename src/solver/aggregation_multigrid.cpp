@@ -17,6 +17,7 @@ namespace {
 using IntView = Kokkos::View<int*>;
 using DoubleView = Kokkos::View<double*>;
 using ConstView = Kokkos::View<const double*>;
+using FloatView = Kokkos::View<float*>;
 
 // Position of entry (i, j) of the block at neighbour index n of row node A
 // (BlockMatrixGraph's layout).
@@ -30,6 +31,7 @@ KOKKOS_INLINE_FUNCTION std::size_t block_entry(const IntView& offsets, int A, in
 struct AggregationMultigrid::Level {
   BlockMatrixGraph graph;
   DoubleView values;
+  FloatView rounded_values;  // the values rounded to float, when the sweeps read that
   IntView block_row;  // row node of each block (neighbour index)
   std::unique_ptr<MatrixPreconditioner> smoother;
   DoubleView rhs, solution, residual, correction;
@@ -126,11 +128,14 @@ AggregationMultigrid::AggregationMultigrid(const BlockMatrixGraph& fine_graph, c
       level->members = device_copy(members, "rouleau::AggregationMultigrid::members");
       level->contribution_offsets = device_copy(count, "rouleau::AggregationMultigrid::contribution_offsets");
       level->contributions = device_copy(contributions, "rouleau::AggregationMultigrid::contributions");
-      if (settings_.smoother == MultigridSmoother::ilu0)
+      if (settings_.smoother == MultigridSmoother::ilu0) {
         level->smoother = std::make_unique<Ilu0Preconditioner>(graph.row_map, graph.entries);
-      else
+      } else {
         level->smoother =
             std::make_unique<BlockJacobiSmoother>(graph, settings_.jacobi_sweeps, settings_.jacobi_damping_times_radius);
+        if (settings_.precision == MultigridPrecision::single_precision)
+          level->rounded_values = FloatView("rouleau::AggregationMultigrid::rounded_values", graph.entries.extent(0));
+      }
       levels_.push_back(std::move(level));
 
       graph = make_block_matrix_graph(coarse_offsets, coarse_neighbors);
@@ -164,7 +169,14 @@ void AggregationMultigrid::set_values(const Kokkos::View<double*>& fine_values) 
   for (std::size_t l = 0; l + 1 < levels_.size(); ++l) {
     const Level& fine = *levels_[l];
     const Level& coarse = *levels_[l + 1];
-    fine.smoother->factor(fine.values);
+    if (fine.rounded_values.extent(0) > 0) {
+      const DoubleView values = fine.values;
+      const FloatView rounded = fine.rounded_values;
+      Kokkos::parallel_for(
+          "rouleau::AggregationMultigrid::round", rounded.extent(0),
+          KOKKOS_LAMBDA(const std::size_t e) { rounded(e) = static_cast<float>(values(e)); });
+    }
+    fine.smoother->factor(fine.values, fine.rounded_values);
     // A_{l+1}(I, J) = Σ_{a∈I, b∈J} A_l(a, b), block by block.
     const IntView fine_offsets = fine.graph.node_offsets, fine_rows = fine.block_row;
     const IntView coarse_offsets = coarse.graph.node_offsets, coarse_rows = coarse.block_row;
@@ -193,7 +205,8 @@ void AggregationMultigrid::set_values(const Kokkos::View<double*>& fine_values) 
 namespace {
 
 // residual = rhs − A x on a level's matrix, node block by node block.
-void block_residual(const BlockMatrixGraph& graph, const DoubleView& values, const ConstView& rhs, const DoubleView& x,
+template <class Values>
+void block_residual(const BlockMatrixGraph& graph, const Values& values, const ConstView& rhs, const DoubleView& x,
                     const DoubleView& residual) {
   const IntView offsets = graph.node_offsets, neighbors = graph.node_neighbors;
   Kokkos::parallel_for(
@@ -235,6 +248,16 @@ void add(const DoubleView& correction, const DoubleView& solution) {
 
 }  // namespace
 
+// residual = rhs − A x with the values the level's smoother reads.
+void AggregationMultigrid::level_residual(int l, const Kokkos::View<const double*>& rhs,
+                                          const Kokkos::View<double*>& x) const {
+  const Level& level = *levels_[l];
+  if (level.rounded_values.extent(0) > 0)
+    block_residual(level.graph, level.rounded_values, rhs, x, level.residual);
+  else
+    block_residual(level.graph, level.values, rhs, x, level.residual);
+}
+
 void AggregationMultigrid::cycle(int l, const Kokkos::View<const double*>& rhs,
                                  const Kokkos::View<double*>& solution) const {
   const Level& level = *levels_[l];
@@ -249,13 +272,13 @@ void AggregationMultigrid::cycle(int l, const Kokkos::View<const double*>& rhs,
   level.smoother->apply(rhs, solution);
   // The coarse-grid correction, `cycle_index` times (1: V-cycle, 2: W-cycle).
   for (int visit = 0; visit < settings_.cycle_index; ++visit) {
-    block_residual(level.graph, level.values, rhs, solution, level.residual);
+    level_residual(l, rhs, solution);
     restrict_to_coarse(level.member_offsets, level.members, level.residual, coarse.rhs);
     cycle(l + 1, coarse.rhs, coarse.solution);
     prolong_and_add(level.aggregate_of, coarse.solution, solution);
   }
   // Post-smoothing: x += S⁻¹ (b − A x).
-  block_residual(level.graph, level.values, rhs, solution, level.residual);
+  level_residual(l, rhs, solution);
   level.smoother->apply(level.residual, level.correction);
   add(level.correction, solution);
 }
@@ -281,6 +304,8 @@ std::vector<std::size_t> AggregationMultigrid::level_entries() const {
 const BlockMatrixGraph& AggregationMultigrid::level_graph(int l) const { return levels_.at(l)->graph; }
 
 Kokkos::View<double*> AggregationMultigrid::level_values(int l) const { return levels_.at(l)->values; }
+
+Kokkos::View<float*> AggregationMultigrid::level_rounded_values(int l) const { return levels_.at(l)->rounded_values; }
 
 std::vector<int> AggregationMultigrid::level_aggregates(int l) const {
   const IntView& aggregate_of = levels_.at(l)->aggregate_of;

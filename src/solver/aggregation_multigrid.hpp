@@ -16,7 +16,8 @@
 // Apply (one W-cycle: a fixed linear operator, so plain GMRES may use it), on level l
 // from x = 0:
 //   x = S⁻¹ b;  twice: x += P cycle_{l+1}(Pᵀ (b − A x));  x += S⁻¹ (b − A x)
-// with S the level's smoother. A piecewise-constant P gives coarse operators too stiff for
+// with S the level's smoother (the sweeps and the residuals b − A x reading the level's
+// matrix rounded to float, by default: solver/multigrid_smoother.hpp). A piecewise-constant P gives coarse operators too stiff for
 // the smooth error they must correct, so a V-cycle (one coarse visit) loses accuracy with
 // every level; visiting the coarse level twice (or a Krylov K-cycle, Notay 2010) recovers
 // it. Measured on the Stokes manufactured problem of bench_fluid_operator (GMRES
@@ -53,6 +54,8 @@ struct AggregationMultigridSettings {
   MultigridSmoother smoother = MultigridSmoother::block_jacobi;
   int jacobi_sweeps = 3;                  // block_jacobi: sweeps per smoothing
   double jacobi_damping_times_radius = 1.3;  // block_jacobi: ω ρ(D⁻¹A) on every level
+  // block_jacobi: what the sweeps and the residuals read the level matrices in
+  MultigridPrecision precision = MultigridPrecision::single_precision;
 };
 
 class AggregationMultigrid final : public Preconditioner {
@@ -80,6 +83,9 @@ class AggregationMultigrid final : public Preconditioner {
   // reference of the Galerkin products and the cycle.
   const BlockMatrixGraph& level_graph(int l) const;
   Kokkos::View<double*> level_values(int l) const;
+  // Level l's matrix rounded to float, as its sweeps and residuals read it (empty when they
+  // read level_values(l): double precision, ILU(0) smoothing, the coarsest level).
+  Kokkos::View<float*> level_rounded_values(int l) const;
   std::vector<int> level_aggregates(int l) const;
   // The block-Jacobi smoother's damping ω on level l (0 with ILU(0) and on the coarsest).
   double level_jacobi_damping(int l) const;
@@ -89,6 +95,8 @@ class AggregationMultigrid final : public Preconditioner {
   struct CoarsestSolver;
   // One cycle on level l: solution = M_l⁻¹ rhs (the level's own vectors below the finest).
   void cycle(int level, const Kokkos::View<const double*>& rhs, const Kokkos::View<double*>& solution) const;
+  // Level l's residual vector = rhs − A_l x, A_l as its smoother reads it.
+  void level_residual(int l, const Kokkos::View<const double*>& rhs, const Kokkos::View<double*>& x) const;
 
   AggregationMultigridSettings settings_;
   std::vector<std::unique_ptr<Level>> levels_;

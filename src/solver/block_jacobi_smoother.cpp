@@ -14,11 +14,22 @@ using ExecSpace = Kokkos::DefaultExecutionSpace;
 using IntView = Kokkos::View<int*>;
 using DoubleView = Kokkos::View<double*>;
 using ConstView = Kokkos::View<const double*>;
+using RoundedView = Kokkos::View<const float*>;
+
+// Calls `work` with the values the sweeps read: the float copy when there is one.
+template <class Work>
+void with_swept_values(const ConstView& values, const RoundedView& rounded_values, Work&& work) {
+  if (rounded_values.extent(0) > 0)
+    work(rounded_values);
+  else
+    work(values);
+}
 
 // blocks(16 A + 4i + j) = A's entry (4A + i, 4A + j): the diagonal block of each node
 // (BlockMatrixGraph's layout: block of neighbour index n of row node A at
 // 16 offsets(A) + 4 deg(A) i + 4 (n − offsets(A)) + j).
-void gather_diagonal_blocks(const BlockMatrixGraph& graph, const DoubleView& values, const DoubleView& blocks) {
+template <class Values>
+void gather_diagonal_blocks(const BlockMatrixGraph& graph, const Values& values, const DoubleView& blocks) {
   const IntView offsets = graph.node_offsets, neighbors = graph.node_neighbors;
   Kokkos::parallel_for(
       "rouleau::BlockJacobiSmoother::diagonal_blocks", Kokkos::RangePolicy<ExecSpace>(0, offsets.extent(0) - 1),
@@ -37,7 +48,8 @@ void gather_diagonal_blocks(const BlockMatrixGraph& graph, const DoubleView& val
 
 // next = z + ω D⁻¹ (r − A z), node by node (z empty: the first sweep from z = 0; r empty:
 // r = 0, for the power iteration).
-void sweep(const BlockMatrixGraph& graph, const DoubleView& values, const DoubleView& inverse, const double damping,
+template <class Values>
+void sweep(const BlockMatrixGraph& graph, const Values& values, const DoubleView& inverse, const double damping,
            const ConstView& r, const ConstView& z, const DoubleView& next) {
   const IntView offsets = graph.node_offsets, neighbors = graph.node_neighbors;
   const bool from_zero = z.extent(0) == 0, no_rhs = r.extent(0) == 0;
@@ -57,7 +69,8 @@ void sweep(const BlockMatrixGraph& graph, const DoubleView& values, const Double
 // ρ(D⁻¹A) by power iteration: x_0 a fixed vector of entries in [1/2, 3/2],
 //   x_{k+1} = D⁻¹A x_k / |D⁻¹A x_k|,   ρ ≈ |D⁻¹A x_k| (|x_k| = 1),
 // with D⁻¹A x = x − y for the sweep y = x + D⁻¹(0 − A x) (ω = 1, r = 0).
-double estimate_spectral_radius(const BlockMatrixGraph& graph, const DoubleView& values, const DoubleView& inverse,
+template <class Values>
+double estimate_spectral_radius(const BlockMatrixGraph& graph, const Values& values, const DoubleView& inverse,
                                 const DoubleView& x, const DoubleView& y, const int iterations) {
   const int n = graph.num_rows;
   Kokkos::parallel_for(
@@ -105,12 +118,18 @@ BlockJacobiSmoother::BlockJacobiSmoother(const BlockMatrixGraph& graph, const in
         std::to_string(sweeps) + " and " + std::to_string(damping_times_radius));
 }
 
-void BlockJacobiSmoother::factor(const Kokkos::View<double*>& values) {
-  values_ = values;
-  gather_diagonal_blocks(graph_, values_, diagonal_blocks_);
-  inverse_.factor(diagonal_blocks_);
-  spectral_radius_ =
-      estimate_spectral_radius(graph_, values_, inverse_.inverse_blocks(), power_vector_, other_, power_iterations);
+void BlockJacobiSmoother::factor(const Kokkos::View<double*>& values) { factor(values, RoundedView()); }
+
+void BlockJacobiSmoother::factor(const Kokkos::View<double*>& values, const Kokkos::View<const float*>& rounded_values) {
+  const bool rounded = rounded_values.extent(0) > 0;
+  values_ = rounded ? ConstView() : ConstView(values);
+  rounded_values_ = rounded_values;
+  with_swept_values(values_, rounded_values_, [&](const auto& swept) {
+    gather_diagonal_blocks(graph_, swept, diagonal_blocks_);
+    inverse_.factor(diagonal_blocks_);
+    spectral_radius_ =
+        estimate_spectral_radius(graph_, swept, inverse_.inverse_blocks(), power_vector_, other_, power_iterations);
+  });
   damping_ = spectral_radius_ > 0.0 ? damping_times_radius_ / spectral_radius_ : 1.0;
 }
 
@@ -118,11 +137,13 @@ void BlockJacobiSmoother::apply(const Kokkos::View<const double*>& r, const Kokk
   ProfilingRegion region("rouleau::BlockJacobiSmoother::apply");
   // The sweeps alternate between z and other_, the last one landing in z.
   DoubleView write = sweeps_ % 2 == 1 ? z : other_, read = sweeps_ % 2 == 1 ? other_ : z;
-  sweep(graph_, values_, inverse_.inverse_blocks(), damping_, r, ConstView(), write);
-  for (int s = 1; s < sweeps_; ++s) {
-    std::swap(read, write);
-    sweep(graph_, values_, inverse_.inverse_blocks(), damping_, r, read, write);
-  }
+  with_swept_values(values_, rounded_values_, [&](const auto& swept) {
+    sweep(graph_, swept, inverse_.inverse_blocks(), damping_, r, ConstView(), write);
+    for (int s = 1; s < sweeps_; ++s) {
+      std::swap(read, write);
+      sweep(graph_, swept, inverse_.inverse_blocks(), damping_, r, read, write);
+    }
+  });
 }
 
 }  // namespace rouleau

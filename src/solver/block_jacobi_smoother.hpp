@@ -12,6 +12,10 @@
 // stable only while ω ρ < 2 for D⁻¹A's real eigenvalues: ω = 0.6 smooths the uniform shear
 // boxes (ρ ≈ 2.1) but diverges on a channel graded toward its walls (48×24×3 elements,
 // ρ ≈ 3.9), where GMRES then stalls; c = 1.3 gives ω ≈ 0.6 on the boxes and 0.34 there.
+//
+// Given a float copy of the values (factor(values, rounded_values)), the sweeps read A
+// there: the same arithmetic in double on half the bytes. D, its inverse and ρ are then
+// those of the rounded matrix, so the sweeps are exactly damped Jacobi on it.
 #include <Kokkos_Core.hpp>
 
 #include "solver/block_jacobi.hpp"
@@ -27,6 +31,8 @@ class BlockJacobiSmoother final : public MatrixPreconditioner {
   // Inverts A's diagonal blocks, estimates ρ(D⁻¹A) and keeps `values` (by reference) for
   // the sweeps.
   void factor(const Kokkos::View<double*>& values) override;
+  // The same on `rounded_values` (A rounded to float, kept by reference), when not empty.
+  void factor(const Kokkos::View<double*>& values, const Kokkos::View<const float*>& rounded_values) override;
   void apply(const Kokkos::View<const double*>& r, const Kokkos::View<double*>& z) const override;
 
   // After factor(): the estimate of ρ(D⁻¹A) and the damping ω it gave.
@@ -41,7 +47,9 @@ class BlockJacobiSmoother final : public MatrixPreconditioner {
   int sweeps_;
   double damping_times_radius_;
   double spectral_radius_ = 0.0, damping_ = 0.0;
-  Kokkos::View<double*> values_, diagonal_blocks_, other_, power_vector_;
+  Kokkos::View<const double*> values_;         // A, when the sweeps read double
+  Kokkos::View<const float*> rounded_values_;  // A rounded to float, when they read that
+  Kokkos::View<double*> diagonal_blocks_, other_, power_vector_;
   BlockJacobi inverse_;
 };
 

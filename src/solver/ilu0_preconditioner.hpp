@@ -28,6 +28,7 @@ class Ilu0Preconditioner final : public MatrixPreconditioner {
 
   // The numeric factorization of the values on the graph.
   void factor(const Kokkos::View<double*>& values) override;
+  using MatrixPreconditioner::factor;  // given a float copy too, ILU(0) factors the double values
   void apply(const Kokkos::View<const double*>& r, const Kokkos::View<double*>& z) const override;
   // Rows in the widest level of the factorization's level schedule: its numeric phase
   // holds a scratch array of that many rows times the matrix's rows (KokkosKernels' spiluk).

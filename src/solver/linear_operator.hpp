@@ -22,6 +22,12 @@ class Preconditioner {
 class MatrixPreconditioner : public Preconditioner {
  public:
   virtual void factor(const Kokkos::View<double*>& values) = 0;
+  // The same, given also the matrix rounded to float: a smoother that sweeps in single
+  // precision reads `rounded_values` in its sweeps; by default only `values` is used.
+  virtual void factor(const Kokkos::View<double*>& values, const Kokkos::View<const float*>& rounded_values) {
+    (void)rounded_values;
+    factor(values);
+  }
 };
 
 // M = I.

@@ -1,6 +1,7 @@
 #pragma once
-// The smoother of the aggregation multigrid's levels (solver/aggregation_multigrid.hpp),
-// as the case file names it (solver.multigrid_smoother). Host-only: no Kokkos header, so
+// The smoother of the aggregation multigrid's levels (solver/aggregation_multigrid.hpp) and
+// the precision its sweeps read the matrices in, as the case file names them
+// (solver.multigrid_smoother, solver.multigrid_precision). Host-only: no Kokkos header, so
 // the case's settings can hold it.
 namespace rouleau {
 
@@ -9,5 +10,13 @@ namespace rouleau {
 // ilu0: ILU(0) with level-scheduled triangular solves, one kernel launch per level of
 //   the schedule (solver/ilu0_preconditioner.hpp).
 enum class MultigridSmoother { block_jacobi, ilu0 };
+
+// What the block-Jacobi sweeps and the cycle's residuals read the level matrices in
+// (solver.multigrid_precision). They are memory-bound passes over 16 values per node pair,
+// so float copies halve their traffic. The arithmetic stays in double, as do the Galerkin
+// products and the coarsest level's LU: the preconditioner is still one fixed linear
+// operator, and GMRES (in double) converges to the same tolerance. ILU(0) smoothing reads
+// the double values whatever this says.
+enum class MultigridPrecision { single_precision, double_precision };
 
 }  // namespace rouleau

@@ -4,11 +4,10 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include "util/constants.hpp"
 
 namespace rouleau {
 namespace {
-constexpr double pi = 3.14159265358979323846;
-
 // The branch of `base` (defined modulo 2π) within π of `near`.
 double nearest_branch(double base, double near) { return base + 2.0 * pi * std::round((near - base) / (2.0 * pi)); }
 }  // namespace

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include "util/constants.hpp"
 
 namespace rouleau {
 
@@ -11,7 +12,6 @@ double sphere_in_tube_speed_ratio(double radius_ratio) {
   const double lambda = radius_ratio;
   if (!(lambda >= 0.0 && lambda < 1.0))
     throw std::invalid_argument("sphere_in_tube_speed_ratio: a/R must lie in [0, 1), got " + std::to_string(lambda));
-  constexpr double pi = 3.14159265358979323846;
   const double gap = 1.0 - lambda, l2 = lambda * lambda, l3 = l2 * lambda, l4 = l3 * lambda;
   const double lubrication = 9.0 / 4.0 * pi * pi * std::sqrt(2.0) * std::pow(gap, -2.5);
   const double translation = lubrication * (1.0 - 73.0 / 60.0 * gap + 77293.0 / 50400.0 * gap * gap) - 22.5083 -

@@ -11,6 +11,7 @@
 #include "geometry/box_overlaps.hpp"
 #include "geometry/cell_shapes.hpp"
 #include "util/errors.hpp"
+#include "util/constants.hpp"
 
 namespace rouleau {
 namespace {
@@ -115,7 +116,6 @@ void check_cell_placement(const CaseConfig& config) {
 
   // Inside the domain: every sample, placed, within [lower, upper] along each axis.
   std::vector<Matrix3> rotation(config.cells.size());
-  const char* axis_names[3] = {"x", "y", "z"};
   for (std::size_t i = 0; i < config.cells.size(); ++i) {
     const auto& cell = config.cells[i];
     rotation[i] = placement_rotation(cell.orientation);

@@ -4,11 +4,10 @@
 
 #include "config/case_section_readers.hpp"
 #include "util/number_text.hpp"
+#include "util/constants.hpp"
 
 namespace rouleau {
 namespace {
-
-constexpr std::array<const char*, 3> axis_names{"x", "y", "z"};
 
 // The keys a side of each boundary type takes (besides "type").
 std::vector<std::string_view> boundary_keys_of(BoundaryType type) {

@@ -10,11 +10,10 @@
 #include "config/case_overrides.hpp"
 #include "util/number_text.hpp"
 #include "util/errors.hpp"
+#include "util/constants.hpp"
 
 namespace rouleau {
 namespace {
-
-constexpr std::array<const char*, 3> axis_names{"x", "y", "z"};
 
 // Levenshtein distance between two short names.
 std::size_t edit_distance(std::string_view a, std::string_view b) {

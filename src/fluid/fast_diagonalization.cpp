@@ -9,6 +9,7 @@
 
 #include "config/derived.hpp"
 #include "util/profiling_region.hpp"
+#include "util/constants.hpp"
 
 // LAPACK's banded LU (Fortran; the trailing length is gfortran's hidden string length).
 extern "C" {
@@ -31,7 +32,6 @@ constexpr int plane_reach = 2;  // wall planes a row reaches on either side
 // read by the case loader must keep them beyond a row's reach of it.
 static_assert(fast_diagonalization_min_periodic_elements >= 2 * plane_reach + 2,
               "the box rule lets a probe fall within reach of the pressure pin");
-constexpr double pi = 3.14159265358979323846;
 }  // namespace
 
 struct FastDiagonalization::Plans {

@@ -4,19 +4,14 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "geometry/triangle_area.hpp"
+
 namespace rouleau {
 namespace {
 
 using Point = std::array<double, 3>;
 
 Point position(const Kokkos::View<double* [3]>::HostMirror& x, int node) { return {x(node, 0), x(node, 1), x(node, 2)}; }
-
-// |(b − a) × (c − a)| / 2
-double triangle_area(const Point& a, const Point& b, const Point& c) {
-  const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-  const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-  return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-}
 
 }  // namespace
 

@@ -46,6 +46,7 @@
 #include "geometry/gmsh_session.hpp"
 #include "geometry/mesh_cache.hpp"
 #include "geometry/tetrahedral_mesh.hpp"
+#include "util/constants.hpp"
 
 namespace rouleau {
 
@@ -53,7 +54,6 @@ using namespace geometry_detail;
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
 // Changes whenever this file would make a different mesh from the same parameters; it
 // enters the hash, so old cache files are not reused.
 constexpr int geometry_code_version = 2;

@@ -33,12 +33,9 @@
 
 #include "geometry/cell_shape_details.hpp"
 #include "util/number_text.hpp"
+#include "util/constants.hpp"
 
 namespace rouleau {
-
-namespace {
-constexpr double pi = 3.14159265358979323846;
-}  // namespace
 
 namespace geometry_detail {
 

@@ -26,11 +26,11 @@
 
 #include "geometry/gmsh_session.hpp"
 #include "geometry/mesh_cache.hpp"
+#include "util/constants.hpp"
 
 namespace rouleau {
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
 // Changes whenever this file would make a different mesh from the same parameters.
 constexpr int vessel_code_version = 2;  // 2: nodes renumbered for locality
 constexpr const char* cache_header = "rouleau-vessel-mesh 1";

@@ -4,11 +4,10 @@
 #include <cmath>
 #include <string>
 #include <utility>
+#include "util/constants.hpp"
 
 namespace rouleau {
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
 
 // The transition's radius from `from` (s = 0) to `to` (s = 1).
 double transition_radius(VesselTransition transition, double from, double to, double s) {

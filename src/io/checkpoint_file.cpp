@@ -13,7 +13,7 @@ namespace rouleau {
 
 namespace {
 
-constexpr const char* who = "rouleau::checkpoint";
+constexpr const char* checkpoint_who = "rouleau::checkpoint";
 constexpr const char* reals_group = "/reals/";
 constexpr const char* integers_group = "/integers/";
 constexpr const char* label_prefix = "label_";
@@ -24,11 +24,11 @@ void check_entry_name(const std::string& name) {
   const bool allowed =
       !name.empty() && name.front() != '/' && name.back() != '/' && name.find("//") == std::string::npos &&
       name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-./") == std::string::npos;
-  if (!allowed) throw std::invalid_argument(std::string(who) + ": bad entry name \"" + name + "\"");
+  if (!allowed) throw std::invalid_argument(std::string(checkpoint_who) + ": bad entry name \"" + name + "\"");
 }
 
 [[noreturn]] void missing(const std::string& what, const std::string& name, const std::string& reason) {
-  throw std::runtime_error(std::string(who) + ": " + what + " \"" + name + "\" " + reason);
+  throw std::runtime_error(std::string(checkpoint_who) + ": " + what + " \"" + name + "\" " + reason);
 }
 
 // The lines of `text` (the indexes /reals_index, /integers_index, /labels_index hold one
@@ -124,7 +124,7 @@ void write_checkpoint_file(const std::string& path, const CheckpointData& data, 
   for (const auto& entry : data.reals) check_entry_name(entry.first);
   for (const auto& entry : data.integers) check_entry_name(entry.first);
   for (const auto& entry : data.labels) check_entry_name(entry.first);
-  write_hdf5_file_atomically(path, who, provenance, [&](const Hdf5File& file) {
+  write_hdf5_file_atomically(path, checkpoint_who, provenance, [&](const Hdf5File& file) {
     const long long version = CheckpointData::format_version;
     write_dataset(file, "/format_version", H5T_NATIVE_LLONG, H5T_STD_I64LE, &version, {1});
     write_dataset(file, "/step", H5T_NATIVE_LLONG, H5T_STD_I64LE, &data.step, {1});
@@ -146,17 +146,17 @@ void write_checkpoint_file(const std::string& path, const CheckpointData& data, 
 }
 
 CheckpointData read_checkpoint_file(const std::string& path) {
-  Hdf5Handle handle = open_hdf5_file(path, who);
-  const Hdf5File file{handle.get(), path, who};
+  Hdf5Handle handle = open_hdf5_file(path, checkpoint_who);
+  const Hdf5File file{handle.get(), path, checkpoint_who};
   const auto one = [&](const std::string& dataset_path, auto values) {
     if (values.size() != 1)
-      throw std::runtime_error(std::string(who) + ": " + path + ": " + dataset_path + ": holds " +
+      throw std::runtime_error(std::string(checkpoint_who) + ": " + path + ": " + dataset_path + ": holds " +
                                std::to_string(values.size()) + " values, not 1");
     return values.front();
   };
   const long long version = one("/format_version", read_integer_dataset(file, "/format_version"));
   if (version != CheckpointData::format_version)
-    throw std::runtime_error(std::string(who) + ": " + path + ": format version " + std::to_string(version) +
+    throw std::runtime_error(std::string(checkpoint_who) + ": " + path + ": format version " + std::to_string(version) +
                              "; this rouleau reads version " + std::to_string(CheckpointData::format_version));
   CheckpointData data;
   data.step = one("/step", read_integer_dataset(file, "/step"));
@@ -178,7 +178,7 @@ CheckpointData read_checkpoint_file(const std::string& path) {
   const std::string stored = read_root_string_attribute(file, "checksum");
   const std::string computed = checkpoint_checksum(data);
   if (stored != computed)
-    throw std::runtime_error(std::string(who) + ": " + path + ": checksum " + computed + " of the contents, " +
+    throw std::runtime_error(std::string(checkpoint_who) + ": " + path + ": checksum " + computed + " of the contents, " +
                              stored + " stored: the file is damaged");
   return data;
 }
@@ -187,7 +187,7 @@ CheckpointData read_checkpoint_file(const std::string& path) {
 
 CheckpointStore::CheckpointStore(std::string run_directory, int kept)
     : run_directory_(std::move(run_directory)), kept_(kept) {
-  if (kept_ < 1) throw std::invalid_argument(std::string(who) + ": keep at least one checkpoint, not " + std::to_string(kept));
+  if (kept_ < 1) throw std::invalid_argument(std::string(checkpoint_who) + ": keep at least one checkpoint, not " + std::to_string(kept));
 }
 
 std::string CheckpointStore::directory() const {

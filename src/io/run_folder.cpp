@@ -17,7 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* who = "rouleau::run_folder";
+constexpr const char* run_folder_who = "rouleau::run_folder";
 // The first line of run.log starts with this, then the id, then ':'.
 constexpr const char* log_id_prefix = "rouleau run id ";
 
@@ -60,9 +60,9 @@ std::string run_id_in_log(const fs::path& log) {
 std::string run_id_in_hdf5(const fs::path& path, bool& readable) {
   readable = true;
   try {
-    const Hdf5Handle file = open_hdf5_file(path.string(), who);
+    const Hdf5Handle file = open_hdf5_file(path.string(), run_folder_who);
     try {
-      return read_root_string_attribute(Hdf5File{file.get(), path.string(), who}, "run_id");
+      return read_root_string_attribute(Hdf5File{file.get(), path.string(), run_folder_who}, "run_id");
     } catch (const std::runtime_error&) {
       return "";
     }

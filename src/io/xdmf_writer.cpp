@@ -26,7 +26,7 @@ int nodes_per_cell(CellType cell_type) {
 
 namespace {
 
-constexpr const char* who = "rouleau::XdmfTimeSeries";
+constexpr const char* xdmf_who = "rouleau::XdmfTimeSeries";
 constexpr const char* where = "rouleau::XdmfTimeSeries: ";
 
 // ---- names and XML
@@ -113,7 +113,7 @@ XdmfTimeSeries::XdmfTimeSeries(std::string directory, std::string basename, std:
   }
 
   std::filesystem::create_directories(directory_);
-  write_hdf5_file_atomically(mesh_path(), who, provenance_, [&](const Hdf5File& file) {
+  write_hdf5_file_atomically(mesh_path(), xdmf_who, provenance_, [&](const Hdf5File& file) {
     for (std::size_t m = 0; m < meshes.size(); ++m) {
       const std::string group = "/" + meshes[m].name;
       write_double_array(file, group + "/coordinates", meshes[m].coordinates.data(), meshes_[m].node_count, 3);
@@ -192,7 +192,7 @@ void XdmfTimeSeries::write_step(int step, double time, const std::vector<std::ve
     record.meshes.push_back(std::move(mesh_record));
   }
 
-  write_hdf5_file_atomically(step_path(step), who, provenance_, [&](const Hdf5File& file) {
+  write_hdf5_file_atomically(step_path(step), xdmf_who, provenance_, [&](const Hdf5File& file) {
     const long long step_number = step;
     write_dataset(file, "/step", H5T_NATIVE_LLONG, H5T_STD_I64LE, &step_number, {1});
     write_double_array(file, "/time", &time, 1, 1);
@@ -223,8 +223,8 @@ void XdmfTimeSeries::adopt_written_steps(int last_step) {
   }
   steps_.clear();
   for (const auto& [step, path] : written) {
-    Hdf5Handle handle = open_hdf5_file(path, who);
-    const Hdf5File file{handle.get(), path, who};
+    Hdf5Handle handle = open_hdf5_file(path, xdmf_who);
+    const Hdf5File file{handle.get(), path, xdmf_who};
     StepRecord record{step, read_double_dataset(file, "/time").at(0), {}};
     for (const MeshLayout& mesh : meshes_) {
       MeshStepRecord mesh_record{false, {}};

@@ -8,6 +8,7 @@
 #include "util/view_transfer.hpp"
 #include "solver/block_jacobi_smoother.hpp"
 #include "solver/ilu0_preconditioner.hpp"
+#include "solver/matrix_values_read.hpp"
 #include "host_algebra/sparse_direct_solver.hpp"
 
 namespace rouleau {
@@ -252,10 +253,8 @@ void add(const DoubleView& correction, const DoubleView& solution) {
 void AggregationMultigrid::level_residual(int l, const Kokkos::View<const double*>& rhs,
                                           const Kokkos::View<double*>& x) const {
   const Level& level = *levels_[l];
-  if (level.rounded_values.extent(0) > 0)
-    block_residual(level.graph, level.rounded_values, rhs, x, level.residual);
-  else
-    block_residual(level.graph, level.values, rhs, x, level.residual);
+  with_values_read(level.values, level.rounded_values,
+                   [&](const auto& values_read) { block_residual(level.graph, values_read, rhs, x, level.residual); });
 }
 
 void AggregationMultigrid::cycle(int l, const Kokkos::View<const double*>& rhs,

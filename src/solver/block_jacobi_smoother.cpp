@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "solver/matrix_values_read.hpp"
 #include "util/profiling_region.hpp"
 
 namespace rouleau {
@@ -15,15 +16,6 @@ using IntView = Kokkos::View<int*>;
 using DoubleView = Kokkos::View<double*>;
 using ConstView = Kokkos::View<const double*>;
 using RoundedView = Kokkos::View<const float*>;
-
-// Calls `work` with the values the sweeps read: the float copy when there is one.
-template <class Work>
-void with_swept_values(const ConstView& values, const RoundedView& rounded_values, Work&& work) {
-  if (rounded_values.extent(0) > 0)
-    work(rounded_values);
-  else
-    work(values);
-}
 
 // blocks(16 A + 4i + j) = A's entry (4A + i, 4A + j): the diagonal block of each node
 // (BlockMatrixGraph's layout: block of neighbour index n of row node A at
@@ -124,7 +116,7 @@ void BlockJacobiSmoother::factor(const Kokkos::View<double*>& values, const Kokk
   const bool rounded = rounded_values.extent(0) > 0;
   values_ = rounded ? ConstView() : ConstView(values);
   rounded_values_ = rounded_values;
-  with_swept_values(values_, rounded_values_, [&](const auto& swept) {
+  with_values_read(values_, rounded_values_, [&](const auto& swept) {
     gather_diagonal_blocks(graph_, swept, diagonal_blocks_);
     inverse_.factor(diagonal_blocks_);
     spectral_radius_ =
@@ -137,7 +129,7 @@ void BlockJacobiSmoother::apply(const Kokkos::View<const double*>& r, const Kokk
   ProfilingRegion region("rouleau::BlockJacobiSmoother::apply");
   // The sweeps alternate between z and other_, the last one landing in z.
   DoubleView write = sweeps_ % 2 == 1 ? z : other_, read = sweeps_ % 2 == 1 ? other_ : z;
-  with_swept_values(values_, rounded_values_, [&](const auto& swept) {
+  with_values_read(values_, rounded_values_, [&](const auto& swept) {
     sweep(graph_, swept, inverse_.inverse_blocks(), damping_, r, ConstView(), write);
     for (int s = 1; s < sweeps_; ++s) {
       std::swap(read, write);

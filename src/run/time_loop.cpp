@@ -81,7 +81,8 @@ int TimeLoop::run(const bool restarted) {
 }
 
 void TimeLoop::run_steady() {
-  outputs_.fields.write(simulation_);
+  // One frame, the solution: the state before the solve has the same time, t = 0, and
+  // ParaView's XDMF reader shows nothing of a series with two frames at one time.
   const FluidSolveReport& report = simulation_.solve_steady().fluid;
   outputs_.diagnostics.add_row(simulation_, clock_.seconds());
   outputs_.fields.write(simulation_);

@@ -8,17 +8,18 @@
 Opens RUN_DIR/fields_fluid.xdmf and, when the case has cells, RUN_DIR/fields_cells.xdmf
 (the per-mesh files a run writes; docs/paraview.md) with ParaView's Xdmf3ReaderT, and
 draws at time T (seconds; default: the last step written, otherwise the nearest step):
-  - the plasma: a slice across the line of sight at the back of the fluid box (in a vessel
-    just behind its cells, at most through its axis), coloured by
-    its velocity (velocity_um_s, um/s): the magnitude (default) or one component, and the
-    box's outline;
+  - the plasma: a slice across the line of sight, at the back of a fluid box, through a
+    vessel's axis (or behind its cells when they all lie behind the axis), coloured by
+    its velocity (velocity_um_s, um/s): the magnitude (default) or one component, on a
+    scale up to the 99th percentile on the slice (the spikes next to membranes, above it,
+    in a colour of their own, with a swatch on the bar), and the box's outline;
   - the cells: their outer surfaces, coloured by the magnitude of --cell-field (default
     displacement_um, um, from the cells' shape as placed; also velocity_um_s,
     internal_force_pN, interaction_force_pN, or cell_id);
   - a colour bar for each, and a title: the case's name (the run's provenance), the time
     and the case's description (case.resolved.toml), or --caption.
 --view z (default) looks along -z at the x-y plane (the shear plane of the shear cases),
-y along -y, x along -x (parallel projection); --oblique turns the camera 25 degrees about
+y along +y (x to the right, z up: a vessel's side view), x along -x (parallel projection); --oblique turns the camera 25 degrees about
 the vertical and 20 degrees up, to show the cells' thickness. Prints the path of the PNG.
 
 Needs an X display (Debian's ParaView has no offscreen build): under Xvfb, `Xvfb :7 &`
@@ -32,7 +33,10 @@ import re
 import sys
 import xml.etree.ElementTree as ET
 
+import numpy
+from paraview import servermanager
 from paraview import simple as pv
+from vtkmodules.numpy_interface import dataset_adapter as dsa
 
 MU = "\u00b5"
 CELL_FIELDS = {  # array name -> (colour bar title, magnitude of a vector)
@@ -124,6 +128,39 @@ def fixed_range(lut, low, high):
     lut.AutomaticRescaleRangeMode = "Never"
 
 
+def plasma_scale(source, component):
+    """The plasma's colour scale: the 99th percentile of |v| (or of |v_x|, ...) on the slice
+    when the largest value is more than 10 % above it, else the largest.
+
+    Next to a membrane the plasma's velocity has spikes a few times the flow's own (the
+    spread forces act within one element); a scale set by the largest value would leave the
+    flow itself in the palest colours. Points above the scale get their own colour, shown
+    as a swatch at the bar's end. Returns (scale, largest value).
+    """
+    data = dsa.WrapDataObject(servermanager.Fetch(source))
+    velocity = data.PointData["velocity_um_s"]
+    # One array per block of a composite data set; a block without points has none.
+    blocks = velocity.Arrays if hasattr(velocity, "Arrays") else [velocity]
+    arrays = [numpy.asarray(block) for block in blocks]
+    arrays = [array.reshape(-1, 3) for array in arrays if array.ndim == 2 and array.shape[1] == 3]
+    values = numpy.concatenate(arrays) if arrays else numpy.zeros((0, 3))
+    shown = numpy.linalg.norm(values, axis=1) if component == "magnitude" else numpy.abs(values[:, "xyz".index(component)])
+    if shown.size == 0:
+        return 0.0, 0.0
+    percentile, largest = float(numpy.percentile(shown, 99.0)), float(shown.max())
+    # No spike (the largest within 10 % of the percentile): the scale is the largest value.
+    return (largest if largest <= 1.1 * percentile else percentile), largest
+
+
+def mark_beyond_scale(lut, above_colour, below_colour=None):
+    """Values beyond the colour scale in colours of their own (the bar shows their swatches)."""
+    lut.UseAboveRangeColor = 1
+    lut.AboveRangeColor = above_colour
+    if below_colour is not None:
+        lut.UseBelowRangeColor = 1
+        lut.BelowRangeColor = below_colour
+
+
 def main():
     args = parse_arguments()
     run_dir = args.run_dir
@@ -148,24 +185,31 @@ def main():
     view.ViewTime = t
     pv.GetAnimationScene().AnimationTime = t
 
-    # The plasma: a slice 2 % inside the back of the box, across the line of sight; in a
-    # vessel just behind the cells instead (the back of its bounding box grazes the wall,
-    # where the plasma is at rest): 0.5 um behind the rearmost cell point, or through the
-    # axis when that lies nearer the back.
+    # The camera looks along -z (view z), +y (view y) or -x (view x), so that x runs to the
+    # right in the z and y views; "behind" is the far side from the camera.
+    axis = "xyz".index(args.view)
+    toward_camera = -1.0 if args.view == "y" else 1.0
     fluid.UpdatePipeline(t)
     bounds = fluid.GetDataInformation().GetBounds()
     centre = [(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2, (bounds[4] + bounds[5]) / 2]
-    axis = "xyz".index(args.view)
     normal = [0.0, 0.0, 0.0]
     normal[axis] = 1.0
     origin = list(centre)
+    # The plasma: in a box, a slice 2 % inside its back. In a vessel, through its axis,
+    # where the flow is fastest and which crosses every narrowing; a cell straddling the
+    # axis hides the slice behind its near half. When the cells all lie behind the axis, the
+    # slice goes 0.5 um behind the farthest cell point instead, so that it hides none.
+    back = bounds[2 * axis] if toward_camera > 0 else bounds[2 * axis + 1]
     if not is_vessel(run_dir):
-        origin[axis] = bounds[2 * axis] + 0.02 * (bounds[2 * axis + 1] - bounds[2 * axis])
+        origin[axis] = back + toward_camera * 0.02 * (bounds[2 * axis + 1] - bounds[2 * axis])
     elif os.path.exists(cells_file):
         placed = pv.Xdmf3ReaderT(registrationName="cell bounds", FileName=[cells_file])
         placed.UpdatePipeline(t)
-        rearmost = placed.GetDataInformation().GetBounds()[2 * axis]
-        origin[axis] = min(centre[axis], rearmost - 0.5)
+        cell_bounds = placed.GetDataInformation().GetBounds()
+        nearest = cell_bounds[2 * axis + 1] if toward_camera > 0 else cell_bounds[2 * axis]
+        farthest = cell_bounds[2 * axis] if toward_camera > 0 else cell_bounds[2 * axis + 1]
+        if toward_camera * (nearest - centre[axis]) <= 0.0:
+            origin[axis] = farthest - toward_camera * 0.5
     plane = pv.Slice(registrationName="plasma slice", Input=fluid)
     plane.SliceType = "Plane"
     plane.SliceType.Origin = origin
@@ -177,18 +221,23 @@ def main():
     pv.ColorBy(plane_display, ("POINTS", "velocity_um_s", "Magnitude" if component == "magnitude" else component.upper()))
     plasma_lut = pv.GetColorTransferFunction("velocity_um_s")
     plane.UpdatePipeline(t)
+    scale, largest = plasma_scale(plane, component)
     if component == "magnitude":
         plasma_lut.ApplyPreset("Blues", True)
         plasma_lut.InvertTransferFunction()  # white at rest, as the background
-        fixed_range(plasma_lut, *plane.PointData["velocity_um_s"].GetRange(-1))
+        fixed_range(plasma_lut, 0.0, scale)
         plasma_title = f"plasma speed ({MU}m/s)"
+        above_colour = [0.55, 0.0, 0.25]
     else:
         plasma_lut.ApplyPreset("Cool to Warm", True)
-        low, high = plane.PointData["velocity_um_s"].GetRange("xyz".index(component))
-        extent = max(abs(low), abs(high))
-        fixed_range(plasma_lut, -extent, extent)  # diverging: white at rest
+        fixed_range(plasma_lut, -scale, scale)  # diverging: white at rest
         plasma_title = f"plasma velocity, {component} component ({MU}m/s)"
+        above_colour = [0.35, 0.0, 0.0]
     colour_bar(plasma_lut, view, plasma_title, [0.6, 0.03])
+    if largest > scale:
+        mark_beyond_scale(plasma_lut, above_colour, None if component == "magnitude" else [0.0, 0.0, 0.35])
+        print(f"render_fields: plasma colour scale {scale:.3g} um/s (the 99th percentile on the slice; "
+              f"largest {largest:.3g}, drawn in the above-scale colour)", file=sys.stderr)
 
     outline_display = pv.Show(pv.Outline(registrationName="box", Input=fluid), view)
     outline_display.AmbientColor = outline_display.DiffuseColor = [0.25, 0.25, 0.25]
@@ -230,10 +279,10 @@ def main():
         subtitle_display.Color = [0.3, 0.3, 0.3]
 
     pv.Render(view)  # the first render resets the camera: before placing it
-    # Camera: along -axis at the box's centre (x to the right when it is in the picture).
+    # Camera: on the near side, looking at the box's centre.
     view.CameraFocalPoint = centre
     position = list(centre)
-    position[axis] += 5.0 * max(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4])
+    position[axis] += toward_camera * 5.0 * max(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4])
     view.CameraPosition = position
     view.CameraViewUp = [0.0, 0.0, 1.0] if axis == 1 else [0.0, 1.0, 0.0]
     view.CameraParallelProjection = 1

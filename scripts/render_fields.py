@@ -19,8 +19,9 @@ draws at time T (seconds; default: the last step written, otherwise the nearest 
   - a colour bar for each, and a title: the case's name (the run's provenance), the time
     and the case's description (case.resolved.toml), or --caption.
 --view z (default) looks along -z at the x-y plane (the shear plane of the shear cases),
-y along +y (x to the right, z up: a vessel's side view), x along -x (parallel projection); --oblique turns the camera 25 degrees about
-the vertical and 20 degrees up, to show the cells' thickness. Prints the path of the PNG.
+y along +y (x to the right, z up: a vessel's side view), x along -x (parallel
+projection); --oblique turns the camera 25 degrees about the vertical and 20 degrees up,
+to show the cells' thickness. Prints the path of the PNG.
 
 Needs an X display (Debian's ParaView has no offscreen build): under Xvfb, `Xvfb :7 &`
 and then `DISPLAY=:7 pvpython --disable-xdisplay-test scripts/render_fields.py ...`

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include "util/constants.hpp"
 
 namespace rouleau {
 
@@ -291,11 +292,11 @@ StackMeasures measure_stack(const DiagnosticsRows& rows, int cells, int cells_pe
   double sin_sum = 0.0, cos_sum = 0.0;
   for (int c = 0; c < cells; ++c) {
     const double inclination = of_cell(last, c, "inclination_deg");
-    sin_sum += std::sin(2.0 * inclination * M_PI / 180.0);
-    cos_sum += std::cos(2.0 * inclination * M_PI / 180.0);
+    sin_sum += std::sin(2.0 * inclination * pi / 180.0);
+    cos_sum += std::cos(2.0 * inclination * pi / 180.0);
     axes.push_back(inclination - 180.0 * std::floor(inclination / 180.0));  // in [0, 180)
   }
-  m.mean_inclination_deg = 0.5 * std::atan2(sin_sum, cos_sum) * 180.0 / M_PI;
+  m.mean_inclination_deg = 0.5 * std::atan2(sin_sum, cos_sum) * 180.0 / pi;
   std::sort(axes.begin(), axes.end());
   double widest_gap = axes.empty() ? 180.0 : 180.0 - (axes.back() - axes.front());
   for (std::size_t i = 1; i < axes.size(); ++i) widest_gap = std::max(widest_gap, axes[i] - axes[i - 1]);
@@ -303,7 +304,7 @@ StackMeasures measure_stack(const DiagnosticsRows& rows, int cells, int cells_pe
   const int top = std::min(cells_per_stack, cells) - 1;
   const double dx = of_cell(last, top, "centroid_x_um") - of_cell(last, 0, "centroid_x_um");
   const double dy = y(last, top) - y(last, 0);
-  m.stack_axis_deg = std::atan2(dx, dy) * 180.0 / M_PI;
+  m.stack_axis_deg = std::atan2(dx, dy) * 180.0 / pi;
   m.duration = diagnostics_value(last, "time_s") - diagnostics_value(first, "time_s");
   m.intact = m.largest_gap_growth < zero_force_length;
   return m;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include "util/constants.hpp"
 
 namespace rouleau {
 
@@ -51,7 +52,7 @@ std::vector<ShearPlaneShape> shear_plane_shapes(const CellPopulation& population
     }
     // The major axis of [[gxx, gxy], [gxy, gyy]] is at θ = ½ atan2(2 gxy, gxx − gyy).
     ShearPlaneShape& shape = shapes[c];
-    shape.inclination_deg = 0.5 * std::atan2(2.0 * gxy, gxx - gyy) * 180.0 / M_PI;
+    shape.inclination_deg = 0.5 * std::atan2(2.0 * gxy, gxx - gyy) * 180.0 / pi;
     for (int d = 0; d < 3; ++d) shape.extent[d] = highest[d] > lowest[d] ? highest[d] - lowest[d] : 0.0;
     shape.radius_front = radius_front;
     shape.radius_rear = radius_rear;

@@ -9,6 +9,7 @@
 #include "config/cell_kinds.hpp"
 #include "geometry/grading.hpp"
 #include "geometry/vessel_mesh.hpp"
+#include "util/constants.hpp"
 
 namespace rouleau {
 namespace {
@@ -157,7 +158,7 @@ void derive_stable_step(const CaseConfig& config, DerivedQuantities& derived) {
         const MorseConfig law =
             morse_law_between(config, *find_cell_kind(config, kind_a), *find_cell_kind(config, kind_b));
         const double balance_gap = law.zero_force_length - std::log(2.0) / law.beta;
-        const double morse = 8.0 * M_PI * law.beta * law.well_depth * std::max(balance_gap, 0.0) * h_f * h_f;
+        const double morse = 8.0 * pi * law.beta * law.well_depth * std::max(balance_gap, 0.0) * h_f * h_f;
         if (morse > stiffest) {
           stiffest = morse;
           stiffest_source = "the Morse law between kinds " + kind_a + " and " + kind_b +

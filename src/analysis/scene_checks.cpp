@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+
 #include "util/constants.hpp"
 
 namespace rouleau {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+
 #include "util/constants.hpp"
 
 namespace rouleau {

@@ -28,6 +28,9 @@ namespace {
 
 constexpr const char* xdmf_who = "rouleau::XdmfTimeSeries";
 
+// "rouleau::XdmfTimeSeries: " + detail, the start of every error message here.
+std::string xdmf_where(const std::string& detail) { return std::string(xdmf_who) + ": " + detail; }
+
 // ---- names and XML
 
 void check_name(const std::string& what, const std::string& name) {
@@ -35,7 +38,7 @@ void check_name(const std::string& what, const std::string& name) {
                                             "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-.") ==
                                             std::string::npos;
   if (!allowed || name == "." || name == "..")
-    throw std::invalid_argument(std::string(xdmf_who) + ": " + what + " \"" + name +
+    throw std::invalid_argument(xdmf_where(what) + " \"" + name +
                                 "\": use only letters, digits, '_', '-' and '.'");
 }
 
@@ -85,14 +88,14 @@ XdmfTimeSeries::XdmfTimeSeries(std::string directory, std::string basename, std:
                                Provenance provenance)
     : directory_(std::move(directory)), basename_(std::move(basename)), provenance_(std::move(provenance)) {
   check_name("basename", basename_);
-  if (meshes.empty()) throw std::invalid_argument(std::string(xdmf_who) + ": " + basename_ + ": no meshes");
+  if (meshes.empty()) throw std::invalid_argument(xdmf_where(basename_ + ": no meshes"));
   std::set<std::string> mesh_names;
   for (const MeshDescription& mesh : meshes) {
     check_name("mesh name", mesh.name);
     if (!mesh_names.insert(mesh.name).second)
-      throw std::invalid_argument(std::string(xdmf_who) + ": " + "duplicate mesh name \"" + mesh.name + "\"");
+      throw std::invalid_argument(xdmf_where("duplicate mesh name \"" + mesh.name + "\""));
     const std::size_t per_cell = static_cast<std::size_t>(nodes_per_cell(mesh.cell_type));
-    const std::string mesh_where = std::string(xdmf_who) + ": " + "mesh \"" + mesh.name + "\": ";
+    const std::string mesh_where = xdmf_where("mesh \"" + mesh.name + "\": ");
     if (mesh.coordinates.empty() || mesh.coordinates.size() % 3 != 0)
       throw std::invalid_argument(mesh_where + std::to_string(mesh.coordinates.size()) +
                                   " coordinates: need a positive multiple of 3");
@@ -147,7 +150,7 @@ std::string XdmfTimeSeries::step_path(int step) const {
 void XdmfTimeSeries::write_step(int step, double time, const std::vector<std::vector<FieldView>>& nodal_fields_per_mesh,
                                 const std::vector<std::vector<FieldView>>& cell_fields_per_mesh,
                                 const std::vector<const double*>& moved_coordinates_per_mesh) {
-  const std::string step_where = std::string(xdmf_who) + ": " + "write_step " + std::to_string(step) + ": ";
+  const std::string step_where = xdmf_where("write_step " + std::to_string(step) + ": ");
   if (step < 0 || (!steps_.empty() && step <= steps_.back().step))
     throw std::invalid_argument(step_where + "steps must be non-negative and increasing (last written: " +
                                 (steps_.empty() ? std::string("none") : std::to_string(steps_.back().step)) + ")");

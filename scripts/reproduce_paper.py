@@ -85,7 +85,8 @@ def run_scene(scene, build_dir, threads):
     print(f"reproduce_paper: {scene['id']}: {'continuing' if restart else 'starting'} "
           f"(about {scene['hours']} h on 2 cores): {' '.join(command)}", flush=True)
     start = time.monotonic()
-    with open(os.path.join(RUNS, scene['id'] + '.out'), 'a') as printout:
+    # A fresh start begins the printout anew; a continuation adds to it.
+    with open(os.path.join(RUNS, scene['id'] + '.out'), 'a' if restart else 'w') as printout:
         status = subprocess.call(command, stdout=printout, stderr=subprocess.STDOUT, cwd=ROOT,
                                  env=dict(os.environ, OMP_NUM_THREADS=str(threads)))
     seconds = time.monotonic() - start
@@ -101,13 +102,15 @@ def run_scene(scene, build_dir, threads):
 
 
 def wall_times():
-    """The summed wall time of each scene's segments [s], from runs/paper/times.csv."""
+    """The summed wall time of each scene's run [s], from runs/paper/times.csv: its segments
+    since its last fresh start (a segment that is not a restart begins the run anew)."""
     total = {}
     path = os.path.join(RUNS, 'times.csv')
     if os.path.isfile(path):
         with open(path, newline='') as file:
             for row in csv.DictReader(file):
-                total[row['scene']] = total.get(row['scene'], 0.0) + float(row['wall_time_s'])
+                earlier = total.get(row['scene'], 0.0) if int(row['restart']) else 0.0
+                total[row['scene']] = earlier + float(row['wall_time_s'])
     return total
 
 

@@ -6,7 +6,8 @@ scenes and a finished run here for one of them.
 Asserts that
   - a scene with no run here keeps its recorded measures, build and run time, and its
     section in docs/paper.md says they are recorded;
-  - a finished run here replaces the record of its scene (value, build, time);
+  - a finished run here replaces the record of its scene (value, build, time), its time
+    the sum of its segments since its last fresh start;
   - a scene with neither is "not measured", met 0;
   - the rows that say "not measured" in the record are not taken as measures.
 Exit 0 when all hold; otherwise the first failure, exit 1.
@@ -51,7 +52,8 @@ def main():
             ['Fig. 10', FIG10, 'largest gap growth', '0.02', '>', '0.25', 'um', '0', 'stack_0.5', 'aaaa', '623'],
             ['Fig. 11', FIG11, 'not measured', '', '', '', '', '0', 'stack_3.0', 'aaaa', ''],
         ])
-        # A finished run of stack_0.5 here, by build bbbb, 900 s.
+        # A finished run of stack_0.5 here, by build bbbb: an abandoned start (400 s), then a
+        # fresh start interrupted after 700 s and continued for 200 s: 900 s.
         run = os.path.join(root, 'runs', 'paper', 'stack_0.5')
         write_csv(os.path.join(run, 'paper_checks.csv'), HEADER[:8], [
             ['Fig. 10', FIG10, 'largest gap growth', '0.31', '>', '0.25', 'um', '1']])
@@ -59,7 +61,9 @@ def main():
             log.write('rouleau 0.9.0 (bbbb): case_stack_shear\n')
         write_csv(os.path.join(root, 'runs', 'paper', 'times.csv'),
                   ['scene', 'started_utc', 'wall_time_s', 'threads', 'restart', 'exit_code'],
-                  [['stack_0.5', '2026-01-01T00:00:00Z', '900', '2', '0', '0']])
+                  [['stack_0.5', '2026-01-01T00:00:00Z', '400', '2', '0', '4'],
+                   ['stack_0.5', '2026-01-02T00:00:00Z', '700', '2', '0', '4'],
+                   ['stack_0.5', '2026-01-02T01:00:00Z', '200', '2', '1', '0']])
 
         status = subprocess.call(['/usr/bin/python3', os.path.join(root, 'scripts', 'reproduce_paper.py'),
                                   '--report-only', '--no-render'], stdout=subprocess.DEVNULL)

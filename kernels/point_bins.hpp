@@ -12,9 +12,15 @@
 // list built from searches, comes out the same on every run and thread count. On a
 // periodic direction with fewer than 2 reach + 1 bins the search visits each bin once, in
 // ascending order.
+//
+// Points with supports of their own (the RKPM windows of a graded fluid mesh, several times
+// smaller in a refined capillary than in its feeders) use bins narrower than the largest support, each bin
+// searched as deep as the supports that reach into it require (search_depths_covering), so
+// that a point among small supports scans its neighbourhood, not the largest support's.
 #include <Kokkos_Core.hpp>
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 
@@ -47,17 +53,25 @@ struct BinGrid {
   // visit(bin) for the bins within `reach` of x's (see the file's comment for the order).
   template <class Visit>
   KOKKOS_INLINE_FUNCTION void for_each_bin_near(const double x[3], const Visit& visit) const {
+    const int depth[3] = {reach, reach, reach};
+    for_each_bin_within(x, depth, visit);
+  }
+  // visit(bin) for the bins within depth[d] of x's along each direction d, in the same
+  // order.
+  template <class Visit>
+  KOKKOS_INLINE_FUNCTION void for_each_bin_within(const double x[3], const int depth[3], const Visit& visit) const {
     int first[3], last[3];
     bool wraps[3];
     for (int d = 0; d < 3; ++d) {
-      wraps[d] = periodic[d] && 2 * reach + 1 <= bins[d];
+      const int deep = depth[d];
+      wraps[d] = periodic[d] && 2 * deep + 1 <= bins[d];
       if (periodic[d] && !wraps[d]) {  // every bin once
         first[d] = 0;
         last[d] = bins[d] - 1;
       } else {
         const int home = coordinate(x[d], d);
-        first[d] = wraps[d] ? home - reach : (home - reach < 0 ? 0 : home - reach);
-        last[d] = wraps[d] ? home + reach : (home + reach >= bins[d] ? bins[d] - 1 : home + reach);
+        first[d] = wraps[d] ? home - deep : (home - deep < 0 ? 0 : home - deep);
+        last[d] = wraps[d] ? home + deep : (home + deep >= bins[d] ? bins[d] - 1 : home + deep);
       }
     }
     for (int bz = first[2]; bz <= last[2]; ++bz) {
@@ -128,7 +142,66 @@ struct BinnedPoints {
       for (int k = offsets(bin); k < offsets(bin + 1); ++k) visit(sorted(k));
     });
   }
+  // visit(p) for the binned points p in the bins within depth(b, d) of x's own bin b along
+  // each direction d (depth from search_depths_covering).
+  template <class Depths, class Visit>
+  KOKKOS_INLINE_FUNCTION void for_each_point_reaching(const double x[3], const Depths& depth,
+                                                      const Visit& visit) const {
+    const auto& offsets = bin_offsets;
+    const auto& sorted = points;
+    const int home = grid.bin_of(x);
+    const int home_depth[3] = {depth(home, 0), depth(home, 1), depth(home, 2)};
+    grid.for_each_bin_within(x, home_depth, [&](const int bin) {
+      for (int k = offsets(bin); k < offsets(bin + 1); ++k) visit(sorted(k));
+    });
+  }
 };
+
+// The search depth of each bin, depth(b, d), such that a search from any position x in bin
+// b (for_each_point_reaching) visits every binned point p with |x_d − x_pd| < support(p, d)
+// along every d (minimum image where periodic; positions outside a walled side are clamped
+// into its bins, which only brings them closer). A point in bin c reaches
+// r_d = ⌈a_d / w_d⌉ bins to each side of c, a_d the largest support in c; every bin b in that
+// span must search at least |b_d − c_d| deep along each d. `support` is (point, 3) on the
+// host. A build on the host: Σ_c Π_d (2 r_d + 1) steps over the bins c that hold points.
+template <class MemorySpace, class Supports>
+Kokkos::View<int* [3], MemorySpace> search_depths_covering(const BinnedPoints<MemorySpace>& binned,
+                                                           const Supports& support) {
+  const BinGrid& grid = binned.grid;
+  const int n_bins = grid.num_bins();
+  auto offsets = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), binned.bin_offsets);
+  auto sorted = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), binned.points);
+  Kokkos::View<int* [3], MemorySpace> depth("rouleau::BinnedPoints::search_depth", n_bins);
+  auto host_depth = Kokkos::create_mirror_view(depth);
+  Kokkos::deep_copy(host_depth, 0);
+  for (int c = 0; c < n_bins; ++c) {
+    if (offsets(c) == offsets(c + 1)) continue;
+    int span[3];
+    for (int d = 0; d < 3; ++d) {
+      double largest = 0.0;
+      for (int k = offsets(c); k < offsets(c + 1); ++k) largest = std::max(largest, support(sorted(k), d));
+      span[d] = static_cast<int>(std::ceil(largest / grid.width[d]));
+    }
+    const int cell[3] = {c % grid.bins[0], (c / grid.bins[0]) % grid.bins[1], c / (grid.bins[0] * grid.bins[1])};
+    for (int kz = -span[2]; kz <= span[2]; ++kz)
+      for (int ky = -span[1]; ky <= span[1]; ++ky)
+        for (int kx = -span[0]; kx <= span[0]; ++kx) {
+          const int k[3] = {kx, ky, kz};
+          int b[3];
+          bool inside = true;
+          for (int d = 0; d < 3; ++d) {
+            b[d] = cell[d] + k[d];
+            if (grid.periodic[d]) b[d] = ((b[d] % grid.bins[d]) + grid.bins[d]) % grid.bins[d];
+            inside = inside && b[d] >= 0 && b[d] < grid.bins[d];
+          }
+          if (!inside) continue;
+          const int bin = (b[2] * grid.bins[1] + b[1]) * grid.bins[0] + b[0];
+          for (int d = 0; d < 3; ++d) host_depth(bin, d) = std::max(host_depth(bin, d), std::abs(k[d]));
+        }
+  }
+  Kokkos::deep_copy(depth, host_depth);
+  return depth;
+}
 
 // min |x − x_p| over the binned points p within `radius` of x, with x_p = position(p, ·)
 // (the minimum image on periodic directions), or HUGE_VAL when none is. The bins within the

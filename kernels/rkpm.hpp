@@ -68,6 +68,7 @@ KOKKOS_INLINE_FUNCTION bool solve_moment_system(double m[4][4], double c[4]) {
 template <class MemorySpace>
 struct RkpmSupports {
   BinnedPoints<MemorySpace> node_bins;                      // the dof nodes, binned
+  Kokkos::View<const int* [3], MemorySpace> bin_depth;       // search_depths_covering(node_bins, a)
   Kokkos::View<const double* [3], MemorySpace> node_position;  // x_J [μm]
   Kokkos::View<const double* [3], MemorySpace> node_support;   // a_Jd [μm]
 };
@@ -82,6 +83,7 @@ int rkpm_shape_functions(const ExecSpace& space, const RkpmSupports<MemorySpace>
                          const Flags& active, const Flags& counted, const bool always_correct, const bool count_only,
                          const Offsets& offsets, const Nodes& nodes, const Phi& phi) {
   const auto node_bins = supports.node_bins;
+  const auto bin_depth = supports.bin_depth;
   const BinGrid grid = node_bins.grid;
   const auto node_position = supports.node_position;
   const auto node_support = supports.node_support;
@@ -100,7 +102,7 @@ int rkpm_shape_functions(const ExecSpace& space, const RkpmSupports<MemorySpace>
         const int first = count_only ? 0 : offsets(p);
         // M = Σ H H^T w with H = (1, y), y = x_J − x
         double m[4][4] = {{0, 0, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}};
-        node_bins.for_each_point_near(x, [&](const int node) {
+        node_bins.for_each_point_reaching(x, bin_depth, [&](const int node) {
           double y[3], w = 1.0;
           for (int d = 0; d < 3; ++d) {
             y[d] = grid.offset(node_position(node, d), x[d], d);

@@ -1,7 +1,8 @@
 // The neighbour search (kernels/point_bins.hpp) and the CSR steps (kernels/csr_rows.hpp)
 // against plain serial references: the binned points in (bin, index) order; a search
 // visiting every point within the reach exactly once, in periodic and walled boxes, with
-// many bins and with fewer bins than the search spans; the nearest point within a radius
+// many bins and with fewer bins than the search spans; a search to each bin's own depth
+// visiting every point whose support holds the query; the nearest point within a radius
 // as by a search of every point; row counts to offsets and the gathering of marked indices
 // as by serial loops; the boxes within a gap as by a test of every pair.
 #include <gtest/gtest.h>
@@ -36,9 +37,11 @@ Positions random_positions(const int count, const double lower[3], const double 
   return positions;
 }
 
-// The points each query's search visits, in visiting order (at most max_visits).
+// The points each query's search visits, in visiting order (at most max_visits): to the
+// grid's reach, or to each bin's depth when `depth` is given.
 struct VisitRecorder {
   BinnedPoints<> binned;
+  Kokkos::View<int* [3]> depth;
   Positions queries;
   Kokkos::View<int**> seen;
   Kokkos::View<int*> count;
@@ -46,17 +49,22 @@ struct VisitRecorder {
   KOKKOS_INLINE_FUNCTION void operator()(const int q) const {
     const double x[3] = {queries(q, 0), queries(q, 1), queries(q, 2)};
     int k = 0;
-    binned.for_each_point_near(x, [&](const int p) {
+    auto record = [&](const int p) {
       if (k < max_visits) seen(q, k) = p;
       ++k;
-    });
+    };
+    if (depth.extent(0) > 0)
+      binned.for_each_point_reaching(x, depth, record);
+    else
+      binned.for_each_point_near(x, record);
     count(q) = k;
   }
 };
 
-std::vector<std::vector<int>> visits(const BinnedPoints<>& binned, const Positions& queries, const int max_visits) {
+std::vector<std::vector<int>> visits(const BinnedPoints<>& binned, const Positions& queries, const int max_visits,
+                                     const Kokkos::View<int* [3]>& depth = {}) {
   const int n = static_cast<int>(queries.extent(0));
-  const VisitRecorder recorder{binned, queries, Kokkos::View<int**>("seen", n, max_visits),
+  const VisitRecorder recorder{binned, depth, queries, Kokkos::View<int**>("seen", n, max_visits),
                                Kokkos::View<int*>("count", n), max_visits};
   Kokkos::parallel_for("visits", Kokkos::RangePolicy<ExecSpace>(0, n), recorder);
   auto host_seen = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), recorder.seen);
@@ -150,6 +158,71 @@ TEST(PointBins, SearchVisitsEveryNearPointOnceAndBinsAreSorted) {
     EXPECT_GT(near_total, n_queries) << c.name;  // the test sees near points
     EXPECT_EQ(missed, 0) << c.name;
     EXPECT_EQ(repeated, 0) << c.name;
+  }
+}
+
+// 3000 points with supports of their own, 0.2 to 3 μm along each direction, in bins 0.4 μm wide
+// searched to each bin's depth (search_depths_covering), periodic and walled: a search from
+// any query (inside the box, and outside a walled side) visits every point p whose support
+// box |x_d − x_pd| < a_pd holds the query, none twice; and on points whose supports are
+// small but for a few, it visits several times fewer points than bins as wide as the largest
+// support searched one deep.
+TEST(PointBins, SearchToEachBinsDepthVisitsEveryPointWhoseSupportHoldsTheQuery) {
+  const double lower[3] = {0, 0, 0}, upper[3] = {20, 12, 16};
+  const int n_points = 3000, n_queries = 500;
+  const Positions points = random_positions(n_points, lower, upper, 0.0, 5);
+  const Positions queries = random_positions(n_queries, lower, upper, 1.0, 6);
+  auto host_points = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points);
+  auto host_queries = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), queries);
+  std::mt19937 generator(7);
+  // One point in 50 has a support of 2-3 μm, the others 0.2-0.5 μm.
+  Kokkos::View<double* [3], Kokkos::HostSpace> support("support", n_points);
+  for (int p = 0; p < n_points; ++p)
+    for (int d = 0; d < 3; ++d)
+      support(p, d) = p % 50 == 0 ? std::uniform_real_distribution<double>(2.0, 3.0)(generator)
+                                  : std::uniform_real_distribution<double>(0.2, 0.5)(generator);
+  for (const bool periodic_box : {true, false}) {
+    const bool periodic[3] = {periodic_box, false, periodic_box};
+    const char* name = periodic_box ? "periodic x and z" : "walled";
+    BinnedPoints<> binned;
+    const double widths[3] = {0.4, 0.4, 0.4};
+    binned.grid = bins_tiling(lower, upper, periodic, widths, 1);
+    sort_into_bins<ExecSpace>(points, n_points, EveryPoint(), binned);
+    const auto depth = search_depths_covering(binned, support);
+    const auto seen = visits(binned, queries, n_points, depth);
+    int repeated = 0, missed = 0, held = 0;
+    long visited_total = 0;
+    for (int q = 0; q < n_queries; ++q) {
+      std::vector<int> visited = seen[q];
+      visited_total += static_cast<long>(visited.size());
+      std::sort(visited.begin(), visited.end());
+      repeated += std::adjacent_find(visited.begin(), visited.end()) != visited.end();
+      for (int p = 0; p < n_points; ++p) {
+        bool holds = true;
+        for (int d = 0; d < 3; ++d) {
+          double offset = host_queries(q, d) - host_points(p, d);
+          if (periodic[d]) offset -= (upper[d] - lower[d]) * std::round(offset / (upper[d] - lower[d]));
+          holds = holds && std::fabs(offset) < support(p, d);
+        }
+        if (!holds) continue;
+        ++held;
+        missed += !std::binary_search(visited.begin(), visited.end(), p);
+      }
+    }
+    // The same points in bins as wide as the largest support (3 μm), searched one deep.
+    BinnedPoints<> wide;
+    const double wide_widths[3] = {3.0, 3.0, 3.0};
+    wide.grid = bins_tiling(lower, upper, periodic, wide_widths, 1);
+    sort_into_bins<ExecSpace>(points, n_points, EveryPoint(), wide);
+    long wide_total = 0;
+    for (const auto& v : visits(wide, queries, n_points)) wide_total += static_cast<long>(v.size());
+    std::printf("  %s: %d (query, support) pairs, %d missed, %d queries with a repeated point; %ld points "
+                "visited against %ld with bins as wide as the largest support\n",
+                name, held, missed, repeated, visited_total, wide_total);
+    EXPECT_GT(held, n_queries) << name;  // the test sees supports holding queries
+    EXPECT_EQ(missed, 0) << name;
+    EXPECT_EQ(repeated, 0) << name;
+    EXPECT_LT(3 * visited_total, wide_total) << name;
   }
 }
 

@@ -9,7 +9,9 @@
 #include <Kokkos_Core.hpp>
 #include <Kokkos_ScatterView.hpp>
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <iostream>
 #include <random>
@@ -315,77 +317,111 @@ TEST(Rkpm, RefusesPointsOutsideTheFluid) {
 }
 
 // The shape functions against a serial reference that searches every dof node (minimum
-// image across the periodic sides), weighs it with the window and corrects with an
-// independent 4×4 solve (Eigen): same supports, same values to 1e-12; with the skip (the
-// correction only where the plain window does not reproduce linear fields) and without.
+// image across the periodic sides), weighs it with the window of its own support (twice
+// the largest extent of its elements, from the elements) and corrects with an independent
+// 4×4 solve (Eigen): same supports, same values to 1e-12; with the skip (the correction
+// only where the plain window does not reproduce linear fields) and without. On a uniform
+// box periodic in x and z, and on a walled box graded 16:1 in x (fine at its ends, coarse in
+// its middle: the search's bins narrower than the largest support, each searched to its own
+// depth).
 TEST(Rkpm, ShapeFunctionsMatchASerialSearchOfEveryNode) {
-  const FluidMesh mesh = make_box_mesh({0, 0, 0}, {20, 10, 10}, {8, 6, 6}, {1, 1, 1}, {true, false, true});
-  const auto points = random_points(mesh, 300, 0.0, 21);
-  const auto x = host_copy(points);
-  const auto coordinates = host_copy(mesh.coordinates);
-  const double h[3] = {20.0 / 8, 10.0 / 6, 10.0 / 6}, length[3] = {20, 10, 10};
-  std::map<int, std::array<double, 3>> node_position;  // the first geometric node of each dof node
-  for (int n = 0; n < mesh.num_nodes; ++n)
-    node_position.emplace(mesh.dof_node_of_node[n],
-                          std::array<double, 3>{coordinates(n, 0), coordinates(n, 1), coordinates(n, 2)});
-  for (const bool always_correct : {false, true}) {
-    RkpmCoupler coupler(mesh);
-    coupler.always_correct(always_correct);
-    coupler.update(points);
-    const auto offsets = host_copy(coupler.offsets());
-    const auto nodes = host_copy(coupler.nodes());
-    const auto phi = host_copy(coupler.shape_functions());
-    double largest_difference = 0.0;
-    int wrong_supports = 0, corrected = 0;
-    for (int p = 0; p < 300; ++p) {
-      std::map<int, double> expected;  // node → Φ
-      std::map<int, std::array<double, 3>> offset_of;
-      Eigen::Matrix4d m = Eigen::Matrix4d::Zero();
-      for (const auto& [node, position] : node_position) {
-        std::array<double, 3> y{};
-        double w = 1.0;
-        for (int d = 0; d < 3; ++d) {
-          y[d] = position[d] - x(p, d);
-          if (mesh.periodic[d]) y[d] -= length[d] * std::round(y[d] / length[d]);
-          w *= cubic_bspline_window(y[d] / (2.0 * h[d]));
+  struct Mesh {
+    const char* name;
+    FluidMesh mesh;
+  };
+  const Mesh meshes[] = {
+      {"uniform, periodic x and z", make_box_mesh({0, 0, 0}, {20, 10, 10}, {8, 6, 6}, {1, 1, 1}, {true, false, true})},
+      {"graded 16:1 along x, walled",
+       make_box_mesh({0, 0, 0}, {20, 10, 10}, {16, 6, 6}, {16, 1, 1}, {false, false, false})}};
+  for (const Mesh& m_case : meshes) {
+    const FluidMesh& mesh = m_case.mesh;
+    const auto points = random_points(mesh, 300, 0.0, 21);
+    const auto x = host_copy(points);
+    const auto coordinates = host_copy(mesh.coordinates);
+    const auto element_nodes = host_copy(mesh.element_nodes);
+    const double length[3] = {mesh.upper[0] - mesh.lower[0], mesh.upper[1] - mesh.lower[1],
+                              mesh.upper[2] - mesh.lower[2]};
+    std::map<int, std::array<double, 3>> node_position;  // the first geometric node of each dof node
+    for (int n = 0; n < mesh.num_nodes; ++n)
+      node_position.emplace(mesh.dof_node_of_node[n],
+                            std::array<double, 3>{coordinates(n, 0), coordinates(n, 1), coordinates(n, 2)});
+    std::map<int, std::array<double, 3>> node_support;  // a_Jd = 2 × the largest extent of J's elements
+    for (int e = 0; e < mesh.num_elements; ++e) {
+      std::array<double, 3> extent{};
+      for (int d = 0; d < 3; ++d) {
+        double low = 1e300, high = -1e300;
+        for (int a = 0; a < mesh.nodes_per_element; ++a) {
+          low = std::min(low, coordinates(element_nodes(e, a), d));
+          high = std::max(high, coordinates(element_nodes(e, a), d));
         }
-        if (!(w > 0.0)) continue;
-        expected[node] = w;
-        offset_of[node] = y;
-        const Eigen::Vector4d hy(1.0, y[0], y[1], y[2]);
-        m += w * hy * hy.transpose();
+        extent[d] = high - low;
       }
-      const bool plain = std::fabs(m(0, 0) - 1.0) < 1e-12 &&
-                         std::fabs(m(0, 1)) + std::fabs(m(0, 2)) + std::fabs(m(0, 3)) < 1e-12 * 2.0 * (h[0] + h[1] + h[2]);
-      if (!plain || always_correct) {
-        ++corrected;
-        const Eigen::Vector4d c = m.partialPivLu().solve(Eigen::Vector4d(1, 0, 0, 0));
-        for (auto& [node, value] : expected) {
-          const auto& y = offset_of[node];
-          value *= c[0] + c[1] * y[0] + c[2] * y[1] + c[3] * y[2];
-        }
-      }
-      std::map<int, double> found;
-      for (int k = offsets(p); k < offsets(p + 1); ++k) found[nodes(k)] = phi(k);
-      if (found.size() != expected.size()) {
-        ++wrong_supports;
-        continue;
-      }
-      for (const auto& [node, value] : expected) {
-        if (!found.count(node)) {
-          ++wrong_supports;
-          break;
-        }
-        largest_difference = std::max(largest_difference, std::fabs(found[node] - value));
+      for (int a = 0; a < mesh.nodes_per_element; ++a) {
+        auto& support = node_support[mesh.dof_node_of_node[element_nodes(e, a)]];
+        for (int d = 0; d < 3; ++d) support[d] = std::max(support[d], 2.0 * extent[d]);
       }
     }
-    std::printf("  %s: %d of 300 points corrected, %d wrong supports, largest |Φ − Φ_serial| %.2e\n",
-                always_correct ? "corrected everywhere" : "corrected where needed", corrected, wrong_supports,
-                largest_difference);
-    EXPECT_EQ(wrong_supports, 0);
-    EXPECT_LT(largest_difference, 1e-12);
-    EXPECT_GT(corrected, 0);  // the walls in y need it
-    EXPECT_EQ(coupler.corrected_points(), corrected);
+    for (const bool always_correct : {false, true}) {
+      RkpmCoupler coupler(mesh);
+      coupler.always_correct(always_correct);
+      coupler.update(points);
+      const auto offsets = host_copy(coupler.offsets());
+      const auto nodes = host_copy(coupler.nodes());
+      const auto phi = host_copy(coupler.shape_functions());
+      double largest_difference = 0.0;
+      int wrong_supports = 0, corrected = 0;
+      for (int p = 0; p < 300; ++p) {
+        std::map<int, double> expected;  // node → Φ
+        std::map<int, std::array<double, 3>> offset_of;
+        Eigen::Matrix4d m = Eigen::Matrix4d::Zero();
+        for (const auto& [node, position] : node_position) {
+          std::array<double, 3> y{};
+          double w = 1.0;
+          for (int d = 0; d < 3; ++d) {
+            y[d] = position[d] - x(p, d);
+            if (mesh.periodic[d]) y[d] -= length[d] * std::round(y[d] / length[d]);
+            w *= cubic_bspline_window(y[d] / node_support[node][d]);
+          }
+          if (!(w > 0.0)) continue;
+          expected[node] = w;
+          offset_of[node] = y;
+          const Eigen::Vector4d hy(1.0, y[0], y[1], y[2]);
+          m += w * hy * hy.transpose();
+        }
+        const auto& first_support = node_support[expected.begin()->first];
+        const bool plain = std::fabs(m(0, 0) - 1.0) < 1e-12 &&
+                           std::fabs(m(0, 1)) + std::fabs(m(0, 2)) + std::fabs(m(0, 3)) <
+                               1e-12 * (first_support[0] + first_support[1] + first_support[2]);
+        if (!plain || always_correct) {
+          ++corrected;
+          const Eigen::Vector4d c = m.partialPivLu().solve(Eigen::Vector4d(1, 0, 0, 0));
+          for (auto& [node, value] : expected) {
+            const auto& y = offset_of[node];
+            value *= c[0] + c[1] * y[0] + c[2] * y[1] + c[3] * y[2];
+          }
+        }
+        std::map<int, double> found;
+        for (int k = offsets(p); k < offsets(p + 1); ++k) found[nodes(k)] = phi(k);
+        if (found.size() != expected.size()) {
+          ++wrong_supports;
+          continue;
+        }
+        for (const auto& [node, value] : expected) {
+          if (!found.count(node)) {
+            ++wrong_supports;
+            break;
+          }
+          largest_difference = std::max(largest_difference, std::fabs(found[node] - value));
+        }
+      }
+      std::printf("  %s, %s: %d of 300 points corrected, %d wrong supports, largest |Φ − Φ_serial| %.2e\n",
+                  m_case.name, always_correct ? "corrected everywhere" : "corrected where needed", corrected,
+                  wrong_supports, largest_difference);
+      EXPECT_EQ(wrong_supports, 0) << m_case.name;
+      EXPECT_LT(largest_difference, 1e-12) << m_case.name;
+      EXPECT_GT(corrected, 0) << m_case.name;  // the walls in y need it
+      EXPECT_EQ(coupler.corrected_points(), corrected) << m_case.name;
+    }
   }
 }
 

@@ -47,25 +47,31 @@ BasicRkpmCoupler<ExecSpace>::BasicRkpmCoupler(const FluidMesh& mesh, double supp
     seen[node] = 1;
     for (int d = 0; d < 3; ++d) position(node, d) = x(n, d);
   }
-  double largest_support[3] = {0, 0, 0};
+  double smallest_support[3] = {1e300, 1e300, 1e300}, largest_support[3] = {0, 0, 0};
   for (int node = 0; node < num_dof_nodes_; ++node)
     for (int d = 0; d < 3; ++d) {
       radius(node, d) = support[3 * node + d];
+      smallest_support[d] = std::min(smallest_support[d], radius(node, d));
       largest_support[d] = std::max(largest_support[d], radius(node, d));
     }
   Kokkos::deep_copy(node_position_, position);
   Kokkos::deep_copy(node_support_, radius);
 
-  // Bins of the fluid nodes, built once: no narrower than the largest support, so a
-  // point's support lies in the 3³ bins around its own.
+  // Bins of the fluid nodes, built once, as wide as the smallest support but no narrower
+  // than an eighth of the largest, each searched as deep as the supports reaching into it
+  // need. On a uniform mesh that is the 3³ bins around a point's own; on a graded one a
+  // point among the fine elements scans its neighbourhood, not the coarse supports' reach.
+  double bin_width[3];
+  for (int d = 0; d < 3; ++d) bin_width[d] = std::max(smallest_support[d], largest_support[d] / 8.0);
   const bool periodic[3] = {mesh.periodic[0], mesh.periodic[1], mesh.periodic[2]};
-  node_bins_.grid = bins_tiling(mesh.lower.data(), mesh.upper.data(), periodic, largest_support, 1);
+  node_bins_.grid = bins_tiling(mesh.lower.data(), mesh.upper.data(), periodic, bin_width, 1);
   sort_into_bins<ExecSpace>(node_position_, num_dof_nodes_, EveryPoint(), node_bins_);
+  bin_depth_ = search_depths_covering(node_bins_, radius);
 }
 
 template <class ExecSpace>
 void BasicRkpmCoupler<ExecSpace>::fill_rows(const Kokkos::View<const double* [3]>& points, bool count_only) {
-  const RkpmSupports<typename ExecSpace::memory_space> supports{node_bins_, node_position_, node_support_};
+  const RkpmSupports<typename ExecSpace::memory_space> supports{node_bins_, bin_depth_, node_position_, node_support_};
   const int corrected = rkpm_shape_functions(ExecSpace(), supports, points, active_points_, counted_points_,
                                              always_correct_, count_only, offsets_, nodes_, shape_functions_);
   if (!count_only) corrected_points_ = corrected;

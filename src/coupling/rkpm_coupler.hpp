@@ -85,6 +85,7 @@ class BasicRkpmCoupler {
   Kokkos::View<double* [3]> node_position_;  // dof node positions [μm]
   Kokkos::View<double* [3]> node_support_;   // a_Jd [μm]
   BinnedPoints<typename ExecSpace::memory_space> node_bins_;  // the dof nodes, binned once
+  Kokkos::View<int* [3], typename ExecSpace::memory_space> bin_depth_;  // each bin's search depth
   Kokkos::View<int*> offsets_, nodes_;
   Kokkos::View<const int*> active_points_, counted_points_;  // restrict_rows()
   Kokkos::View<double*> shape_functions_;

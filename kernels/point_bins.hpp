@@ -14,9 +14,10 @@
 // ascending order.
 //
 // Points with supports of their own (the RKPM windows of a graded fluid mesh, several times
-// smaller in a refined capillary than in its feeders) use bins narrower than the largest support, each bin
-// searched as deep as the supports that reach into it require (search_depths_covering), so
-// that a point among small supports scans its neighbourhood, not the largest support's.
+// smaller in a refined capillary than in its feeders) use bins narrower than the largest
+// support, each bin searched as deep as the supports that reach into it require
+// (search_depths_covering), so that a point among small supports scans its neighbourhood,
+// not the largest support's.
 #include <Kokkos_Core.hpp>
 #include <algorithm>
 #include <cmath>
